@@ -1,0 +1,20 @@
+# SPDX-License-Identifier: MIT
+# Compiler settings every Frusta target shares.
+
+# frusta_target_options(target): warnings, determinism flags and sanitizers.
+function(frusta_target_options target)
+  if(CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
+    target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow -Wconversion
+                                             -Wno-sign-conversion)
+    # determinism: no fused multiply-add, so every machine rounds alike (box2d does the same)
+    target_compile_options(${target} PRIVATE -ffp-contract=off)
+    if(FRUSTA_WARNINGS_AS_ERRORS)
+      target_compile_options(${target} PRIVATE -Werror)
+    endif()
+  endif()
+  if(FRUSTA_SANITIZE)
+    target_compile_options(${target} PRIVATE -fsanitize=address,undefined -fno-sanitize-recover=all
+                                             -fno-omit-frame-pointer)
+    target_link_options(${target} PRIVATE -fsanitize=address,undefined)
+  endif()
+endfunction()

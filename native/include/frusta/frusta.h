@@ -1,0 +1,275 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * frusta.h — the one public header of Frusta, a contact-processing engine for
+ * virtual-hand force interaction. Builds as C11 and as C++17.
+ *
+ * Conventions
+ * - Units: metres, radians, newtons, seconds. Frames are right-handed.
+ * - Every function returns a frusta_result (or a plain value documented as such).
+ *   On failure the calling thread's frusta_last_error() names the field and value
+ *   at fault, and nothing the call would have changed has changed.
+ * - Structs that cross the boundary start with struct_size; defs must come from
+ *   the matching frusta_default_*_def() (a hidden cookie catches hand-built ones).
+ * - Ids are small values passed by value. Zero-initialised means null. A stale id
+ *   (its object destroyed) is refused with FRUSTA_ERROR_STALE_ID, never a crash.
+ * - No C++ type, exception or abort crosses this header.
+ */
+#ifndef FRUSTA_FRUSTA_H
+#define FRUSTA_FRUSTA_H
+
+#include <stdint.h>
+
+#if defined(FRUSTA_BUILD)
+#  if defined(_WIN32)
+#    define FRUSTA_EXPORT __declspec(dllexport)
+#  else
+#    define FRUSTA_EXPORT __attribute__((visibility("default")))
+#  endif
+#elif defined(_WIN32) && defined(FRUSTA_DLL)
+#  define FRUSTA_EXPORT __declspec(dllimport)
+#else
+#  define FRUSTA_EXPORT
+#endif
+#ifdef __cplusplus
+#  define FRUSTA_API extern "C" FRUSTA_EXPORT
+#else
+#  define FRUSTA_API FRUSTA_EXPORT
+#endif
+
+/* ---------------------------------------------------------------- version */
+
+#define FRUSTA_VERSION_MAJOR 0
+#define FRUSTA_VERSION_MINOR 1
+#define FRUSTA_VERSION_PATCH 0
+/** major*1000000 + minor*1000 + patch; frusta_version() returns the library's. */
+#define FRUSTA_VERSION \
+  (FRUSTA_VERSION_MAJOR * 1000000 + FRUSTA_VERSION_MINOR * 1000 + FRUSTA_VERSION_PATCH)
+/** Bumped whenever a struct layout or a signature changes; see frusta_check_abi(). */
+#define FRUSTA_ABI_VERSION 1
+
+/** The library's FRUSTA_VERSION. Thread: any. */
+FRUSTA_API int32_t frusta_version(void);
+/** The library's FRUSTA_ABI_VERSION. Thread: any. */
+FRUSTA_API int32_t frusta_abi_version(void);
+
+/* ---------------------------------------------------------------- errors */
+
+typedef enum frusta_result {
+  FRUSTA_OK = 0,
+  FRUSTA_ERROR_NULL_POINTER = 1,     /* a required pointer argument was null */
+  FRUSTA_ERROR_STRUCT_SIZE = 2,      /* struct_size differs from this library's sizeof */
+  FRUSTA_ERROR_DEF_NOT_DEFAULTED = 3,/* a def not obtained from frusta_default_*_def() */
+  FRUSTA_ERROR_NULL_ID = 4,          /* a null id where an object is required */
+  FRUSTA_ERROR_STALE_ID = 5,         /* the id's object was destroyed (or never existed) */
+  FRUSTA_ERROR_NOT_FINITE = 6,       /* NaN or infinity in an input */
+  FRUSTA_ERROR_OUT_OF_RANGE = 7,     /* a finite value outside its documented range */
+  FRUSTA_ERROR_CAPACITY = 8,         /* a caller buffer or an internal pool is too small */
+  FRUSTA_ERROR_ABI_MISMATCH = 9,     /* header and library disagree; see frusta_check_abi() */
+  FRUSTA_ERROR_OUT_OF_MEMORY = 10,
+  FRUSTA_ERROR_INTERNAL = 11         /* a bug: please report frusta_last_error() */
+} frusta_result;
+
+/** Message of the last failed call on this thread ("" after none). Valid until the
+ *  next frusta call on this thread. Thread: any (the message is thread-local). */
+FRUSTA_API const char* frusta_last_error(void);
+/** Static name of a result code, e.g. "FRUSTA_ERROR_STALE_ID". Thread: any. */
+FRUSTA_API const char* frusta_result_name(int32_t result);
+
+/** Pass FRUSTA_ABI_VERSION: FRUSTA_OK when the library was built from a header with
+ *  the same ABI, FRUSTA_ERROR_ABI_MISMATCH (with both versions in the message)
+ *  otherwise. Bindings call this once before anything else. Thread: any. */
+FRUSTA_API frusta_result frusta_check_abi(int32_t header_abi_version);
+#define FRUSTA_CHECK_ABI() frusta_check_abi(FRUSTA_ABI_VERSION)
+
+/* ---------------------------------------------------------------- ids */
+
+/** Hand handle. Opaque; pass by value. Zero-initialised means null. */
+typedef struct frusta_hand_id {
+  int32_t index1;      /* slot + 1; 0 is null */
+  uint16_t world0;     /* owning world slot (0: standalone) */
+  uint16_t generation; /* bumped when the slot is reused */
+} frusta_hand_id;
+#define FRUSTA_IS_NULL(id) ((id).index1 == 0)
+
+/* ---------------------------------------------------------------- math types */
+
+/** A rigid pose: position in metres and a unit quaternion (x, y, z, w). */
+typedef struct frusta_pose {
+  double position[3];
+  double rotation[4];
+} frusta_pose;
+
+/** A sphere: centre in metres and radius in metres (>= 0). */
+typedef struct frusta_sphere {
+  double center[3];
+  double radius;
+} frusta_sphere;
+
+/** One frustum segment of a finger with its end balls. The proximal end D carries
+ *  the larger radius in a hand, but any radii >= 0 are valid. The segment solid is
+ *  the frustum union a ball of proximal_radius at D and of distal_radius at E. */
+typedef struct frusta_segment {
+  double proximal[3];     /* D, metres */
+  double distal[3];       /* E, metres */
+  double proximal_radius; /* r1, metres */
+  double distal_radius;   /* r2, metres */
+} frusta_segment;
+
+/* ---------------------------------------------------------------- hand */
+
+typedef enum frusta_hand_side { FRUSTA_HAND_RIGHT = 0, FRUSTA_HAND_LEFT = 1 } frusta_hand_side;
+typedef enum frusta_finger {
+  FRUSTA_FINGER_THUMB = 0,
+  FRUSTA_FINGER_INDEX = 1,
+  FRUSTA_FINGER_MIDDLE = 2,
+  FRUSTA_FINGER_RING = 3,
+  FRUSTA_FINGER_LITTLE = 4
+} frusta_finger;
+
+#define FRUSTA_FINGER_COUNT 5
+#define FRUSTA_SEGMENTS_PER_FINGER 3
+/** Per finger: abduction, then flexion of the first, second and third joint. */
+#define FRUSTA_JOINTS_PER_FINGER 4
+#define FRUSTA_HAND_SEGMENT_COUNT (FRUSTA_FINGER_COUNT * FRUSTA_SEGMENTS_PER_FINGER)
+#define FRUSTA_HAND_JOINT_COUNT (FRUSTA_FINGER_COUNT * FRUSTA_JOINTS_PER_FINGER)
+/** Palm pose degrees of freedom in a Jacobian: translation x y z, then rotation x y z. */
+#define FRUSTA_PALM_DOF 6
+
+/** Creation parameters of a hand.
+ *
+ *  Hand frame (right hand): origin at the wrist centre, +x towards the fingertips,
+ *  +z out of the back of the hand, +y = z cross x (towards the thumb). A left hand
+ *  is the mirror image through the x-z plane: its thumb lies at -y, and the same
+ *  joint angles mean the same anatomical motion on both hands.
+ *
+ *  Joint angles: abduction rotates a finger about its rest frame's z towards the
+ *  thumb side (radial); flexion rotates about its y towards the palm. The thumb's
+ *  first segment is its metacarpal (joints CMC, MCP, IP); the other fingers' first
+ *  segment is the proximal phalanx (joints MCP, PIP, DIP).
+ *
+ *  frusta_default_hand_def() fills every array from hand_length and hand_breadth
+ *  (see frusta_hand_def_set_size); edit single entries afterwards to override. */
+typedef struct frusta_hand_def {
+  int32_t struct_size;            /* sizeof(frusta_hand_def) */
+  int32_t side;                   /* frusta_hand_side */
+  double hand_length;             /* metres, wrist crease to middle fingertip (> 0) */
+  double hand_breadth;            /* metres, across the metacarpal heads (> 0) */
+  /* metres, joint centre to joint centre; the third runs to the tip hemisphere's centre */
+  double segment_length[FRUSTA_FINGER_COUNT][FRUSTA_SEGMENTS_PER_FINGER];
+  /* metres: ball radius at the first, second, third joint, then the tip hemisphere */
+  double joint_radius[FRUSTA_FINGER_COUNT][4];
+  double base_position[FRUSTA_FINGER_COUNT][3];  /* metres, first joint centre in the hand frame */
+  double base_rotation[FRUSTA_FINGER_COUNT][3];  /* radians, x-y-z rotation of the rest frame */
+  double joint_min[FRUSTA_FINGER_COUNT][FRUSTA_JOINTS_PER_FINGER]; /* radians */
+  double joint_max[FRUSTA_FINGER_COUNT][FRUSTA_JOINTS_PER_FINGER]; /* radians */
+  double palm_length;             /* metres, wrist to the metacarpal heads (> 0) */
+  double palm_breadth;            /* metres (> 0) */
+  double palm_thickness;          /* metres (> 0); also the palm spheres' diameter */
+  int32_t internal_value;         /* set by frusta_default_hand_def(); do not touch */
+  int32_t reserved0;              /* explicit padding */
+} frusta_hand_def;
+
+/** A right hand of 50th-percentile adult size (length 0.19 m, breadth 0.085 m).
+ *  Thread: any. */
+FRUSTA_API frusta_hand_def frusta_default_hand_def(void);
+
+/** Refill def's geometry (segment lengths, joint radii, bases, palm) from a hand
+ *  length and breadth with the anthropometric proportions documented in
+ *  native/src/hand/anthropometry.cpp. Joint limits and side are kept. On error def
+ *  is unchanged. Thread: any. */
+FRUSTA_API frusta_result frusta_hand_def_set_size(frusta_hand_def* def, double hand_length,
+                                                  double hand_breadth);
+
+/** Create a standalone hand at the identity pose with all joint angles zero (clamped
+ *  into the limits). Thread: main (create/destroy are serialised internally). */
+FRUSTA_API frusta_result frusta_create_hand(const frusta_hand_def* def, frusta_hand_id* out_hand);
+/** Destroy a hand; its id and every copy of it become stale. Thread: main. */
+FRUSTA_API frusta_result frusta_destroy_hand(frusta_hand_id hand);
+/** 1 if the id names a live hand, else 0 (never an error). Thread: any. */
+FRUSTA_API int32_t frusta_hand_is_valid(frusta_hand_id hand);
+
+/** Set the palm pose (hand frame in world). The quaternion is normalised; its norm
+ *  must lie in [0.5, 2] and positions within 1e6 m of the origin. Thread: main. */
+FRUSTA_API frusta_result frusta_hand_set_palm_pose(frusta_hand_id hand, const frusta_pose* pose);
+/** Set all FRUSTA_HAND_JOINT_COUNT joint angles (finger-major: abduction, flexion 1,
+ *  2, 3), radians. Finite values beyond the def's limits are clamped into them;
+ *  |angle| > 100 rad is refused as corrupt input. count must equal
+ *  FRUSTA_HAND_JOINT_COUNT. Thread: main. */
+FRUSTA_API frusta_result frusta_hand_set_joint_angles(frusta_hand_id hand, const double* angles,
+                                                      int32_t count);
+/** Copy the (clamped) joint angles into out[FRUSTA_HAND_JOINT_COUNT]. Thread: main. */
+FRUSTA_API frusta_result frusta_hand_get_joint_angles(frusta_hand_id hand, double* out,
+                                                      int32_t capacity);
+/** Copy the world geometry of every finger segment, finger-major (thumb first),
+ *  proximal to distal: FRUSTA_HAND_SEGMENT_COUNT entries. The last segment of each
+ *  finger has its tip hemisphere at the distal end. Thread: main. */
+FRUSTA_API frusta_result frusta_hand_get_segments(frusta_hand_id hand, frusta_segment* out,
+                                                  int32_t capacity, int32_t* out_count);
+/** Copy the palm's spheres in world coordinates. Pass capacity 0 and out null to
+ *  learn the count. Thread: main. */
+FRUSTA_API frusta_result frusta_hand_get_palm_spheres(frusta_hand_id hand, frusta_sphere* out,
+                                                      int32_t capacity, int32_t* out_count);
+/** Jacobian of a material point of one segment, in world coordinates, with respect to
+ *  the finger's four joint angles followed by the palm's 6 DOF (world translation,
+ *  then a world-frame rotation vector): out is row-major 3 x (4 + 6) = 30 doubles.
+ *  The point is given in the segment frame: origin at the proximal joint, +x along
+ *  the segment, y and z as the finger's flexion and its normal. Also writes the
+ *  point's world position to out_point (may be null). Thread: main. */
+FRUSTA_API frusta_result frusta_hand_point_jacobian(frusta_hand_id hand, int32_t finger,
+                                                    int32_t segment, const double local_point[3],
+                                                    double* out_point, double* out_jacobian,
+                                                    int32_t capacity);
+
+/* ---------------------------------------------------------------- geometry queries */
+
+/** Which part of a segment solid is nearest to a sphere. */
+typedef enum frusta_feature {
+  FRUSTA_FEATURE_SIDE = 0,     /* the frustum's lateral surface (or an end cap face) */
+  FRUSTA_FEATURE_DISTAL = 1,   /* the ball at E (the fingertip on a finger's last segment) */
+  FRUSTA_FEATURE_PROXIMAL = 2  /* the ball at D (a joint ball) */
+} frusta_feature;
+
+/** Everything one sphere/segment query knows. */
+typedef struct frusta_contact_query {
+  int32_t struct_size;         /* sizeof(frusta_contact_query); set it before the call */
+  int32_t feature;             /* frusta_feature nearest the sphere (exact reference) */
+  int32_t patent_contact;      /* 1 if seed eq. 5 reports contact (for comparison only) */
+  int32_t contact;             /* 1 if the engine's conservative test reports contact */
+  double distance;             /* metres, exact signed gap between the sphere and the
+                                  segment solid; negative = penetration depth (a lower
+                                  bound on depth inside the union of parts) */
+  double hand_point[3];        /* metres, nearest point on the segment solid's surface */
+  double object_point[3];      /* metres, the sphere's surface point nearest the hand */
+  double normal[3];            /* unit, from the sphere's centre towards the hand */
+  double axial;                /* k of seed eq. 4: 0 at E, 1 at D (0 if the length is 0) */
+} frusta_contact_query;
+
+/** Constraint forms; both have the same zero set (touching). */
+typedef enum frusta_constraint_form {
+  FRUSTA_CONSTRAINT_SQUARED = 0,  /* seed eq. 9 / eq. 10, metres squared */
+  FRUSTA_CONSTRAINT_DISTANCE = 1  /* signed gap along the surface normal, metres */
+} frusta_constraint_form;
+
+/** A constraint value g >= 0 (non-penetrating) with its analytic gradient. */
+typedef struct frusta_constraint {
+  int32_t struct_size;    /* sizeof(frusta_constraint); set it before the call */
+  int32_t feature;        /* frusta_feature the endpoint rule (seed eqs. 10-11) chose */
+  double value;           /* metres or metres squared, by form */
+  double grad_proximal[3];/* dg/dD */
+  double grad_distal[3];  /* dg/dE */
+  double grad_center[3];  /* dg/dO, the sphere's centre */
+} frusta_constraint;
+
+/** Query one sphere against one segment solid. Radii must be >= 0 and every value
+ *  finite with magnitude <= 1e6 m. out->struct_size must be set. Thread: any. */
+FRUSTA_API frusta_result frusta_query_contact(const frusta_segment* segment,
+                                              const frusta_sphere* sphere,
+                                              frusta_contact_query* out);
+/** The constraint of the feature the endpoint rule picks (side, distal ball or
+ *  proximal ball), in the given form, with its gradient with respect to D, E and the
+ *  sphere's centre. Same input rules as frusta_query_contact. Thread: any. */
+FRUSTA_API frusta_result frusta_constraint_eval(const frusta_segment* segment,
+                                                const frusta_sphere* sphere, int32_t form,
+                                                frusta_constraint* out);
+
+#endif /* FRUSTA_FRUSTA_H */

@@ -1,0 +1,184 @@
+// SPDX-License-Identifier: MIT
+// C ABI: hands. Each function checks every input before it changes anything.
+#include <cmath>
+#include <cstring>
+
+#include <glm/geometric.hpp>
+
+#include "capi/hand_registry.h"
+#include "core/error.h"
+#include "core/validate.h"
+#include "frusta/frusta.h"
+#include "hand/anthropometry.h"
+
+using namespace frusta;
+
+namespace {
+
+constexpr double kDefaultHandLength = 0.19;   // metres, about the adult 50th percentile
+constexpr double kDefaultHandBreadth = 0.085;
+// a joint angle beyond this is garbage from a device, not an extreme pose
+constexpr double kMaxJointAngle = 100.0;
+
+frusta_result check_hand_def_input(const frusta_hand_def* def) {
+  if (frusta_result r = check_pointer(def, "def")) return r;
+  if (frusta_result r = check_struct_size(def->struct_size, sizeof(frusta_hand_def),
+                                          "frusta_hand_def"))
+    return r;
+  return check_def_cookie(def->internal_value, "frusta_hand_def");
+}
+
+frusta_result check_output(int32_t capacity, int32_t needed, const char* what) {
+  if (capacity >= needed) return FRUSTA_OK;
+  return fail(FRUSTA_ERROR_CAPACITY, "capacity is %d but %s needs %d", capacity, what, needed);
+}
+
+}  // namespace
+
+FRUSTA_API frusta_hand_def frusta_default_hand_def(void) {
+  frusta_hand_def def;
+  std::memset(&def, 0, sizeof def);
+  def.struct_size = sizeof(frusta_hand_def);
+  def.side = FRUSTA_HAND_RIGHT;
+  fill_hand_geometry(def, kDefaultHandLength, kDefaultHandBreadth);
+  fill_joint_limits(def);
+  def.internal_value = kDefCookie;
+  return def;
+}
+
+FRUSTA_API frusta_result frusta_hand_def_set_size(frusta_hand_def* def, double hand_length,
+                                                  double hand_breadth) {
+  if (frusta_result r = check_hand_def_input(def)) return r;
+  if (frusta_result r = check_range(hand_length, 0.0, kMaxHandSize, true, "hand_length")) return r;
+  if (frusta_result r = check_range(hand_breadth, 0.0, kMaxHandSize, true, "hand_breadth"))
+    return r;
+  frusta_hand_def sized = *def;
+  fill_hand_geometry(sized, hand_length, hand_breadth);
+  if (frusta_result r = check_hand_def(sized)) return r;
+  *def = sized;
+  return FRUSTA_OK;
+}
+
+FRUSTA_API frusta_result frusta_create_hand(const frusta_hand_def* def, frusta_hand_id* out_hand) {
+  if (frusta_result r = check_hand_def_input(def)) return r;
+  if (frusta_result r = check_pointer(out_hand, "out_hand")) return r;
+  if (frusta_result r = check_hand_def(*def)) return r;
+  return guarded("frusta_create_hand", [&] { return hand_registry().create(*def, out_hand); });
+}
+
+FRUSTA_API frusta_result frusta_destroy_hand(frusta_hand_id hand) {
+  return hand_registry().destroy(hand);
+}
+
+FRUSTA_API int32_t frusta_hand_is_valid(frusta_hand_id hand) {
+  return hand_registry().is_valid(hand) ? 1 : 0;
+}
+
+FRUSTA_API frusta_result frusta_hand_set_palm_pose(frusta_hand_id hand, const frusta_pose* pose) {
+  HandObject* h = nullptr;
+  if (frusta_result r = hand_registry().find(hand, &h)) return r;
+  if (frusta_result r = check_pointer(pose, "pose")) return r;
+  if (frusta_result r = check_bounded(pose->position, 3, kMaxCoordinate, "pose.position"))
+    return r;
+  if (frusta_result r = check_finite(pose->rotation, 4, "pose.rotation")) return r;
+  const glm::dquat q(pose->rotation[3], pose->rotation[0], pose->rotation[1], pose->rotation[2]);
+  const double norm = glm::length(q);
+  if (!(norm >= 0.5 && norm <= 2.0))
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "pose.rotation has norm %g; a unit quaternion "
+                "(x, y, z, w) is expected (norms in [0.5, 2] are normalised)", norm);
+  h->state.palm_position = vec3(pose->position[0], pose->position[1], pose->position[2]);
+  h->state.palm_rotation = q / norm;
+  forward_kinematics(h->model, h->state, h->pose);
+  return FRUSTA_OK;
+}
+
+FRUSTA_API frusta_result frusta_hand_set_joint_angles(frusta_hand_id hand, const double* angles,
+                                                      int32_t count) {
+  HandObject* h = nullptr;
+  if (frusta_result r = hand_registry().find(hand, &h)) return r;
+  if (frusta_result r = check_pointer(angles, "angles")) return r;
+  if (count != FRUSTA_HAND_JOINT_COUNT)
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "count is %d, must be FRUSTA_HAND_JOINT_COUNT (%d)",
+                count, FRUSTA_HAND_JOINT_COUNT);
+  if (frusta_result r = check_bounded(angles, count, kMaxJointAngle, "angles")) return r;
+  std::memcpy(h->state.angles.data(), angles, sizeof(double) * FRUSTA_HAND_JOINT_COUNT);
+  clamp_to_limits(h->model, h->state);
+  forward_kinematics(h->model, h->state, h->pose);
+  return FRUSTA_OK;
+}
+
+FRUSTA_API frusta_result frusta_hand_get_joint_angles(frusta_hand_id hand, double* out,
+                                                      int32_t capacity) {
+  HandObject* h = nullptr;
+  if (frusta_result r = hand_registry().find(hand, &h)) return r;
+  if (frusta_result r = check_pointer(out, "out")) return r;
+  if (frusta_result r = check_output(capacity, FRUSTA_HAND_JOINT_COUNT, "the joint angles"))
+    return r;
+  std::memcpy(out, h->state.angles.data(), sizeof(double) * FRUSTA_HAND_JOINT_COUNT);
+  return FRUSTA_OK;
+}
+
+FRUSTA_API frusta_result frusta_hand_get_segments(frusta_hand_id hand, frusta_segment* out,
+                                                  int32_t capacity, int32_t* out_count) {
+  HandObject* h = nullptr;
+  if (frusta_result r = hand_registry().find(hand, &h)) return r;
+  if (frusta_result r = check_pointer(out, "out")) return r;
+  if (frusta_result r = check_output(capacity, FRUSTA_HAND_SEGMENT_COUNT, "the segments"))
+    return r;
+  for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
+    for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s) {
+      const Segment seg = finger_segment(h->model, h->pose, f, s);
+      frusta_segment& o = out[f * FRUSTA_SEGMENTS_PER_FINGER + s];
+      for (int k = 0; k < 3; ++k) {
+        o.proximal[k] = seg.proximal[k];
+        o.distal[k] = seg.distal[k];
+      }
+      o.proximal_radius = seg.proximal_radius;
+      o.distal_radius = seg.distal_radius;
+    }
+  }
+  if (out_count) *out_count = FRUSTA_HAND_SEGMENT_COUNT;
+  return FRUSTA_OK;
+}
+
+FRUSTA_API frusta_result frusta_hand_get_palm_spheres(frusta_hand_id hand, frusta_sphere* out,
+                                                      int32_t capacity, int32_t* out_count) {
+  HandObject* h = nullptr;
+  if (frusta_result r = hand_registry().find(hand, &h)) return r;
+  const int32_t count = static_cast<int32_t>(h->model.palm_spheres.size());
+  if (out_count) *out_count = count;
+  if (capacity == 0 && !out) return FRUSTA_OK;  // a size query
+  if (frusta_result r = check_pointer(out, "out")) return r;
+  if (frusta_result r = check_output(capacity, count, "the palm spheres")) return r;
+  for (int32_t i = 0; i < count; ++i) {
+    const Sphere s = palm_sphere(h->model, h->pose, i);
+    for (int k = 0; k < 3; ++k) out[i].center[k] = s.center[k];
+    out[i].radius = s.radius;
+  }
+  return FRUSTA_OK;
+}
+
+FRUSTA_API frusta_result frusta_hand_point_jacobian(frusta_hand_id hand, int32_t finger,
+                                                    int32_t segment, const double local_point[3],
+                                                    double* out_point, double* out_jacobian,
+                                                    int32_t capacity) {
+  HandObject* h = nullptr;
+  if (frusta_result r = hand_registry().find(hand, &h)) return r;
+  if (finger < 0 || finger >= FRUSTA_FINGER_COUNT)
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "finger is %d, must be 0..%d", finger,
+                FRUSTA_FINGER_COUNT - 1);
+  if (segment < 0 || segment >= FRUSTA_SEGMENTS_PER_FINGER)
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "segment is %d, must be 0..%d", segment,
+                FRUSTA_SEGMENTS_PER_FINGER - 1);
+  if (frusta_result r = check_pointer(local_point, "local_point")) return r;
+  if (frusta_result r = check_bounded(local_point, 3, kMaxCoordinate, "local_point")) return r;
+  if (frusta_result r = check_pointer(out_jacobian, "out_jacobian")) return r;
+  if (frusta_result r = check_output(capacity, 3 * kJacobianColumns, "a 3 x 10 Jacobian"))
+    return r;
+  const vec3 world = segment_point(h->pose, finger, segment,
+                                   vec3(local_point[0], local_point[1], local_point[2]));
+  point_jacobian(h->pose, finger, segment, world, out_jacobian);
+  if (out_point)
+    for (int k = 0; k < 3; ++k) out_point[k] = world[k];
+  return FRUSTA_OK;
+}

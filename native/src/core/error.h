@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: MIT
+// The thread-local error message behind frusta_last_error(). Every failing C ABI
+// call sets it; a succeeding call leaves it as it was (like errno).
+#pragma once
+
+#include <exception>
+#include <new>
+
+#include "frusta/frusta.h"
+
+namespace frusta {
+
+// Record message (printf-style) for this thread and return code, so a shim can
+// `return fail(FRUSTA_ERROR_..., "field %s ...", ...)`.
+frusta_result fail(frusta_result code, const char* format, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+// Run a C ABI body so that no exception crosses the boundary.
+template <class Body>
+frusta_result guarded(const char* function, Body&& body) noexcept {
+  try {
+    return body();
+  } catch (const std::bad_alloc&) {
+    return fail(FRUSTA_ERROR_OUT_OF_MEMORY, "%s: out of memory", function);
+  } catch (const std::exception& e) {
+    return fail(FRUSTA_ERROR_INTERNAL, "%s: %s", function, e.what());
+  } catch (...) {
+    return fail(FRUSTA_ERROR_INTERNAL, "%s: unknown exception", function);
+  }
+}
+
+const char* last_error_message();
+void clear_last_error();
+
+}  // namespace frusta

@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: MIT
+// Input checks shared by the C ABI shims. Each returns FRUSTA_OK or sets the
+// thread's error message naming the field (e.g. "segment.distal[1]") and value.
+#pragma once
+
+#include <cstdint>
+
+#include "frusta/frusta.h"
+
+namespace frusta {
+
+// Largest coordinate accepted anywhere: beyond it a double cannot resolve
+// micrometres, so the value is corrupt rather than a real scene.
+constexpr double kMaxCoordinate = 1e6;
+
+// Written into defs by frusta_default_*_def(); a def without it was built by hand.
+constexpr int32_t kDefCookie = 0x46525354;  // "FRST"
+frusta_result check_def_cookie(int32_t internal_value, const char* def_name);
+
+frusta_result check_pointer(const void* pointer, const char* field);
+frusta_result check_struct_size(int32_t given, int32_t expected, const char* struct_name);
+frusta_result check_finite(const double* values, int count, const char* field);
+// finite and |value| <= limit for every element
+frusta_result check_bounded(const double* values, int count, double limit, const char* field);
+// finite and min <= value (strict when strict_min), value <= max
+frusta_result check_range(double value, double min, double max, bool strict_min, const char* field);
+
+}  // namespace frusta

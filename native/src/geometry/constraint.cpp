@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: MIT
+#include "geometry/constraint.h"
+
+#include <glm/geometric.hpp>
+
+namespace frusta {
+
+Feature endpoint_rule(const SegmentFrame& frame, const Sphere& sphere) {
+  if (frame.degenerate)
+    return frame.r_proximal > frame.r_distal ? Feature::kProximalBall : Feature::kDistalBall;
+  const double axial = glm::dot(sphere.center - frame.distal, frame.axis);
+  const double shift = sphere.radius * frame.sin_alpha;
+  if (axial < -shift) return Feature::kDistalBall;
+  if (axial > frame.length - shift) return Feature::kProximalBall;
+  return Feature::kSide;
+}
+
+Constraint side_constraint(const SegmentFrame& f, const Sphere& sphere, ConstraintForm form) {
+  // notation of method.md: w = O - E, a axial, p radial with q = |p|, t = tan(alpha)
+  const AxialSplit s = split_axial(f, sphere.center);
+  const vec3& u = f.axis;
+  const double a = s.axial, q = s.radial_length, L = f.length, R = sphere.radius;
+  const double t = f.slope, c = f.cos_alpha, sn = f.sin_alpha, r2 = f.r_distal;
+
+  Constraint g;
+  g.feature = Feature::kSide;
+  vec3 grad_w, grad_d;  // with respect to w = O - E and d = D - E
+  if (form == ConstraintForm::kDistance) {
+    const vec3 n = radial_direction(f, s);
+    g.value = (q - r2 - a * t) * c - R;
+    grad_w = c * n - sn * u;
+    // c, s depend on L through t: dh/dt = -c^3 ((q - r2) t + a), dt/dd = -t u / L
+    grad_d = (-(c * a + sn * q) * n + c * c * c * t * ((q - r2) * t + a) * u) / L;
+  } else {
+    const double reach = R / c + r2 + a * t;  // the seed's |OC|_T
+    g.value = q * q - reach * reach;
+    grad_w = 2.0 * s.radial - 2.0 * reach * t * u;
+    // d(reach)/dt = R sin(alpha) + a
+    grad_d = (-2.0 * a * s.radial - 2.0 * reach * (t * s.radial - (R * sn + a) * t * u)) / L;
+  }
+  g.grad_center = grad_w;
+  g.grad_proximal = grad_d;
+  g.grad_distal = -grad_w - grad_d;
+  return g;
+}
+
+Constraint ball_constraint(const SegmentFrame& frame, Feature ball, const Sphere& sphere,
+                           ConstraintForm form) {
+  const bool distal = ball == Feature::kDistalBall;
+  const vec3& center = distal ? frame.distal : frame.proximal;
+  const double reach = sphere.radius + (distal ? frame.r_distal : frame.r_proximal);
+  const vec3 d = sphere.center - center;
+
+  Constraint g;
+  g.feature = ball;
+  if (form == ConstraintForm::kDistance) {
+    const double n = glm::length(d);
+    g.value = n - reach;
+    // concentric: any direction is a subgradient; the axis keeps it deterministic
+    g.grad_center = n > 0.0 ? d / n : (distal ? -frame.axis : frame.axis);
+  } else {
+    g.value = glm::dot(d, d) - reach * reach;
+    g.grad_center = 2.0 * d;
+  }
+  (distal ? g.grad_distal : g.grad_proximal) = -g.grad_center;
+  return g;
+}
+
+Constraint contact_constraint(const SegmentFrame& frame, const Sphere& sphere,
+                              ConstraintForm form) {
+  const Feature feature = endpoint_rule(frame, sphere);
+  if (feature == Feature::kSide) return side_constraint(frame, sphere, form);
+  return ball_constraint(frame, feature, sphere, form);
+}
+
+}  // namespace frusta

@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: MIT
+#include "geometry/segment_frame.h"
+
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+namespace frusta {
+
+namespace {
+// Below this length (relative to the segment's size) the axis direction is noise.
+constexpr double kDegenerateRelativeLength = 1e-12;
+}  // namespace
+
+SegmentFrame make_segment_frame(const Segment& segment) {
+  SegmentFrame f;
+  f.distal = segment.distal;
+  f.proximal = segment.proximal;
+  f.r_distal = segment.distal_radius;
+  f.r_proximal = segment.proximal_radius;
+  const vec3 d = segment.proximal - segment.distal;
+  f.length = glm::length(d);
+  const double size = f.length + segment.distal_radius + segment.proximal_radius;
+  f.degenerate = !(f.length > kDegenerateRelativeLength * size);
+  if (f.degenerate) return f;
+  f.axis = d / f.length;
+  f.slope = (f.r_proximal - f.r_distal) / f.length;
+  // cos and sin from the side's own lengths rather than through atan: exact for a cylinder
+  const double side = std::hypot(f.length, f.r_proximal - f.r_distal);
+  f.cos_alpha = f.length / side;
+  f.sin_alpha = (f.r_proximal - f.r_distal) / side;
+  return f;
+}
+
+AxialSplit split_axial(const SegmentFrame& frame, const vec3& point) {
+  AxialSplit s;
+  s.w = point - frame.distal;
+  s.axial = glm::dot(s.w, frame.axis);
+  s.radial = s.w - s.axial * frame.axis;
+  s.radial_length = glm::length(s.radial);
+  return s;
+}
+
+vec3 radial_direction(const SegmentFrame& frame, const AxialSplit& split) {
+  if (split.radial_length > 0.0) return split.radial / split.radial_length;
+  // on the axis every perpendicular is as good; pick the one least aligned with it
+  const vec3& u = frame.axis;
+  const vec3 helper = std::fabs(u.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0);
+  return glm::normalize(glm::cross(glm::cross(u, helper), u));
+}
+
+}  // namespace frusta

@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: MIT
+// The immutable part of a hand: dimensions, finger bases, limits and palm spheres,
+// built once from a checked frusta_hand_def.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include <glm/mat3x3.hpp>
+
+#include "frusta/frusta.h"
+#include "geometry/types.h"
+
+namespace frusta {
+
+struct FingerModel {
+  std::array<double, FRUSTA_SEGMENTS_PER_FINGER> length{};  // metres
+  std::array<double, 4> radius{};     // first, second, third joint, tip; metres
+  vec3 base_position{0.0};            // first joint centre in the hand frame (right hand)
+  glm::dmat3 base_rotation{1.0};      // rest frame in the hand frame (right hand)
+  std::array<double, FRUSTA_JOINTS_PER_FINGER> joint_min{}, joint_max{};  // radians
+};
+
+struct HandModel {
+  bool left = false;  // a left hand is the right hand mirrored through the x-z plane
+  std::array<FingerModel, FRUSTA_FINGER_COUNT> fingers{};
+  std::vector<Sphere> palm_spheres;  // hand frame, already mirrored for a left hand
+};
+
+// A hand is centimetres long; a size beyond a few metres is a units mistake.
+constexpr double kMaxHandSize = 5.0;
+
+// Check every field of def; on failure the thread's error names the field.
+frusta_result check_hand_def(const frusta_hand_def& def);
+
+// Build the model of a def that passed check_hand_def.
+HandModel make_hand_model(const frusta_hand_def& def);
+
+}  // namespace frusta
