@@ -66,7 +66,10 @@ typedef enum frusta_result {
   FRUSTA_ERROR_CAPACITY = 8,         /* a caller buffer or an internal pool is too small */
   FRUSTA_ERROR_ABI_MISMATCH = 9,     /* header and library disagree; see frusta_check_abi() */
   FRUSTA_ERROR_OUT_OF_MEMORY = 10,
-  FRUSTA_ERROR_INTERNAL = 11         /* a bug: please report frusta_last_error() */
+  FRUSTA_ERROR_INTERNAL = 11,        /* a bug: please report frusta_last_error() */
+  FRUSTA_ERROR_IO = 12,              /* a file could not be opened, read or written */
+  FRUSTA_ERROR_FILE_FORMAT = 13,     /* not a Frusta file, or a format version we cannot read */
+  FRUSTA_ERROR_CORRUPT_FILE = 14     /* a Frusta file whose contents fail validation */
 } frusta_result;
 
 /** Message of the last failed call on this thread ("" after none). Valid until the

@@ -35,4 +35,9 @@ bool may_touch(const SegmentFrame& frame, const Sphere& sphere, double margin) {
          within_ball(frame.proximal, frame.r_proximal, sphere.center, reach);
 }
 
+bool may_touch_sphere(const Sphere& a, const Sphere& b, double margin) {
+  const double scale = glm::length(a.center - b.center) + a.radius + b.radius + margin;
+  return within_ball(a.center, a.radius, b.center, b.radius + margin + kRelativeSlack * scale);
+}
+
 }  // namespace frusta

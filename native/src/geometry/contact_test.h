@@ -15,4 +15,7 @@ namespace frusta {
 // True when the sphere may lie within `margin` metres of the segment solid.
 bool may_touch(const SegmentFrame& frame, const Sphere& sphere, double margin);
 
+// True when two spheres may lie within `margin` metres of each other.
+bool may_touch_sphere(const Sphere& a, const Sphere& b, double margin);
+
 }  // namespace frusta

@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: MIT
+// An object as a sphere tree (seed [0012], [0117]): the leaves are its numbered
+// contact spheres, each inner node bounds every leaf below it. Nodes live in one
+// flat array with each node's children contiguous, so a query walks memory forward.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/mat3x3.hpp>
+
+#include "geometry/segment_frame.h"
+#include "geometry/types.h"
+
+namespace frusta {
+
+// 24 bytes. Floats suffice in the object's own frame (0.1 um at 1 m); bounds are
+// rounded outwards when stored so a culled node can never hide a touching leaf.
+struct TreeNode {
+  float center[3];
+  float radius;
+  int32_t first;  // inner: index of the first child; leaf: the leaf's number
+  int32_t count;  // inner: number of children (> 0); leaf: 0
+};
+
+struct SphereTree {
+  std::vector<TreeNode> nodes;  // nodes[0] is the root; children follow their parent
+  std::vector<Sphere> leaves;   // in the caller's numbering, never reordered
+  int32_t branching = 0;
+  int32_t depth = 0;  // levels below the root; a lone leaf has depth 0
+
+  bool empty() const { return nodes.empty(); }
+  Sphere node_sphere(int32_t node) const;
+};
+
+// What a query reports: a node whose sphere is within reach, and at the deepest
+// level allowed, a leaf (leaf >= 0) or an inner node standing in for its subtree.
+struct TreeHit {
+  int32_t node;
+  int32_t leaf;  // -1 when the hit is an inner node cut off by max_level
+};
+
+struct TreeQueryStats {
+  int32_t visited = 0;  // node tests performed
+  int32_t hits = 0;     // hits found, including those beyond capacity
+};
+
+// Rigid pose of an object: world = rotation * local + position.
+struct RigidPose {
+  vec3 position{0.0};
+  glm::dmat3 rotation{1.0};
+};
+
+// Express a world segment in the object's frame (the tree is never rebuilt).
+Segment to_object_frame(const RigidPose& pose, const Segment& world);
+Sphere to_object_frame(const RigidPose& pose, const Sphere& world);
+
+// All nodes within `margin` of the segment solid (frame in the object's frame), down
+// to max_level (-1: leaves). Writes at most capacity hits; allocates nothing.
+TreeQueryStats query_segment(const SphereTree& tree, const SegmentFrame& frame, double margin,
+                             int32_t max_level, TreeHit* hits, int32_t capacity);
+
+// The same for a sphere (e.g. a palm sphere).
+TreeQueryStats query_sphere(const SphereTree& tree, const Sphere& sphere, double margin,
+                            int32_t max_level, TreeHit* hits, int32_t capacity);
+
+}  // namespace frusta

@@ -1,0 +1,137 @@
+// SPDX-License-Identifier: MIT
+#include "spheretree/sphere_tree.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <glm/gtc/quaternion.hpp>
+
+#include "geometry/contact_test.h"
+#include "scenes/random_trees.h"
+#include "spheretree/tree_builder.h"
+
+namespace frusta {
+namespace {
+
+std::vector<int32_t> sorted_leaves(const TreeHit* hits, int32_t count) {
+  std::vector<int32_t> out;
+  for (int32_t i = 0; i < count; ++i) out.push_back(hits[i].leaf);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// Property: a query returns exactly the leaves a brute-force scan of every leaf
+// returns, for random trees (sizes, shapes, branching), segments, poses and margins.
+TEST(SphereTree, SegmentQueryEqualsBruteForceScan) {
+  std::mt19937_64 rng(2024);
+  std::uniform_real_distribution<double> u(-0.15, 0.15), r(0.0, 0.015), margin(0.0, 0.01);
+  std::normal_distribution<double> g;
+  std::vector<TreeHit> hits(20000);
+  long compared = 0, nonempty = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const int count = 1 + static_cast<int>(rng() % 3000);
+    const std::vector<Sphere> leaves = testing::random_leaves(rng, count, trial % 4);
+    SphereTree tree;
+    ASSERT_EQ(build_sphere_tree(leaves, {2 + static_cast<int32_t>(rng() % 15)}, &tree), FRUSTA_OK);
+    RigidPose pose;
+    pose.position = vec3(u(rng), u(rng), u(rng)) * 10.0;
+    pose.rotation = glm::mat3_cast(glm::normalize(glm::dquat(g(rng), g(rng), g(rng), g(rng))));
+    for (int q = 0; q < 20; ++q) {
+      // a world segment near the object's world placement
+      const vec3 a = pose.position + pose.rotation * vec3(u(rng), u(rng), u(rng));
+      const vec3 b = a + 0.05 * vec3(g(rng), g(rng), g(rng));
+      const Segment world{a, b, r(rng), r(rng)};
+      const double m = margin(rng);
+      const SegmentFrame frame = make_segment_frame(to_object_frame(pose, world));
+      const TreeQueryStats stats = query_segment(tree, frame, m, -1, hits.data(), 20000);
+      ASSERT_LE(stats.hits, 20000);
+      std::vector<int32_t> brute;
+      // brute force in the world frame: the pose transform must not change the answer
+      const SegmentFrame world_frame = make_segment_frame(world);
+      for (int32_t i = 0; i < count; ++i) {
+        const Sphere w{pose.position + pose.rotation * leaves[static_cast<size_t>(i)].center,
+                       leaves[static_cast<size_t>(i)].radius};
+        if (may_touch(world_frame, w, m)) brute.push_back(i);
+      }
+      const std::vector<int32_t> found = sorted_leaves(hits.data(), stats.hits);
+      // transforming rounds differently by ~1e-17 m: allow only leaves exactly at the boundary
+      std::vector<int32_t> diff;
+      std::set_symmetric_difference(found.begin(), found.end(), brute.begin(), brute.end(),
+                                    std::back_inserter(diff));
+      for (int32_t leaf : diff) {
+        const Sphere& s = leaves[static_cast<size_t>(leaf)];
+        const Sphere grown{s.center, s.radius + 1e-12}, shrunk{s.center, std::max(0.0, s.radius - 1e-12)};
+        EXPECT_TRUE(may_touch(frame, grown, m) && !may_touch(frame, shrunk, m))
+            << "leaf " << leaf << " differs and is not on the boundary";
+      }
+      compared += count;
+      nonempty += !brute.empty();
+    }
+  }
+  EXPECT_GT(nonempty, 1000);  // the segments do hit things
+  EXPECT_GT(compared, 1000000);
+}
+
+TEST(SphereTree, SphereQueryEqualsBruteForceScan) {
+  std::mt19937_64 rng(99);
+  std::uniform_real_distribution<double> u(-0.12, 0.12), r(0.0, 0.02);
+  std::vector<TreeHit> hits(5000);
+  for (int trial = 0; trial < 200; ++trial) {
+    const std::vector<Sphere> leaves = testing::random_leaves(rng, 2000, trial % 4);
+    SphereTree tree;
+    ASSERT_EQ(build_sphere_tree(leaves, {4}, &tree), FRUSTA_OK);
+    const Sphere probe{vec3(u(rng), u(rng), u(rng)), r(rng)};
+    const TreeQueryStats stats = query_sphere(tree, probe, 0.001, -1, hits.data(), 5000);
+    std::vector<int32_t> brute;
+    for (int32_t i = 0; i < 2000; ++i)
+      if (may_touch_sphere(probe, leaves[static_cast<size_t>(i)], 0.001)) brute.push_back(i);
+    EXPECT_EQ(sorted_leaves(hits.data(), stats.hits), brute);
+  }
+}
+
+TEST(SphereTree, CullingVisitsFewNodesWhenLittleIsNear) {
+  std::mt19937_64 rng(5);
+  const std::vector<Sphere> leaves = testing::random_leaves(rng, 100000, 1);  // a shell
+  SphereTree tree;
+  ASSERT_EQ(build_sphere_tree(leaves, {8}, &tree), FRUSTA_OK);
+  TreeHit hits[256];
+  // a fingertip-sized segment touching the shell at one spot
+  const SegmentFrame frame =
+      make_segment_frame({vec3(0.0, 0.0, 0.11), vec3(0.0, 0.0, 0.085), 0.01, 0.008});
+  const TreeQueryStats near = query_segment(tree, frame, 0.002, -1, hits, 256);
+  EXPECT_GT(near.hits, 0);
+  EXPECT_LT(near.visited, 2000);  // of ~114k nodes
+  // far away: the root alone is tested
+  const SegmentFrame far = make_segment_frame({vec3(1, 1, 1), vec3(1.05, 1, 1), 0.01, 0.008});
+  EXPECT_EQ(query_segment(tree, far, 0.002, -1, hits, 256).visited, 1);
+}
+
+TEST(SphereTree, LevelCutReportsInnerNodesThatBoundTheirLeaves) {
+  std::mt19937_64 rng(8);
+  const std::vector<Sphere> leaves = testing::random_leaves(rng, 5000, 0);
+  SphereTree tree;
+  ASSERT_EQ(build_sphere_tree(leaves, {4}, &tree), FRUSTA_OK);
+  std::vector<TreeHit> all(5000), cut(5000);
+  const SegmentFrame frame = make_segment_frame({vec3(-0.1, 0, 0), vec3(0.1, 0, 0), 0.01, 0.01});
+  const int32_t leaves_hit = query_segment(tree, frame, 0.0, -1, all.data(), 5000).hits;
+  const int32_t nodes_hit = query_segment(tree, frame, 0.0, 2, cut.data(), 5000).hits;
+  EXPECT_GT(leaves_hit, nodes_hit);
+  EXPECT_LE(nodes_hit, 16);  // level 2 of a 4-ary tree has at most 16 nodes
+  for (int32_t i = 0; i < nodes_hit; ++i) EXPECT_EQ(cut[static_cast<size_t>(i)].leaf, -1);
+}
+
+TEST(SphereTree, HitsBeyondCapacityAreCountedNotWritten) {
+  std::mt19937_64 rng(3);
+  const std::vector<Sphere> leaves = testing::random_leaves(rng, 1000, 0);
+  SphereTree tree;
+  ASSERT_EQ(build_sphere_tree(leaves, {4}, &tree), FRUSTA_OK);
+  TreeHit hits[5] = {};
+  hits[4] = {-7, -7};
+  const SegmentFrame frame = make_segment_frame({vec3(-0.2, 0, 0), vec3(0.2, 0, 0), 0.05, 0.05});
+  const TreeQueryStats stats = query_segment(tree, frame, 0.0, -1, hits, 4);
+  EXPECT_GT(stats.hits, 4);
+  EXPECT_EQ(hits[4].node, -7);  // untouched past capacity
+}
+
+}  // namespace
+}  // namespace frusta
