@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "spheretree/sphere_tree.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
@@ -72,6 +75,28 @@ TreeQueryStats query_sphere(const SphereTree& tree, const Sphere& sphere, double
   return walk(tree,
               [&](const Sphere& s) { return may_touch_sphere(sphere, s, margin); },
               max_level, hits, capacity);
+}
+
+double distance_to_leaves(const SphereTree& tree, const vec3& point) {
+  double best = INFINITY;
+  if (tree.empty()) return best;
+  int32_t stack[kMaxTreeDepth * kMaxBranching + 1];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const int32_t index = stack[--top];
+    const TreeNode& n = tree.nodes[static_cast<size_t>(index)];
+    if (n.count == 0) {
+      const Sphere& leaf = tree.leaves[static_cast<size_t>(n.first)];
+      best = std::min(best, glm::length(point - leaf.center) - leaf.radius);
+      continue;
+    }
+    // every leaf below lies inside the bound, so none is nearer than its surface
+    const Sphere bound = tree.node_sphere(index);
+    if (glm::length(point - bound.center) - bound.radius >= best) continue;
+    for (int32_t c = n.count - 1; c >= 0; --c) stack[top++] = n.first + c;
+  }
+  return best;
 }
 
 }  // namespace frusta

@@ -64,4 +64,8 @@ TreeQueryStats query_segment(const SphereTree& tree, const SegmentFrame& frame, 
 TreeQueryStats query_sphere(const SphereTree& tree, const Sphere& sphere, double margin,
                             int32_t max_level, TreeHit* hits, int32_t capacity);
 
+// Signed distance from a point to the union of the leaves (negative inside one):
+// branch and bound over the tree, for measuring how well leaves fit a surface.
+double distance_to_leaves(const SphereTree& tree, const vec3& point);
+
 }  // namespace frusta

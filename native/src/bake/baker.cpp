@@ -1,0 +1,101 @@
+// SPDX-License-Identifier: MIT
+#include "bake/baker.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <random>
+
+#include <glm/geometric.hpp>
+
+#include "core/error.h"
+#include "spheretree/tree_builder.h"
+
+namespace frusta {
+
+BakeError measure_bake_error(const MeshQueries& queries, const TriangleMesh& mesh,
+                             const SphereTree& tree, int64_t samples, uint64_t seed) {
+  BakeError error;
+  // (a) how far a finger sinks before it touches: surface points outside every leaf
+  for (const SurfaceSample& s : sample_surface(mesh, static_cast<size_t>(samples), seed))
+    error.uncovered = std::max(error.uncovered, distance_to_leaves(tree, s.point));
+
+  // (b) how far above the surface a finger stops: leaf points outside the mesh.
+  // Points are spread over the leaves by area, at least 4 on each.
+  double total_area = 0.0;
+  for (const Sphere& l : tree.leaves) total_area += l.radius * l.radius;
+  std::mt19937_64 rng(seed ^ 0x9e3779b97f4a7c15ull);
+  std::normal_distribution<double> gauss;
+  int64_t leaf_points = 0;
+  for (const Sphere& l : tree.leaves) {
+    const double share = total_area > 0.0 ? l.radius * l.radius / total_area : 0.0;
+    const int64_t n = std::max<int64_t>(4, static_cast<int64_t>(std::ceil(share * static_cast<double>(samples))));
+    for (int64_t k = 0; k < n; ++k) {
+      const vec3 q = l.center + l.radius * glm::normalize(vec3(gauss(rng), gauss(rng), gauss(rng)));
+      ++leaf_points;
+      // inside another leaf: not on the union's boundary, cannot stand out further
+      if (distance_to_leaves(tree, q) < -1e-12) continue;
+      if (queries.inside(q)) continue;
+      error.protruding = std::max(error.protruding, queries.closest(q).distance);
+    }
+  }
+  error.samples = std::min(samples, leaf_points);
+  return error;
+}
+
+frusta_result bake_sphere_tree(const TriangleMesh& mesh, const BakeParams& params,
+                               const ProgressFn& progress, TreeFile* out, bool* target_met) {
+  if (!(params.target_error > 0.0) || !std::isfinite(params.target_error))
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "target error is %g m, must be > 0", params.target_error);
+  if (params.max_leaves < 1 || params.max_leaves > kMaxLeaves)
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "max leaves is %lld, must be 1..%lld",
+                static_cast<long long>(params.max_leaves), static_cast<long long>(kMaxLeaves));
+  if (params.max_depth < 1 || params.max_depth > kMaxTreeDepth)
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "max depth is %d, must be 1..%d", params.max_depth,
+                kMaxTreeDepth);
+  if (params.error_samples < 1000 || params.error_samples > 100000000)
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "error samples is %lld, must be 1e3..1e8",
+                static_cast<long long>(params.error_samples));
+  if (frusta_result r = check_mesh(mesh, "mesh")) return r;
+
+  const auto start = std::chrono::steady_clock::now();
+  std::unique_ptr<MeshQueries> queries;
+  if (frusta_result r = MeshQueries::create(mesh, &queries)) return r;
+  const CoverResult cover =
+      cover_with_spheres(mesh, *queries, {params.target_error, params.max_leaves, params.seed}, progress);
+  if (cover.cancelled) return fail(FRUSTA_ERROR_INTERNAL, "bake cancelled");
+  if (cover.leaves.empty())
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "the mesh encloses no volume the baker could fill");
+
+  TreeFile file;
+  if (frusta_result r = build_sphere_tree(cover.leaves, {params.branching}, &file.tree)) return r;
+  if (file.tree.depth > params.max_depth)
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "%zu leaves need depth %d with branching %d, more than "
+                "max depth %d: raise the branching or the depth", cover.leaves.size(),
+                file.tree.depth, params.branching, params.max_depth);
+  file.bounds_min = vec3(INFINITY);
+  file.bounds_max = vec3(-INFINITY);
+  for (const Sphere& l : file.tree.leaves) {
+    file.bounds_min = glm::min(file.bounds_min, l.center - l.radius);
+    file.bounds_max = glm::max(file.bounds_max, l.center + l.radius);
+  }
+  // measured on samples the cover never saw
+  const BakeError error = measure_bake_error(*queries, mesh, file.tree, params.error_samples,
+                                             params.seed + 0x5eed);
+  BakeRecord& b = file.bake;
+  b.target_error = params.target_error;
+  b.max_leaves = params.max_leaves;
+  b.max_depth = params.max_depth;
+  b.triangle_count = static_cast<int32_t>(std::min<size_t>(mesh.triangles.size(), INT32_MAX));
+  b.uncovered_error = error.uncovered;
+  b.protruding_error = error.protruding;
+  b.error_samples = error.samples;
+  b.bake_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (progress) progress(1.0);
+  *target_met = !cover.budget_exhausted && error.uncovered <= params.target_error &&
+                error.protruding <= params.target_error;
+  *out = std::move(file);
+  return FRUSTA_OK;
+}
+
+}  // namespace frusta

@@ -1,0 +1,25 @@
+// SPDX-License-Identifier: MIT
+// Procedural test objects, shared by the tests, the benchmarks and the sample
+// generator: closed, outward-wound triangle meshes in metres.
+#pragma once
+
+#include "bake/triangle_mesh.h"
+
+namespace frusta::scenes {
+
+// UV sphere; `rings` controls the triangle count (about 2 * rings^2).
+TriangleMesh make_sphere(double radius, int rings);
+// Axis-aligned box centred at the origin; each face split into n x n quads.
+TriangleMesh make_box(const vec3& size, int n = 1);
+// A bowl: a hemispherical shell (outer radius, wall thickness) with a rim, open side up.
+TriangleMesh make_bowl(double radius, double thickness, int rings);
+// A mug: a cylindrical cup (closed bottom) with a torus handle overlapping its wall.
+TriangleMesh make_mug(double radius, double height, double wall, int segments);
+// An octahedron: sharp convex edges and vertices.
+TriangleMesh make_octahedron(double radius);
+
+// Append b to a (no welding): overlapping parts make a non-manifold union, as in
+// real assets.
+void append(TriangleMesh& a, const TriangleMesh& b);
+
+}  // namespace frusta::scenes
