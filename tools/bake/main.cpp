@@ -1,0 +1,195 @@
+// SPDX-License-Identifier: MIT
+// frusta-bake: glTF 2.0 mesh in, sphere tree (.frtree) out, with its measured error.
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+
+#include "bake/baker.h"
+#include "gltf_loader.h"
+#include "spheretree/tree_file.h"
+
+namespace {
+
+enum ExitCode {
+  kOk = 0,
+  kUsage = 2,
+  kUnreadableInput = 3,
+  kBakeFailed = 4,
+  kWriteFailed = 5,
+  kTargetMissed = 6,
+};
+
+const char* const kHelp = R"(usage: frusta-bake [options] INPUT.gltf|INPUT.glb
+
+Builds the sphere tree of every triangle in the glTF scene (node transforms
+applied, metres) and writes it to a .frtree file. Leaves are spheres fitted to the
+surface from the inside plus inscribed spheres filling the interior.
+
+Both error figures are measured on fresh random points after the bake:
+  uncovered   the largest distance from the mesh surface to the leaves: how far a
+              finger can sink into the true surface before it touches a leaf
+  protruding  the largest distance a leaf stands out of the mesh: how far above
+              the true surface a finger stops
+
+options:
+  -o, --output PATH    where to write the tree (default: INPUT with .frtree)
+  --max-error MM       target for both error figures, millimetres (default 1)
+  --max-leaves N       leaf budget; the bake stops there even if the target is not
+                       met (default 200000)
+  --branching N        children per tree node, 2..16 (default 4)
+  --max-depth N        refuse trees deeper than this, 1..40 (default 40)
+  --samples N          points behind each error figure, >= 100000 recommended
+                       (default 100000)
+  --seed N             random seed of the sampling (default 1): same input, same tree
+  --json               print one JSON object on stdout instead of the summary
+  -q, --quiet          no summary and no progress bar
+  -h, --help           this text
+
+exit codes:
+  0 written, both figures within the target
+  2 bad usage          3 unreadable or invalid input
+  4 bake failed        5 the output could not be written
+  6 written, but the leaf budget ran out before the target was met
+)";
+
+struct Options {
+  std::string input, output;
+  frusta::BakeParams params;
+  bool json = false, quiet = false;
+};
+
+int usage(const char* message) {
+  std::fprintf(stderr, "frusta-bake: %s\n(run frusta-bake --help for the options)\n", message);
+  return kUsage;
+}
+
+bool number(const char* text, double* out) {
+  char* end = nullptr;
+  *out = std::strtod(text, &end);
+  return end && *end == '\0' && end != text;
+}
+
+int parse(int argc, char** argv, Options* o) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "-h" || a == "--help") {
+      std::fputs(kHelp, stdout);
+      std::exit(kOk);
+    }
+    if (a == "--json") { o->json = true; continue; }
+    if (a == "-q" || a == "--quiet") { o->quiet = true; continue; }
+    if (a.rfind("-", 0) == 0) {
+      if (i + 1 >= argc) return usage((a + " needs a value").c_str());
+      const char* value = argv[++i];
+      double v = 0.0;
+      if (a == "-o" || a == "--output") { o->output = value; continue; }
+      if (!number(value, &v)) return usage((a + " needs a number, got '" + value + "'").c_str());
+      if (a == "--max-error") o->params.target_error = v * 1e-3;
+      else if (a == "--max-leaves") o->params.max_leaves = static_cast<int64_t>(v);
+      else if (a == "--branching") o->params.branching = static_cast<int32_t>(v);
+      else if (a == "--max-depth") o->params.max_depth = static_cast<int32_t>(v);
+      else if (a == "--samples") o->params.error_samples = static_cast<int64_t>(v);
+      else if (a == "--seed") o->params.seed = static_cast<uint64_t>(v);
+      else return usage(("unknown option " + a).c_str());
+      continue;
+    }
+    if (!o->input.empty()) return usage("only one input file");
+    o->input = a;
+  }
+  if (o->input.empty()) return usage("no input file");
+  if (o->output.empty()) {
+    const size_t dot = o->input.find_last_of('.');
+    const size_t slash = o->input.find_last_of('/');
+    o->output = (dot != std::string::npos && (slash == std::string::npos || dot > slash)
+                     ? o->input.substr(0, dot) : o->input) + ".frtree";
+  }
+  return kOk;
+}
+
+void json_string(const std::string& s) {
+  std::putchar('"');
+  for (char c : s) {
+    if (c == '"' || c == '\\') std::printf("\\%c", c);
+    else if (static_cast<unsigned char>(c) < 0x20) std::printf("\\u%04x", c);
+    else std::putchar(c);
+  }
+  std::putchar('"');
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options o;
+  if (int code = parse(argc, argv, &o)) return code;
+
+  frusta::GltfLoadResult input;
+  if (frusta::load_gltf_triangles(o.input, &input) != FRUSTA_OK) {
+    std::fprintf(stderr, "frusta-bake: %s\n", frusta_last_error());
+    return kUnreadableInput;
+  }
+  for (const std::string& w : input.warnings) std::fprintf(stderr, "frusta-bake: warning: %s\n", w.c_str());
+  if (frusta::check_mesh(input.mesh, o.input.c_str()) != FRUSTA_OK) {
+    std::fprintf(stderr, "frusta-bake: %s\n", frusta_last_error());
+    return kUnreadableInput;
+  }
+
+  const bool bar = !o.quiet && isatty(STDERR_FILENO);
+  const frusta::ProgressFn progress = [bar](double fraction) {
+    if (bar) {
+      const int filled = static_cast<int>(fraction * 40.0);
+      std::fprintf(stderr, "\r  baking [%.*s%*s] %3d%%", filled, "########################################",
+                   40 - filled, "", static_cast<int>(fraction * 100.0));
+    }
+    return true;
+  };
+  frusta::TreeFile file;
+  bool met = false;
+  const frusta_result r = frusta::bake_sphere_tree(input.mesh, o.params, progress, &file, &met);
+  if (bar) std::fputs("\r\033[K", stderr);
+  if (r != FRUSTA_OK) {
+    std::fprintf(stderr, "frusta-bake: %s: %s\n", o.input.c_str(), frusta_last_error());
+    return kBakeFailed;
+  }
+  if (frusta::save_tree_file(o.output, file) != FRUSTA_OK) {
+    std::fprintf(stderr, "frusta-bake: %s\n", frusta_last_error());
+    return kWriteFailed;
+  }
+
+  const frusta::BakeRecord& b = file.bake;
+  if (o.json) {
+    std::printf("{\"input\": ");
+    json_string(o.input);
+    std::printf(", \"output\": ");
+    json_string(o.output);
+    std::printf(", \"triangles\": %zu, \"leaves\": %zu, \"nodes\": %zu, \"depth\": %d, "
+                "\"branching\": %d, \"bake_seconds\": %.4f, \"target_error_mm\": %.4f, "
+                "\"uncovered_error_mm\": %.4f, \"protruding_error_mm\": %.4f, "
+                "\"error_samples\": %lld, \"target_met\": %s, \"warnings\": %zu}\n",
+                input.mesh.triangles.size(), file.tree.leaves.size(), file.tree.nodes.size(),
+                file.tree.depth, file.tree.branching, b.bake_seconds, b.target_error * 1e3,
+                b.uncovered_error * 1e3, b.protruding_error * 1e3,
+                static_cast<long long>(b.error_samples), met ? "true" : "false",
+                input.warnings.size());
+  } else if (!o.quiet) {
+    std::printf("%s -> %s\n  %zu triangles, %zu leaves, depth %d (branching %d), %.2f s\n"
+                "  uncovered  %.3f mm  (surface to leaves)\n"
+                "  protruding %.3f mm  (leaves above the surface)\n"
+                "  measured on %lld points each; target %.3f mm: %s\n",
+                o.input.c_str(), o.output.c_str(), input.mesh.triangles.size(),
+                file.tree.leaves.size(), file.tree.depth, file.tree.branching, b.bake_seconds,
+                b.uncovered_error * 1e3, b.protruding_error * 1e3,
+                static_cast<long long>(b.error_samples), b.target_error * 1e3,
+                met ? "met" : "NOT met (raise --max-leaves or --max-error)");
+  }
+  if (!met) {
+    if (o.quiet || o.json)
+      std::fprintf(stderr, "frusta-bake: %s: target %.3f mm not met within %lld leaves\n",
+                   o.input.c_str(), b.target_error * 1e3, static_cast<long long>(b.max_leaves));
+    return kTargetMissed;
+  }
+  return kOk;
+}
