@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: MIT
+// frusta-bake run as a process, as a user or a build script runs it.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <fstream>
+#include <regex>
+#include <string>
+
+#include "spheretree/tree_file.h"
+
+namespace {
+
+struct Process {
+  int code;
+  std::string out;
+};
+
+Process run(const std::string& arguments) {
+  const std::string command = std::string(FRUSTA_BAKE_BINARY) + " " + arguments + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  std::string out;
+  char buffer[4096];
+  while (size_t n = fread(buffer, 1, sizeof buffer, pipe)) out.append(buffer, n);
+  const int status = pclose(pipe);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+double figure(const std::string& json, const char* key) {
+  const std::regex pattern(std::string("\"") + key + "\": ([0-9.eE+-]+)");
+  std::smatch m;
+  return std::regex_search(json, m, pattern) ? std::stod(m[1]) : -1.0;
+}
+
+const std::string kObjects = FRUSTA_SAMPLE_OBJECTS_DIR;
+
+TEST(FrustaBakeCli, BakesASampleWithinOneMillimetreAndSaysSoInJson) {
+  const std::string out = ::testing::TempDir() + "mug.frtree";
+  const Process r = run("--max-error 1 --json -o " + out + " " + kObjects + "/mug.glb");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("\"target_met\": true"), std::string::npos) << r.out;
+  EXPECT_GT(figure(r.out, "uncovered_error_mm"), 0.0);
+  EXPECT_LE(figure(r.out, "uncovered_error_mm"), 1.0);
+  EXPECT_LE(figure(r.out, "protruding_error_mm"), 1.0);
+  EXPECT_GE(figure(r.out, "error_samples"), 100000);
+  EXPECT_GT(figure(r.out, "leaves"), 100);
+  // what it wrote loads, and carries the same figures
+  frusta::TreeFile file;
+  ASSERT_EQ(frusta::load_tree_file(out, &file), FRUSTA_OK) << frusta_last_error();
+  EXPECT_NEAR(file.bake.uncovered_error * 1e3, figure(r.out, "uncovered_error_mm"), 1e-4);
+  EXPECT_EQ(static_cast<double>(file.tree.leaves.size()), figure(r.out, "leaves"));
+}
+
+TEST(FrustaBakeCli, HumanSummaryNamesBothFigures) {
+  const Process r = run("-o " + ::testing::TempDir() + "box.frtree " + kObjects + "/box.glb");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("uncovered"), std::string::npos);
+  EXPECT_NE(r.out.find("protruding"), std::string::npos);
+  EXPECT_EQ(r.out.find('\r'), std::string::npos);  // no progress bar into a pipe
+}
+
+TEST(FrustaBakeCli, ExitCodesSeparateTheFailures) {
+  EXPECT_EQ(run("").code, 2);
+  EXPECT_EQ(run("--max-error").code, 2);
+  EXPECT_EQ(run("--max-error lots x.glb").code, 2);
+  EXPECT_EQ(run("--frobnicate 3 x.glb").code, 2);
+  const Process missing = run("/nonexistent/x.glb");
+  EXPECT_EQ(missing.code, 3);
+  EXPECT_NE(missing.out.find("/nonexistent/x.glb"), std::string::npos);
+  const std::string junk = ::testing::TempDir() + "junk.gltf";
+  std::ofstream(junk) << "not gltf";
+  EXPECT_EQ(run(junk).code, 3);
+  EXPECT_EQ(run("--branching 99 " + kObjects + "/box.glb -o " + ::testing::TempDir() + "b.frtree").code, 4);
+  EXPECT_EQ(run("-o /nonexistent/dir/x.frtree " + kObjects + "/box.glb").code, 5);
+  const Process budget = run("--max-leaves 20 -o " + ::testing::TempDir() + "c.frtree " + kObjects + "/ball.glb");
+  EXPECT_EQ(budget.code, 6) << budget.out;
+  EXPECT_NE(budget.out.find("NOT met"), std::string::npos) << budget.out;
+  const Process help = run("--help");
+  EXPECT_EQ(help.code, 0);
+  for (const char* option : {"--max-error", "--max-leaves", "--branching", "--max-depth", "--samples",
+                             "--seed", "--json", "--output", "--quiet"})
+    EXPECT_NE(help.out.find(option), std::string::npos) << option;
+}
+
+}  // namespace
