@@ -120,13 +120,13 @@ MeshQueries::~MeshQueries() {
   if (impl_->device) rtcReleaseDevice(impl_->device);
 }
 
-MeshQueries::Closest MeshQueries::closest(const vec3& point) const {
+MeshQueries::Closest MeshQueries::closest(const vec3& point, double max_distance) const {
   Impl::Search search{impl_->mesh, point};
   RTCPointQuery query;
   query.x = static_cast<float>(point.x);
   query.y = static_cast<float>(point.y);
   query.z = static_cast<float>(point.z);
-  query.radius = std::numeric_limits<float>::infinity();
+  query.radius = static_cast<float>(max_distance);
   query.time = 0.0f;
   RTCPointQueryContext context;
   rtcInitPointQueryContext(&context);

@@ -3,6 +3,7 @@
 // Thread-safe for concurrent queries once built.
 #pragma once
 
+#include <limits>
 #include <memory>
 
 #include "bake/triangle_mesh.h"
@@ -21,8 +22,11 @@ class MeshQueries {
     double distance = 0.0;
     vec3 point{0.0};
   };
-  // Nearest surface point (unsigned distance).
-  Closest closest(const vec3& point) const;
+  // Nearest surface point (unsigned distance). With a finite max_distance only
+  // surface within it is searched (much faster near a medial point, where every
+  // triangle is almost equally far); none there gives distance = infinity.
+  Closest closest(const vec3& point,
+                  double max_distance = std::numeric_limits<double>::infinity()) const;
 
   // Inside the solid the mesh bounds. Rays in five fixed directions each count the
   // winding number (+1 per surface left, -1 per surface entered) and vote inside when

@@ -63,7 +63,8 @@ Sphere shrinking_ball(const MeshQueries& queries, const vec3& point, const vec3&
                       double max_radius) {
   double r = max_radius;
   for (int iteration = 0; iteration < 64; ++iteration) {
-    const MeshQueries::Closest q = queries.closest(point - r * normal);
+    // only surface nearer than r can invalidate the ball: search no further
+    const MeshQueries::Closest q = queries.closest(point - r * normal, r * (1.0 - 1e-9));
     if (q.distance >= r * (1.0 - 1e-9)) return {point - r * normal, r};  // nothing nearer
     // shrink to the ball tangent at `point` through q: |c - q| = r with c = point - r n;
     // when q lies on the outer side of the tangent plane no such ball exists: halve
@@ -87,7 +88,10 @@ CoverResult cover_with_spheres(const TriangleMesh& mesh, const MeshQueries& quer
   const size_t count = static_cast<size_t>(std::clamp(area / (spacing * spacing), 2e4, 4e6));
   const double cover_error = std::max(0.3 * e, e - 1.2 * std::sqrt(area / static_cast<double>(count)));
   const double min_radius = 0.5 * e;  // the most a ball may stand out at an edge
-  const double max_radius = 0.5 * box.diagonal();
+  // a medial ball may be as large as the object, but near a medial point (a ball's
+  // centre) every triangle is equally far and a distance query visits them all;
+  // past ~30 e a larger ball barely widens what it covers within e
+  const double max_radius = std::min(0.5 * box.diagonal(), 32.0 * e);
 
   std::vector<SurfaceSample> samples = sample_surface(mesh, count, params.seed);
   result.surface_samples = samples.size();

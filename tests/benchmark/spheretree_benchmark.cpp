@@ -1,0 +1,117 @@
+// SPDX-License-Identifier: MIT
+// tools/bench spheretree: the bake's time against its error, and tree queries
+// against a brute-force scan of every leaf, in one run so the ratios hold.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "bake/baker.h"
+#include "geometry/contact_test.h"
+#include "scenes/meshes.h"
+#include "spheretree/tree_builder.h"
+
+namespace frusta {
+namespace {
+
+void report_bake(benchmark::State& state, const TriangleMesh& mesh, double target) {
+  BakeParams params;
+  params.target_error = target;
+  TreeFile file;
+  bool met = false;
+  for (auto _ : state) {
+    if (bake_sphere_tree(mesh, params, nullptr, &file, &met) != FRUSTA_OK) {
+      state.SkipWithError(frusta_last_error());
+      return;
+    }
+  }
+  state.counters["triangles"] = static_cast<double>(mesh.triangles.size());
+  state.counters["target_error_mm"] = target * 1e3;
+  state.counters["leaves"] = static_cast<double>(file.tree.leaves.size());
+  state.counters["depth"] = file.tree.depth;
+  state.counters["bake_seconds"] = file.bake.bake_seconds;
+  state.counters["uncovered_error_mm"] = file.bake.uncovered_error * 1e3;
+  state.counters["protruding_error_mm"] = file.bake.protruding_error * 1e3;
+  state.counters["target_met"] = met;
+}
+
+// bake time and error against triangle count: a 4 cm ball tessellated ever finer
+void BM_BakeByTriangles(benchmark::State& state) {
+  const int rings = static_cast<int>(state.range(0));
+  report_bake(state, scenes::make_sphere(0.04, rings), 0.001);
+}
+BENCHMARK(BM_BakeByTriangles)->Arg(16)->Arg(50)->Arg(158)->Arg(500)->Iterations(1)->Unit(benchmark::kMillisecond);
+
+// bake time and error against the target: a mug (flat, curved, concave, a handle)
+void BM_BakeByTargetError(benchmark::State& state) {
+  report_bake(state, scenes::make_mug(0.04, 0.09, 0.006, 48), static_cast<double>(state.range(0)) * 1e-4);
+}
+BENCHMARK(BM_BakeByTargetError)->Arg(40)->Arg(20)->Arg(10)->Arg(5)->Iterations(1)->Unit(benchmark::kMillisecond);
+
+// A surface-like tree of N leaves: spheres on a 5 cm shell, sized to overlap.
+SphereTree shell_tree(int leaves) {
+  std::mt19937_64 rng(leaves);
+  std::normal_distribution<double> g;
+  const double radius = 0.05, leaf = 2.0 * radius * std::sqrt(4.0 / leaves);
+  std::vector<Sphere> spheres;
+  for (int i = 0; i < leaves; ++i)
+    spheres.push_back({(radius - leaf) * glm::normalize(vec3(g(rng), g(rng), g(rng))), leaf});
+  SphereTree tree;
+  build_sphere_tree(spheres, {4}, &tree);
+  return tree;
+}
+
+// a fingertip pressed 2 mm into the shell from many directions
+std::vector<SegmentFrame> fingertips(int count) {
+  std::mt19937_64 rng(7);
+  std::normal_distribution<double> g;
+  std::vector<SegmentFrame> frames;
+  for (int i = 0; i < count; ++i) {
+    const vec3 n = glm::normalize(vec3(g(rng), g(rng), g(rng)));
+    const vec3 tip = (0.05 + 0.008 - 0.002) * n;
+    frames.push_back(make_segment_frame({tip + 0.025 * n, tip, 0.009, 0.008}));
+  }
+  return frames;
+}
+
+void BM_TreeQuerySegment(benchmark::State& state) {
+  const SphereTree tree = shell_tree(static_cast<int>(state.range(0)));
+  const std::vector<SegmentFrame> frames = fingertips(256);
+  std::vector<TreeHit> hits(1 << 16);
+  size_t i = 0;
+  int64_t found = 0, visited = 0;
+  for (auto _ : state) {
+    const TreeQueryStats s = query_segment(tree, frames[i++ & 255], 0.002, -1, hits.data(),
+                                           static_cast<int32_t>(hits.size()));
+    found += s.hits;
+    visited += s.visited;
+  }
+  state.counters["leaves"] = static_cast<double>(tree.leaves.size());
+  state.counters["hits_per_query"] = static_cast<double>(found) / static_cast<double>(state.iterations());
+  state.counters["nodes_visited"] = static_cast<double>(visited) / static_cast<double>(state.iterations());
+  state.counters["bytes_per_leaf"] =
+      static_cast<double>(tree.nodes.size() * sizeof(TreeNode) + tree.leaves.size() * sizeof(Sphere)) /
+      static_cast<double>(tree.leaves.size());
+}
+BENCHMARK(BM_TreeQuerySegment)->RangeMultiplier(10)->Range(100, 1000000)->Unit(benchmark::kMicrosecond);
+
+// the same queries scanning every leaf: the tree's speed-up is the ratio of the two
+void BM_BruteForceScanSegment(benchmark::State& state) {
+  const SphereTree tree = shell_tree(static_cast<int>(state.range(0)));
+  const std::vector<SegmentFrame> frames = fingertips(256);
+  size_t i = 0;
+  int64_t found = 0;
+  for (auto _ : state) {
+    const SegmentFrame& f = frames[i++ & 255];
+    for (const Sphere& leaf : tree.leaves) found += may_touch(f, leaf, 0.002);
+  }
+  state.counters["leaves"] = static_cast<double>(tree.leaves.size());
+  state.counters["hits_per_query"] = static_cast<double>(found) / static_cast<double>(state.iterations());
+}
+BENCHMARK(BM_BruteForceScanSegment)->RangeMultiplier(10)->Range(100, 1000000)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+}  // namespace frusta
