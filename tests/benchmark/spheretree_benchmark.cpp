@@ -3,8 +3,10 @@
 // against a brute-force scan of every leaf, in one run so the ratios hold.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
+#include <tuple>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -50,6 +52,38 @@ void BM_BakeByTargetError(benchmark::State& state) {
   report_bake(state, scenes::make_mug(0.04, 0.09, 0.006, 48), static_cast<double>(state.range(0)) * 1e-4);
 }
 BENCHMARK(BM_BakeByTargetError)->Arg(40)->Arg(20)->Arg(10)->Arg(5)->Iterations(1)->Unit(benchmark::kMillisecond);
+
+// The baseline the surface-fitted cover must beat: an octree-style grid of cubes of
+// side h over the surface, each leaf the cube's circumscribed sphere, h the largest
+// that keeps both error figures within the target. Same mesh, same error measure.
+void BM_GridBaselineByTargetError(benchmark::State& state) {
+  const TriangleMesh mesh = scenes::make_mug(0.04, 0.09, 0.006, 48);
+  const double target = static_cast<double>(state.range(0)) * 1e-4;
+  std::unique_ptr<MeshQueries> queries;
+  MeshQueries::create(mesh, &queries);
+  // a cell's circumscribed sphere can stand out of the surface by up to its radius:
+  // take h so that the radius equals the target
+  const double h = target / (0.5 * std::sqrt(3.0));
+  const std::vector<SurfaceSample> samples =
+      sample_surface(mesh, static_cast<size_t>(std::max(1e5, 16.0 * surface_area(mesh) / (h * h))), 3);
+  SphereTree tree;
+  for (auto _ : state) {
+    std::vector<glm::i64vec3> cells;
+    for (const SurfaceSample& s : samples)
+      cells.emplace_back(std::floor(s.point.x / h), std::floor(s.point.y / h), std::floor(s.point.z / h));
+    std::sort(cells.begin(), cells.end(), [](auto a, auto b) { return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z); });
+    cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+    std::vector<Sphere> leaves;
+    for (const auto& c : cells) leaves.push_back({(vec3(c) + 0.5) * h, 0.5 * std::sqrt(3.0) * h});
+    build_sphere_tree(leaves, {4}, &tree);
+  }
+  const BakeError error = measure_bake_error(*queries, mesh, tree, 100000, 11);
+  state.counters["target_error_mm"] = target * 1e3;
+  state.counters["leaves"] = static_cast<double>(tree.leaves.size());
+  state.counters["uncovered_error_mm"] = error.uncovered * 1e3;
+  state.counters["protruding_error_mm"] = error.protruding * 1e3;
+}
+BENCHMARK(BM_GridBaselineByTargetError)->Arg(40)->Arg(20)->Arg(10)->Arg(5)->Iterations(1)->Unit(benchmark::kMillisecond);
 
 // A surface-like tree of N leaves: spheres on a 5 cm shell, sized to overlap.
 SphereTree shell_tree(int leaves) {
