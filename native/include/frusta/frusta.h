@@ -275,4 +275,97 @@ FRUSTA_API frusta_result frusta_constraint_eval(const frusta_segment* segment,
                                                 const frusta_sphere* sphere, int32_t form,
                                                 frusta_constraint* out);
 
+/* ---------------------------------------------------------------- sphere trees */
+
+/** Sphere-tree handle (an object's shape). Opaque; pass by value; zero means null. */
+typedef struct frusta_tree_id {
+  int32_t index1;      /* slot + 1; 0 is null */
+  uint16_t world0;     /* always 0: trees are standalone */
+  uint16_t generation; /* bumped when the slot is reused */
+} frusta_tree_id;
+
+/** Bake parameters. Leaves are spheres fitted to the surface from inside plus
+ *  inscribed spheres filling the interior; see README "Sphere trees". */
+typedef struct frusta_bake_def {
+  int32_t struct_size;   /* sizeof(frusta_bake_def) */
+  int32_t branching;     /* children per node, 2..16; default 4 */
+  double target_error;   /* metres, bound on both error figures; default 0.001 */
+  int64_t max_leaves;    /* leaf budget, 1..2^24; default 200000 */
+  int32_t max_depth;     /* 1..40; a deeper tree is refused; default 40 */
+  int32_t reserved0;     /* explicit padding */
+  int64_t error_samples; /* points behind each error figure, 1e3..1e8; default 100000 */
+  uint64_t seed;         /* sampling seed: same mesh and seed, same tree; default 1 */
+  int32_t internal_value;/* set by frusta_default_bake_def(); do not touch */
+  int32_t reserved1;     /* explicit padding */
+} frusta_bake_def;
+
+/** What a tree holds and how well it fits the mesh it was baked from. */
+typedef struct frusta_sphere_tree_info {
+  int32_t struct_size;       /* sizeof(frusta_sphere_tree_info); set it before the call */
+  int32_t branching;
+  int32_t depth;             /* levels below the root */
+  int32_t leaf_count;
+  int32_t node_count;
+  int32_t triangle_count;    /* of the baked mesh */
+  double bounds_min[3];      /* metres, of the leaves, object frame */
+  double bounds_max[3];
+  double target_error;       /* metres, as baked */
+  double uncovered_error;    /* metres: largest distance from the surface to the leaves */
+  double protruding_error;   /* metres: largest height of the leaves above the surface */
+  double bake_seconds;
+  int64_t error_samples;     /* points behind each figure */
+  int32_t target_met;        /* 1 if both figures are within target_error */
+  int32_t reserved0;         /* explicit padding */
+} frusta_sphere_tree_info;
+
+/** One node a tree query found: a leaf (leaf >= 0), or with max_level an inner node
+ *  standing in for its subtree (leaf = -1). */
+typedef struct frusta_tree_hit {
+  int32_t node;
+  int32_t leaf;
+  frusta_sphere sphere;  /* world frame (through the pose given to the query) */
+} frusta_tree_hit;
+
+/** Defaults for frusta_bake_sphere_tree. Thread: any. */
+FRUSTA_API frusta_bake_def frusta_default_bake_def(void);
+
+/** Bake a sphere tree from triangles: vertices are vertex_count xyz triples in
+ *  metres (right-handed object frame), indices are index_count / 3 triangles
+ *  wound counter-clockwise seen from outside. Blocks for the bake's duration
+ *  (seconds for 10^5 triangles): call it off any frame loop. A tree that misses
+ *  the target within max_leaves is still returned; check info.target_met.
+ *  Thread: any; bakes on different threads run concurrently. */
+FRUSTA_API frusta_result frusta_bake_sphere_tree(const float* vertices, int32_t vertex_count,
+                                                 const int32_t* indices, int32_t index_count,
+                                                 const frusta_bake_def* def,
+                                                 frusta_tree_id* out_tree);
+/** Load a .frtree file. Truncated, corrupt or other-version files are refused with
+ *  FRUSTA_ERROR_FILE_FORMAT or FRUSTA_ERROR_CORRUPT_FILE naming the problem.
+ *  Thread: any. */
+FRUSTA_API frusta_result frusta_load_sphere_tree(const char* path, frusta_tree_id* out_tree);
+/** Write a tree to path atomically (a reader never sees half a file). Thread: any. */
+FRUSTA_API frusta_result frusta_save_sphere_tree(frusta_tree_id tree, const char* path);
+/** Destroy a tree; its id becomes stale. Thread: any, but not while another thread
+ *  uses the same tree. */
+FRUSTA_API frusta_result frusta_destroy_sphere_tree(frusta_tree_id tree);
+/** 1 if the id names a live tree, else 0. Thread: any. */
+FRUSTA_API int32_t frusta_sphere_tree_is_valid(frusta_tree_id tree);
+/** Fill info (set info->struct_size first). Thread: any. */
+FRUSTA_API frusta_result frusta_sphere_tree_get_info(frusta_tree_id tree,
+                                                     frusta_sphere_tree_info* info);
+/** Copy the leaf spheres, object frame, in their stable numbering. Pass out null and
+ *  capacity 0 to learn the count. Thread: any. */
+FRUSTA_API frusta_result frusta_sphere_tree_get_leaves(frusta_tree_id tree, frusta_sphere* out,
+                                                       int32_t capacity, int32_t* out_count);
+/** Every leaf (or, with max_level >= 0, every node at that level) within margin
+ *  metres of a world segment, for the object placed at pose (null: identity).
+ *  Writes at most capacity hits; *out_count is the number found, which may be
+ *  larger. Thread: any. */
+FRUSTA_API frusta_result frusta_sphere_tree_query_segment(frusta_tree_id tree,
+                                                          const frusta_pose* pose,
+                                                          const frusta_segment* segment,
+                                                          double margin, int32_t max_level,
+                                                          frusta_tree_hit* out, int32_t capacity,
+                                                          int32_t* out_count);
+
 #endif /* FRUSTA_FRUSTA_H */

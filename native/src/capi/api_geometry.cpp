@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // C ABI: single sphere/segment queries for bindings, tests and tools.
+#include "capi/convert.h"
 #include "core/error.h"
 #include "core/validate.h"
 #include "frusta/frusta.h"
@@ -12,34 +13,13 @@ using namespace frusta;
 
 namespace {
 
-frusta_result check_radius(double radius, const char* field) {
-  return check_range(radius, 0.0, kMaxCoordinate, false, field);
-}
-
 frusta_result read_inputs(const frusta_segment* segment, const frusta_sphere* sphere,
                           SegmentFrame* frame, Sphere* ball) {
-  if (frusta_result r = check_pointer(segment, "segment")) return r;
-  if (frusta_result r = check_pointer(sphere, "sphere")) return r;
-  if (frusta_result r = check_bounded(segment->proximal, 3, kMaxCoordinate, "segment.proximal"))
-    return r;
-  if (frusta_result r = check_bounded(segment->distal, 3, kMaxCoordinate, "segment.distal"))
-    return r;
-  if (frusta_result r = check_radius(segment->proximal_radius, "segment.proximal_radius"))
-    return r;
-  if (frusta_result r = check_radius(segment->distal_radius, "segment.distal_radius")) return r;
-  if (frusta_result r = check_bounded(sphere->center, 3, kMaxCoordinate, "sphere.center"))
-    return r;
-  if (frusta_result r = check_radius(sphere->radius, "sphere.radius")) return r;
-  const Segment s{vec3(segment->proximal[0], segment->proximal[1], segment->proximal[2]),
-                  vec3(segment->distal[0], segment->distal[1], segment->distal[2]),
-                  segment->proximal_radius, segment->distal_radius};
+  Segment s;
+  if (frusta_result r = read_segment(segment, "segment", &s)) return r;
+  if (frusta_result r = read_sphere(sphere, "sphere", ball)) return r;
   *frame = make_segment_frame(s);
-  *ball = {vec3(sphere->center[0], sphere->center[1], sphere->center[2]), sphere->radius};
   return FRUSTA_OK;
-}
-
-void store(const vec3& v, double out[3]) {
-  for (int k = 0; k < 3; ++k) out[k] = v[k];
 }
 
 }  // namespace

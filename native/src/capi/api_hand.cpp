@@ -5,6 +5,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "capi/convert.h"
 #include "capi/hand_registry.h"
 #include "core/error.h"
 #include "core/validate.h"
@@ -77,17 +78,10 @@ FRUSTA_API int32_t frusta_hand_is_valid(frusta_hand_id hand) {
 FRUSTA_API frusta_result frusta_hand_set_palm_pose(frusta_hand_id hand, const frusta_pose* pose) {
   HandObject* h = nullptr;
   if (frusta_result r = hand_registry().find(hand, &h)) return r;
-  if (frusta_result r = check_pointer(pose, "pose")) return r;
-  if (frusta_result r = check_bounded(pose->position, 3, kMaxCoordinate, "pose.position"))
-    return r;
-  if (frusta_result r = check_finite(pose->rotation, 4, "pose.rotation")) return r;
-  const glm::dquat q(pose->rotation[3], pose->rotation[0], pose->rotation[1], pose->rotation[2]);
-  const double norm = glm::length(q);
-  if (!(norm >= 0.5 && norm <= 2.0))
-    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "pose.rotation has norm %g; a unit quaternion "
-                "(x, y, z, w) is expected (norms in [0.5, 2] are normalised)", norm);
-  h->state.palm_position = vec3(pose->position[0], pose->position[1], pose->position[2]);
-  h->state.palm_rotation = q / norm;
+  Pose p;
+  if (frusta_result r = read_pose(pose, "pose", &p)) return r;
+  h->state.palm_position = p.position;
+  h->state.palm_rotation = p.rotation;
   forward_kinematics(h->model, h->state, h->pose);
   return FRUSTA_OK;
 }

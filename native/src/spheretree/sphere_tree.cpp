@@ -8,46 +8,9 @@
 #include <glm/matrix.hpp>
 
 #include "geometry/contact_test.h"
-#include "spheretree/tree_limits.h"
 
 namespace frusta {
 
-namespace {
-
-// Depth-first walk that reports, in node order, every node the predicate accepts at
-// max_level or at a leaf. The stack is bounded by the tree limits, so it lives on
-// the thread's stack and the walk allocates nothing.
-template <class Touches>
-TreeQueryStats walk(const SphereTree& tree, Touches touches, int32_t max_level, TreeHit* hits,
-                    int32_t capacity) {
-  TreeQueryStats stats;
-  if (tree.empty()) return stats;
-  struct Entry {
-    int32_t node, level;
-  };
-  Entry stack[kMaxTreeDepth * kMaxBranching + 1];
-  int top = 0;
-  stack[top++] = {0, 0};
-  while (top > 0) {
-    const Entry e = stack[--top];
-    const TreeNode& n = tree.nodes[static_cast<size_t>(e.node)];
-    ++stats.visited;
-    // a leaf is tested as its exact sphere, an inner node as its (outward-rounded) bound
-    const bool leaf = n.count == 0;
-    if (!touches(leaf ? tree.leaves[static_cast<size_t>(n.first)] : tree.node_sphere(e.node)))
-      continue;
-    if (leaf || e.level == max_level) {
-      if (stats.hits < capacity) hits[stats.hits] = {e.node, leaf ? n.first : -1};
-      ++stats.hits;
-      continue;
-    }
-    // children pushed last-first so they pop in array order
-    for (int32_t c = n.count - 1; c >= 0; --c) stack[top++] = {n.first + c, e.level + 1};
-  }
-  return stats;
-}
-
-}  // namespace
 
 Sphere SphereTree::node_sphere(int32_t node) const {
   const TreeNode& n = nodes[static_cast<size_t>(node)];
@@ -64,17 +27,29 @@ Sphere to_object_frame(const RigidPose& pose, const Sphere& world) {
   return {glm::transpose(pose.rotation) * (world.center - pose.position), world.radius};
 }
 
+namespace {
+// collects hits into a caller buffer, counting those beyond its capacity
+struct BufferHits {
+  TreeHit* hits;
+  int32_t capacity;
+  int32_t count = 0;
+  void operator()(const TreeHit& h) {
+    if (count < capacity) hits[count] = h;
+    ++count;
+  }
+};
+}  // namespace
+
 TreeQueryStats query_segment(const SphereTree& tree, const SegmentFrame& frame, double margin,
                              int32_t max_level, TreeHit* hits, int32_t capacity) {
-  return walk(tree, [&](const Sphere& s) { return may_touch(frame, s, margin); }, max_level, hits,
-              capacity);
+  return walk_tree(tree, [&](const Sphere& s) { return may_touch(frame, s, margin); }, max_level,
+                   BufferHits{hits, capacity});
 }
 
 TreeQueryStats query_sphere(const SphereTree& tree, const Sphere& sphere, double margin,
                             int32_t max_level, TreeHit* hits, int32_t capacity) {
-  return walk(tree,
-              [&](const Sphere& s) { return may_touch_sphere(sphere, s, margin); },
-              max_level, hits, capacity);
+  return walk_tree(tree, [&](const Sphere& s) { return may_touch_sphere(sphere, s, margin); },
+                   max_level, BufferHits{hits, capacity});
 }
 
 double distance_to_leaves(const SphereTree& tree, const vec3& point) {

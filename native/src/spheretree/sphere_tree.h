@@ -11,6 +11,7 @@
 
 #include "geometry/segment_frame.h"
 #include "geometry/types.h"
+#include "spheretree/tree_limits.h"
 
 namespace frusta {
 
@@ -50,6 +51,39 @@ struct RigidPose {
   vec3 position{0.0};
   glm::dmat3 rotation{1.0};
 };
+
+// Depth-first walk reporting, in node order, every node the predicate accepts at
+// max_level (-1: leaves only) or at a leaf, to emit(TreeHit). Leaves are tested as
+// their exact spheres, inner nodes as their outward-rounded bounds, so the result
+// equals a scan of every leaf. The stack is bounded by the tree limits and lives on
+// the thread's stack: the walk itself allocates nothing.
+template <class Touches, class Emit>
+TreeQueryStats walk_tree(const SphereTree& tree, Touches touches, int32_t max_level, Emit emit) {
+  TreeQueryStats stats;
+  if (tree.empty()) return stats;
+  struct Entry {
+    int32_t node, level;
+  };
+  Entry stack[kMaxTreeDepth * kMaxBranching + 1];
+  int top = 0;
+  stack[top++] = {0, 0};
+  while (top > 0) {
+    const Entry e = stack[--top];
+    const TreeNode& n = tree.nodes[static_cast<size_t>(e.node)];
+    ++stats.visited;
+    const bool leaf = n.count == 0;
+    if (!touches(leaf ? tree.leaves[static_cast<size_t>(n.first)] : tree.node_sphere(e.node)))
+      continue;
+    if (leaf || e.level == max_level) {
+      emit(TreeHit{e.node, leaf ? n.first : -1});
+      ++stats.hits;
+      continue;
+    }
+    // children pushed last-first so they pop in array order
+    for (int32_t c = n.count - 1; c >= 0; --c) stack[top++] = {n.first + c, e.level + 1};
+  }
+  return stats;
+}
 
 // Express a world segment in the object's frame (the tree is never rebuilt).
 Segment to_object_frame(const RigidPose& pose, const Segment& world);

@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: MIT
+#include "capi/convert.h"
+
+#include <string>
+
+#include "core/error.h"
+#include "core/validate.h"
+
+namespace frusta {
+
+namespace {
+
+frusta_result check_radius(double radius, const std::string& field) {
+  return check_range(radius, 0.0, kMaxCoordinate, false, field.c_str());
+}
+
+vec3 to_vec3(const double v[3]) { return vec3(v[0], v[1], v[2]); }
+
+}  // namespace
+
+frusta_result read_segment(const frusta_segment* in, const char* name, Segment* out) {
+  const std::string n = name;
+  if (frusta_result r = check_pointer(in, name)) return r;
+  if (frusta_result r = check_bounded(in->proximal, 3, kMaxCoordinate, (n + ".proximal").c_str()))
+    return r;
+  if (frusta_result r = check_bounded(in->distal, 3, kMaxCoordinate, (n + ".distal").c_str()))
+    return r;
+  if (frusta_result r = check_radius(in->proximal_radius, n + ".proximal_radius")) return r;
+  if (frusta_result r = check_radius(in->distal_radius, n + ".distal_radius")) return r;
+  *out = {to_vec3(in->proximal), to_vec3(in->distal), in->proximal_radius, in->distal_radius};
+  return FRUSTA_OK;
+}
+
+frusta_result read_sphere(const frusta_sphere* in, const char* name, Sphere* out) {
+  const std::string n = name;
+  if (frusta_result r = check_pointer(in, name)) return r;
+  if (frusta_result r = check_bounded(in->center, 3, kMaxCoordinate, (n + ".center").c_str()))
+    return r;
+  if (frusta_result r = check_radius(in->radius, n + ".radius")) return r;
+  *out = {to_vec3(in->center), in->radius};
+  return FRUSTA_OK;
+}
+
+frusta_result read_pose(const frusta_pose* in, const char* name, Pose* out) {
+  const std::string n = name;
+  if (frusta_result r = check_pointer(in, name)) return r;
+  if (frusta_result r = check_bounded(in->position, 3, kMaxCoordinate, (n + ".position").c_str()))
+    return r;
+  if (frusta_result r = check_finite(in->rotation, 4, (n + ".rotation").c_str())) return r;
+  const glm::dquat q(in->rotation[3], in->rotation[0], in->rotation[1], in->rotation[2]);
+  const double norm = glm::length(q);
+  if (!(norm >= 0.5 && norm <= 2.0))
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "%s.rotation has norm %g; a unit quaternion (x, y, z, "
+                "w) is expected (norms in [0.5, 2] are normalised)", name, norm);
+  *out = {to_vec3(in->position), q / norm};
+  return FRUSTA_OK;
+}
+
+void store(const vec3& v, double out[3]) {
+  for (int k = 0; k < 3; ++k) out[k] = v[k];
+}
+
+}  // namespace frusta
