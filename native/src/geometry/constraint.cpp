@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "geometry/constraint.h"
 
+#include <initializer_list>
+
 #include <glm/geometric.hpp>
 
 namespace frusta {
@@ -66,11 +68,32 @@ Constraint ball_constraint(const SegmentFrame& frame, Feature ball, const Sphere
   return g;
 }
 
+namespace {
+
+Constraint feature_constraint(const SegmentFrame& frame, Feature feature, const Sphere& sphere,
+                              ConstraintForm form) {
+  return feature == Feature::kSide ? side_constraint(frame, sphere, form)
+                                   : ball_constraint(frame, feature, sphere, form);
+}
+
+}  // namespace
+
 Constraint contact_constraint(const SegmentFrame& frame, const Sphere& sphere,
                               ConstraintForm form) {
-  const Feature feature = endpoint_rule(frame, sphere);
-  if (feature == Feature::kSide) return side_constraint(frame, sphere, form);
-  return ball_constraint(frame, feature, sphere, form);
+  const Feature rule = endpoint_rule(frame, sphere);
+  // A ball bulges past the side's line at its rim (the line is not tangent to it), and
+  // the larger ball past the whole of a short segment, while the rule still names the
+  // side or the other ball; the union's constraint is the tightest of the three. Compare
+  // in the distance form, whose values are all signed distances, then evaluate the
+  // winner in the form asked for.
+  Constraint tightest = feature_constraint(frame, rule, sphere, ConstraintForm::kDistance);
+  for (Feature ball : {Feature::kDistalBall, Feature::kProximalBall}) {
+    if (ball == rule) continue;
+    const Constraint g = ball_constraint(frame, ball, sphere, ConstraintForm::kDistance);
+    if (g.value < tightest.value) tightest = g;
+  }
+  if (form == ConstraintForm::kDistance) return tightest;
+  return feature_constraint(frame, tightest.feature, sphere, form);
 }
 
 }  // namespace frusta

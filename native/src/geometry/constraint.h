@@ -32,7 +32,8 @@ Constraint side_constraint(const SegmentFrame& frame, const Sphere& sphere, Cons
 // The constraint of the ball at E (kDistalBall) or at D (kProximalBall).
 Constraint ball_constraint(const SegmentFrame& frame, Feature ball, const Sphere& sphere,
                            ConstraintForm form);
-// The constraint of the feature endpoint_rule picks.
+// The constraint of the feature endpoint_rule picks, or of an end ball where it bulges
+// past that feature, so g < 0 exactly when the sphere overlaps the solid.
 Constraint contact_constraint(const SegmentFrame& frame, const Sphere& sphere,
                               ConstraintForm form);
 

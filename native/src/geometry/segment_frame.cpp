@@ -10,6 +10,8 @@ namespace frusta {
 namespace {
 // Below this length (relative to the segment's size) the axis direction is noise.
 constexpr double kDegenerateRelativeLength = 1e-12;
+// A radial part this small (relative to |w|) is rounding noise, not a direction.
+constexpr double kAxisNoise = 1e-15;
 }  // namespace
 
 SegmentFrame make_segment_frame(const Segment& segment) {
@@ -42,9 +44,13 @@ AxialSplit split_axial(const SegmentFrame& frame, const vec3& point) {
 }
 
 vec3 radial_direction(const SegmentFrame& frame, const AxialSplit& split) {
-  if (split.radial_length > 0.0) return split.radial / split.radial_length;
-  // on the axis every perpendicular is as good; pick the one least aligned with it
   const vec3& u = frame.axis;
+  // w - (w.u)u keeps a rounding residue along u of ~eps|w|; near the axis that residue
+  // is the whole radial part, so project it out once more before normalising
+  const vec3 radial = split.radial - glm::dot(split.radial, u) * u;
+  const double length = glm::length(radial);
+  if (length > kAxisNoise * glm::length(split.w)) return radial / length;
+  // on the axis every perpendicular is as good; pick the one least aligned with it
   const vec3 helper = std::fabs(u.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0);
   return glm::normalize(glm::cross(glm::cross(u, helper), u));
 }

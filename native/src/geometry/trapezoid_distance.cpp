@@ -38,7 +38,8 @@ TrapezoidDistance trapezoid_distance(double x, double y, double length, double r
     // depth is the distance to the nearest edge line: cap E, cap D or the side
     const double to_distal = x, to_proximal = length - x, to_side = -lateral_gap;
     if (to_side <= to_distal && to_side <= to_proximal) {
-      out = {-to_side, x - to_side * lateral_nx, y - to_side * lateral_ny, lateral_nx, lateral_ny};
+      // the side point is a step of to_side along the outward normal
+      out = {-to_side, x + to_side * lateral_nx, y + to_side * lateral_ny, lateral_nx, lateral_ny};
     } else if (to_distal <= to_proximal) {
       out = {-to_distal, 0.0, y, -1.0, 0.0};
     } else {
