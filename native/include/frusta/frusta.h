@@ -209,7 +209,7 @@ FRUSTA_API frusta_result frusta_hand_get_joint_angles(frusta_hand_id hand, doubl
 FRUSTA_API frusta_result frusta_hand_get_segments(frusta_hand_id hand, frusta_segment* out,
                                                   int32_t capacity, int32_t* out_count);
 /** Copy the palm's spheres in world coordinates. Pass capacity 0 and out null to
- *  learn the count. Thread: main. */
+ *  learn the count. A failed call writes nothing, out_count included. Thread: main. */
 FRUSTA_API frusta_result frusta_hand_get_palm_spheres(frusta_hand_id hand, frusta_sphere* out,
                                                       int32_t capacity, int32_t* out_count);
 /** Jacobian of a material point of one segment, in world coordinates, with respect to
@@ -256,7 +256,7 @@ typedef enum frusta_constraint_form {
 /** A constraint value g >= 0 (non-penetrating) with its analytic gradient. */
 typedef struct frusta_constraint {
   int32_t struct_size;    /* sizeof(frusta_constraint); set it before the call */
-  int32_t feature;        /* frusta_feature the endpoint rule (seed eqs. 10-11) chose */
+  int32_t feature;        /* frusta_feature whose constraint this is */
   double value;           /* metres or metres squared, by form */
   double grad_proximal[3];/* dg/dD */
   double grad_distal[3];  /* dg/dE */
@@ -268,9 +268,11 @@ typedef struct frusta_constraint {
 FRUSTA_API frusta_result frusta_query_contact(const frusta_segment* segment,
                                               const frusta_sphere* sphere,
                                               frusta_contact_query* out);
-/** The constraint of the feature the endpoint rule picks (side, distal ball or
- *  proximal ball), in the given form, with its gradient with respect to D, E and the
- *  sphere's centre. Same input rules as frusta_query_contact. Thread: any. */
+/** The constraint of the feature the endpoint rule (seed eqs. 10-11) picks (side,
+ *  distal ball or proximal ball), or of an end ball where that ball bulges past the
+ *  picked feature, so value < 0 exactly when the sphere overlaps the solid. In the
+ *  given form, with its gradient with respect to D, E and the sphere's centre. Same
+ *  input rules as frusta_query_contact. Thread: any. */
 FRUSTA_API frusta_result frusta_constraint_eval(const frusta_segment* segment,
                                                 const frusta_sphere* sphere, int32_t form,
                                                 frusta_constraint* out);
@@ -354,7 +356,8 @@ FRUSTA_API int32_t frusta_sphere_tree_is_valid(frusta_tree_id tree);
 FRUSTA_API frusta_result frusta_sphere_tree_get_info(frusta_tree_id tree,
                                                      frusta_sphere_tree_info* info);
 /** Copy the leaf spheres, object frame, in their stable numbering. Pass out null and
- *  capacity 0 to learn the count. Thread: any. */
+ *  capacity 0 to learn the count. A failed call writes nothing, out_count included.
+ *  Thread: any. */
 FRUSTA_API frusta_result frusta_sphere_tree_get_leaves(frusta_tree_id tree, frusta_sphere* out,
                                                        int32_t capacity, int32_t* out_count);
 /** Every leaf (or, with max_level >= 0, every node at that level) within margin

@@ -140,10 +140,13 @@ FRUSTA_API frusta_result frusta_hand_get_palm_spheres(frusta_hand_id hand, frust
   HandObject* h = nullptr;
   if (frusta_result r = hand_registry().find(hand, &h)) return r;
   const int32_t count = static_cast<int32_t>(h->model.palm_spheres.size());
-  if (out_count) *out_count = count;
-  if (capacity == 0 && !out) return FRUSTA_OK;  // a size query
+  if (capacity == 0 && !out) {  // a size query
+    if (out_count) *out_count = count;
+    return FRUSTA_OK;
+  }
   if (frusta_result r = check_pointer(out, "out")) return r;
   if (frusta_result r = check_output(capacity, count, "the palm spheres")) return r;
+  if (out_count) *out_count = count;
   for (int32_t i = 0; i < count; ++i) {
     const Sphere s = palm_sphere(h->model, h->pose, i);
     for (int k = 0; k < 3; ++k) out[i].center[k] = s.center[k];

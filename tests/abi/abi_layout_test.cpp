@@ -1,0 +1,250 @@
+// SPDX-License-Identifier: MIT
+// The frozen layout of every public struct, the values of every public enum and
+// constant, and the signature of every entry point. This table is what the C#
+// binding mirrors (Marshal.SizeOf / Marshal.OffsetOf); change it only together with
+// FRUSTA_ABI_VERSION, the binding and the changelog.
+#include <gtest/gtest.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <type_traits>
+
+#include "frusta/frusta.h"
+
+// ---------------------------------------------------------------- the table
+// X(struct, member, offset, size in bytes). Members are listed in declaration order.
+#define FRUSTA_ABI_MEMBERS(X)                         \
+  X(frusta_hand_id, index1, 0, 4)                     \
+  X(frusta_hand_id, world0, 4, 2)                     \
+  X(frusta_hand_id, generation, 6, 2)                 \
+  X(frusta_pose, position, 0, 24)                     \
+  X(frusta_pose, rotation, 24, 32)                    \
+  X(frusta_sphere, center, 0, 24)                     \
+  X(frusta_sphere, radius, 24, 8)                     \
+  X(frusta_segment, proximal, 0, 24)                  \
+  X(frusta_segment, distal, 24, 24)                   \
+  X(frusta_segment, proximal_radius, 48, 8)           \
+  X(frusta_segment, distal_radius, 56, 8)             \
+  X(frusta_hand_def, struct_size, 0, 4)               \
+  X(frusta_hand_def, side, 4, 4)                      \
+  X(frusta_hand_def, hand_length, 8, 8)               \
+  X(frusta_hand_def, hand_breadth, 16, 8)             \
+  X(frusta_hand_def, segment_length, 24, 120)         \
+  X(frusta_hand_def, joint_radius, 144, 160)          \
+  X(frusta_hand_def, base_position, 304, 120)         \
+  X(frusta_hand_def, base_rotation, 424, 120)         \
+  X(frusta_hand_def, joint_min, 544, 160)             \
+  X(frusta_hand_def, joint_max, 704, 160)             \
+  X(frusta_hand_def, palm_length, 864, 8)             \
+  X(frusta_hand_def, palm_breadth, 872, 8)            \
+  X(frusta_hand_def, palm_thickness, 880, 8)          \
+  X(frusta_hand_def, internal_value, 888, 4)          \
+  X(frusta_hand_def, reserved0, 892, 4)               \
+  X(frusta_contact_query, struct_size, 0, 4)          \
+  X(frusta_contact_query, feature, 4, 4)              \
+  X(frusta_contact_query, patent_contact, 8, 4)       \
+  X(frusta_contact_query, contact, 12, 4)             \
+  X(frusta_contact_query, distance, 16, 8)            \
+  X(frusta_contact_query, hand_point, 24, 24)         \
+  X(frusta_contact_query, object_point, 48, 24)       \
+  X(frusta_contact_query, normal, 72, 24)             \
+  X(frusta_contact_query, axial, 96, 8)               \
+  X(frusta_constraint, struct_size, 0, 4)             \
+  X(frusta_constraint, feature, 4, 4)                 \
+  X(frusta_constraint, value, 8, 8)                   \
+  X(frusta_constraint, grad_proximal, 16, 24)         \
+  X(frusta_constraint, grad_distal, 40, 24)           \
+  X(frusta_constraint, grad_center, 64, 24)           \
+  X(frusta_tree_id, index1, 0, 4)                     \
+  X(frusta_tree_id, world0, 4, 2)                     \
+  X(frusta_tree_id, generation, 6, 2)                 \
+  X(frusta_bake_def, struct_size, 0, 4)               \
+  X(frusta_bake_def, branching, 4, 4)                 \
+  X(frusta_bake_def, target_error, 8, 8)              \
+  X(frusta_bake_def, max_leaves, 16, 8)               \
+  X(frusta_bake_def, max_depth, 24, 4)                \
+  X(frusta_bake_def, reserved0, 28, 4)                \
+  X(frusta_bake_def, error_samples, 32, 8)            \
+  X(frusta_bake_def, seed, 40, 8)                     \
+  X(frusta_bake_def, internal_value, 48, 4)           \
+  X(frusta_bake_def, reserved1, 52, 4)                \
+  X(frusta_sphere_tree_info, struct_size, 0, 4)       \
+  X(frusta_sphere_tree_info, branching, 4, 4)         \
+  X(frusta_sphere_tree_info, depth, 8, 4)             \
+  X(frusta_sphere_tree_info, leaf_count, 12, 4)       \
+  X(frusta_sphere_tree_info, node_count, 16, 4)       \
+  X(frusta_sphere_tree_info, triangle_count, 20, 4)   \
+  X(frusta_sphere_tree_info, bounds_min, 24, 24)      \
+  X(frusta_sphere_tree_info, bounds_max, 48, 24)      \
+  X(frusta_sphere_tree_info, target_error, 72, 8)     \
+  X(frusta_sphere_tree_info, uncovered_error, 80, 8)  \
+  X(frusta_sphere_tree_info, protruding_error, 88, 8) \
+  X(frusta_sphere_tree_info, bake_seconds, 96, 8)     \
+  X(frusta_sphere_tree_info, error_samples, 104, 8)   \
+  X(frusta_sphere_tree_info, target_met, 112, 4)      \
+  X(frusta_sphere_tree_info, reserved0, 116, 4)       \
+  X(frusta_tree_hit, node, 0, 4)                      \
+  X(frusta_tree_hit, leaf, 4, 4)                      \
+  X(frusta_tree_hit, sphere, 8, 32)
+
+// X(struct, sizeof, alignof)
+#define FRUSTA_ABI_STRUCTS(X)        \
+  X(frusta_hand_id, 8, 4)            \
+  X(frusta_pose, 56, 8)              \
+  X(frusta_sphere, 32, 8)            \
+  X(frusta_segment, 64, 8)           \
+  X(frusta_hand_def, 896, 8)         \
+  X(frusta_contact_query, 104, 8)    \
+  X(frusta_constraint, 88, 8)        \
+  X(frusta_tree_id, 8, 4)            \
+  X(frusta_bake_def, 56, 8)          \
+  X(frusta_sphere_tree_info, 120, 8) \
+  X(frusta_tree_hit, 40, 8)
+
+static_assert(FRUSTA_ABI_VERSION == 1,
+              "the layout table below is ABI 1: update it and the C# mirror with the ABI");
+
+#define FRUSTA_CHECK_MEMBER(type, member, offset, size)                          \
+  static_assert(offsetof(type, member) == (offset), #type "." #member " moved"); \
+  static_assert(sizeof(type::member) == (size), #type "." #member " changed size");
+FRUSTA_ABI_MEMBERS(FRUSTA_CHECK_MEMBER)
+#undef FRUSTA_CHECK_MEMBER
+
+#define FRUSTA_CHECK_STRUCT(type, size, align)                                         \
+  static_assert(sizeof(type) == (size), "sizeof(" #type ") changed");                  \
+  static_assert(alignof(type) == (align), "alignof(" #type ") changed");               \
+  static_assert(std::is_standard_layout_v<type> && std::is_trivially_copyable_v<type>, \
+                #type " must stay a plain C struct");
+FRUSTA_ABI_STRUCTS(FRUSTA_CHECK_STRUCT)
+#undef FRUSTA_CHECK_STRUCT
+
+// enums travel as int32_t (in structs) and as the return value
+static_assert(sizeof(frusta_result) == 4 && sizeof(frusta_hand_side) == 4 &&
+                  sizeof(frusta_finger) == 4 && sizeof(frusta_feature) == 4 &&
+                  sizeof(frusta_constraint_form) == 4,
+              "enums must be 32-bit");
+
+// ---------------------------------------------------------------- values
+static_assert(FRUSTA_OK == 0 && FRUSTA_ERROR_NULL_POINTER == 1 && FRUSTA_ERROR_STRUCT_SIZE == 2 &&
+              FRUSTA_ERROR_DEF_NOT_DEFAULTED == 3 && FRUSTA_ERROR_NULL_ID == 4 &&
+              FRUSTA_ERROR_STALE_ID == 5 && FRUSTA_ERROR_NOT_FINITE == 6 &&
+              FRUSTA_ERROR_OUT_OF_RANGE == 7 && FRUSTA_ERROR_CAPACITY == 8 &&
+              FRUSTA_ERROR_ABI_MISMATCH == 9 && FRUSTA_ERROR_OUT_OF_MEMORY == 10 &&
+              FRUSTA_ERROR_INTERNAL == 11 && FRUSTA_ERROR_IO == 12 &&
+              FRUSTA_ERROR_FILE_FORMAT == 13 && FRUSTA_ERROR_CORRUPT_FILE == 14);
+static_assert(FRUSTA_HAND_RIGHT == 0 && FRUSTA_HAND_LEFT == 1);
+static_assert(FRUSTA_FINGER_THUMB == 0 && FRUSTA_FINGER_INDEX == 1 && FRUSTA_FINGER_MIDDLE == 2 &&
+              FRUSTA_FINGER_RING == 3 && FRUSTA_FINGER_LITTLE == 4);
+static_assert(FRUSTA_FEATURE_SIDE == 0 && FRUSTA_FEATURE_DISTAL == 1 &&
+              FRUSTA_FEATURE_PROXIMAL == 2);
+static_assert(FRUSTA_CONSTRAINT_SQUARED == 0 && FRUSTA_CONSTRAINT_DISTANCE == 1);
+static_assert(FRUSTA_FINGER_COUNT == 5 && FRUSTA_SEGMENTS_PER_FINGER == 3 &&
+              FRUSTA_JOINTS_PER_FINGER == 4 && FRUSTA_HAND_SEGMENT_COUNT == 15 &&
+              FRUSTA_HAND_JOINT_COUNT == 20 && FRUSTA_PALM_DOF == 6);
+static_assert(FRUSTA_VERSION ==
+              FRUSTA_VERSION_MAJOR * 1000000 + FRUSTA_VERSION_MINOR * 1000 + FRUSTA_VERSION_PATCH);
+
+// ---------------------------------------------------------------- signatures
+#define FRUSTA_CHECK_SIGNATURE(function, type) \
+  static_assert(std::is_same_v<decltype(&function), type>, #function " changed signature");
+FRUSTA_CHECK_SIGNATURE(frusta_version, int32_t (*)())
+FRUSTA_CHECK_SIGNATURE(frusta_abi_version, int32_t (*)())
+FRUSTA_CHECK_SIGNATURE(frusta_last_error, const char* (*)())
+FRUSTA_CHECK_SIGNATURE(frusta_result_name, const char* (*)(int32_t))
+FRUSTA_CHECK_SIGNATURE(frusta_check_abi, frusta_result (*)(int32_t))
+FRUSTA_CHECK_SIGNATURE(frusta_default_hand_def, frusta_hand_def (*)())
+FRUSTA_CHECK_SIGNATURE(frusta_hand_def_set_size,
+                       frusta_result (*)(frusta_hand_def*, double, double))
+FRUSTA_CHECK_SIGNATURE(frusta_create_hand,
+                       frusta_result (*)(const frusta_hand_def*, frusta_hand_id*))
+FRUSTA_CHECK_SIGNATURE(frusta_destroy_hand, frusta_result (*)(frusta_hand_id))
+FRUSTA_CHECK_SIGNATURE(frusta_hand_is_valid, int32_t (*)(frusta_hand_id))
+FRUSTA_CHECK_SIGNATURE(frusta_hand_set_palm_pose,
+                       frusta_result (*)(frusta_hand_id, const frusta_pose*))
+FRUSTA_CHECK_SIGNATURE(frusta_hand_set_joint_angles,
+                       frusta_result (*)(frusta_hand_id, const double*, int32_t))
+FRUSTA_CHECK_SIGNATURE(frusta_hand_get_joint_angles,
+                       frusta_result (*)(frusta_hand_id, double*, int32_t))
+FRUSTA_CHECK_SIGNATURE(frusta_hand_get_segments,
+                       frusta_result (*)(frusta_hand_id, frusta_segment*, int32_t, int32_t*))
+FRUSTA_CHECK_SIGNATURE(frusta_hand_get_palm_spheres,
+                       frusta_result (*)(frusta_hand_id, frusta_sphere*, int32_t, int32_t*))
+FRUSTA_CHECK_SIGNATURE(frusta_hand_point_jacobian,
+                       frusta_result (*)(frusta_hand_id, int32_t, int32_t, const double*, double*,
+                                         double*, int32_t))
+FRUSTA_CHECK_SIGNATURE(frusta_query_contact,
+                       frusta_result (*)(const frusta_segment*, const frusta_sphere*,
+                                         frusta_contact_query*))
+FRUSTA_CHECK_SIGNATURE(frusta_constraint_eval,
+                       frusta_result (*)(const frusta_segment*, const frusta_sphere*, int32_t,
+                                         frusta_constraint*))
+FRUSTA_CHECK_SIGNATURE(frusta_default_bake_def, frusta_bake_def (*)())
+FRUSTA_CHECK_SIGNATURE(frusta_bake_sphere_tree,
+                       frusta_result (*)(const float*, int32_t, const int32_t*, int32_t,
+                                         const frusta_bake_def*, frusta_tree_id*))
+FRUSTA_CHECK_SIGNATURE(frusta_load_sphere_tree, frusta_result (*)(const char*, frusta_tree_id*))
+FRUSTA_CHECK_SIGNATURE(frusta_save_sphere_tree, frusta_result (*)(frusta_tree_id, const char*))
+FRUSTA_CHECK_SIGNATURE(frusta_destroy_sphere_tree, frusta_result (*)(frusta_tree_id))
+FRUSTA_CHECK_SIGNATURE(frusta_sphere_tree_is_valid, int32_t (*)(frusta_tree_id))
+FRUSTA_CHECK_SIGNATURE(frusta_sphere_tree_get_info,
+                       frusta_result (*)(frusta_tree_id, frusta_sphere_tree_info*))
+FRUSTA_CHECK_SIGNATURE(frusta_sphere_tree_get_leaves,
+                       frusta_result (*)(frusta_tree_id, frusta_sphere*, int32_t, int32_t*))
+FRUSTA_CHECK_SIGNATURE(frusta_sphere_tree_query_segment,
+                       frusta_result (*)(frusta_tree_id, const frusta_pose*, const frusta_segment*,
+                                         double, int32_t, frusta_tree_hit*, int32_t, int32_t*))
+#undef FRUSTA_CHECK_SIGNATURE
+
+namespace {
+
+struct Member {
+  const char* type;
+  const char* name;
+  size_t offset, size;
+  size_t declared_offset, declared_size;  // what the compiler says
+};
+struct Struct {
+  const char* type;
+  size_t size, declared_size;
+};
+
+#define FRUSTA_MEMBER_ROW(type, member, offset, size) \
+  Member{#type, #member, offset, size, offsetof(type, member), sizeof(type::member)},
+constexpr Member kMembers[] = {FRUSTA_ABI_MEMBERS(FRUSTA_MEMBER_ROW)};
+#undef FRUSTA_MEMBER_ROW
+#define FRUSTA_STRUCT_ROW(type, size, align) Struct{#type, size, sizeof(type)},
+constexpr Struct kStructs[] = {FRUSTA_ABI_STRUCTS(FRUSTA_STRUCT_ROW)};
+#undef FRUSTA_STRUCT_ROW
+
+TEST(abiLayout, VersionMacroMatchesTheLibrary) {
+  EXPECT_EQ(FRUSTA_VERSION, frusta_version());
+  EXPECT_EQ(FRUSTA_ABI_VERSION, frusta_abi_version());
+  EXPECT_EQ(FRUSTA_CHECK_ABI(), FRUSTA_OK);
+}
+
+// Every struct is its members back to back: no implicit padding for a mirror to
+// guess, and the table lists every member (a forgotten one shows up as a gap). The
+// table is printed for whoever writes the binding's mirror.
+TEST(abiLayout, StructsHaveNoImplicitPaddingAndTheTableIsComplete) {
+  for (const Struct& s : kStructs) {
+    std::printf("%-22s sizeof %3zu\n", s.type, s.declared_size);
+    size_t end = 0;
+    int members = 0;
+    for (const Member& m : kMembers) {
+      if (std::string(m.type) != s.type) continue;
+      std::printf("  %-16s offset %3zu size %3zu\n", m.name, m.declared_offset, m.declared_size);
+      EXPECT_EQ(m.offset, end) << s.type << "." << m.name << " does not follow the previous member";
+      end = m.offset + m.size;
+      ++members;
+    }
+    EXPECT_GT(members, 0) << s.type;
+    EXPECT_EQ(end, s.size) << s.type << " has trailing padding or an unlisted member";
+  }
+}
+
+// struct_size fields hold the library's sizeof, as every binding will send it.
+TEST(abiLayout, DefaultDefCarriesItsSize) { EXPECT_EQ(frusta_default_hand_def().struct_size, 896); }
+
+}  // namespace
