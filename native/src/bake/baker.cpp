@@ -10,6 +10,7 @@
 
 #include "core/error.h"
 #include "spheretree/tree_builder.h"
+#include "spheretree/tree_limits.h"
 
 namespace frusta {
 
@@ -45,16 +46,23 @@ BakeError measure_bake_error(const MeshQueries& queries, const TriangleMesh& mes
 
 frusta_result bake_sphere_tree(const TriangleMesh& mesh, const BakeParams& params,
                                const ProgressFn& progress, TreeFile* out, bool* target_met) {
-  if (!(params.target_error > 0.0) || !std::isfinite(params.target_error))
-    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "target error is %g m, must be > 0", params.target_error);
+  // every parameter is checked before the (long) cover, and each message names its field
+  if (!std::isfinite(params.target_error))
+    return fail(FRUSTA_ERROR_NOT_FINITE, "target_error is %g, must be a finite length in metres",
+                params.target_error);
+  if (!(params.target_error > 0.0))
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "target_error is %g m, must be > 0", params.target_error);
   if (params.max_leaves < 1 || params.max_leaves > kMaxLeaves)
-    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "max leaves is %lld, must be 1..%lld",
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "max_leaves is %lld, must be 1..%lld",
                 static_cast<long long>(params.max_leaves), static_cast<long long>(kMaxLeaves));
+  if (params.branching < 2 || params.branching > kMaxBranching)
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "branching is %d, must be 2..%d", params.branching,
+                kMaxBranching);
   if (params.max_depth < 1 || params.max_depth > kMaxTreeDepth)
-    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "max depth is %d, must be 1..%d", params.max_depth,
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "max_depth is %d, must be 1..%d", params.max_depth,
                 kMaxTreeDepth);
   if (params.error_samples < 1000 || params.error_samples > 100000000)
-    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "error samples is %lld, must be 1e3..1e8",
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "error_samples is %lld, must be 1e3..1e8",
                 static_cast<long long>(params.error_samples));
   if (frusta_result r = check_mesh(mesh, "mesh")) return r;
 
