@@ -46,25 +46,30 @@ Constraint side_constraint(const SegmentFrame& f, const Sphere& sphere, Constrai
   return g;
 }
 
+SphereConstraint sphere_constraint(const Sphere& hand, const Sphere& object, ConstraintForm form,
+                                   const vec3& fallback) {
+  const vec3 d = hand.center - object.center;
+  const double reach = hand.radius + object.radius;
+  if (form == ConstraintForm::kDistance) {
+    const double n = glm::length(d);
+    // concentric: any direction is a subgradient; the caller's keeps it deterministic
+    return {n - reach, n > 0.0 ? d / n : fallback};
+  }
+  return {glm::dot(d, d) - reach * reach, 2.0 * d};
+}
+
 Constraint ball_constraint(const SegmentFrame& frame, Feature ball, const Sphere& sphere,
                            ConstraintForm form) {
   const bool distal = ball == Feature::kDistalBall;
-  const vec3& center = distal ? frame.distal : frame.proximal;
-  const double reach = sphere.radius + (distal ? frame.r_distal : frame.r_proximal);
-  const vec3 d = sphere.center - center;
-
+  const Sphere hand_ball{distal ? frame.distal : frame.proximal,
+                         distal ? frame.r_distal : frame.r_proximal};
+  const SphereConstraint c =
+      sphere_constraint(hand_ball, sphere, form, distal ? frame.axis : -frame.axis);
   Constraint g;
   g.feature = ball;
-  if (form == ConstraintForm::kDistance) {
-    const double n = glm::length(d);
-    g.value = n - reach;
-    // concentric: any direction is a subgradient; the axis keeps it deterministic
-    g.grad_center = n > 0.0 ? d / n : (distal ? -frame.axis : frame.axis);
-  } else {
-    g.value = glm::dot(d, d) - reach * reach;
-    g.grad_center = 2.0 * d;
-  }
-  (distal ? g.grad_distal : g.grad_proximal) = -g.grad_center;
+  g.value = c.value;
+  g.grad_center = -c.grad_hand;
+  (distal ? g.grad_distal : g.grad_proximal) = c.grad_hand;
   return g;
 }
 

@@ -29,6 +29,16 @@ Feature endpoint_rule(const SegmentFrame& frame, const Sphere& sphere);
 
 // The lateral side's constraint (undefined for a degenerate segment).
 Constraint side_constraint(const SegmentFrame& frame, const Sphere& sphere, ConstraintForm form);
+// Two spheres, a hand sphere (a palm sphere, a joint ball) against an object sphere,
+// with the gradient with respect to the hand sphere's centre; `fallback` is that
+// gradient's direction when the centres coincide.
+struct SphereConstraint {
+  double value = 0.0;
+  vec3 grad_hand{0.0};
+};
+SphereConstraint sphere_constraint(const Sphere& hand, const Sphere& object, ConstraintForm form,
+                                   const vec3& fallback);
+
 // The constraint of the ball at E (kDistalBall) or at D (kProximalBall).
 Constraint ball_constraint(const SegmentFrame& frame, Feature ball, const Sphere& sphere,
                            ConstraintForm form);

@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: MIT
+// Contact prediction (seed FIG. 7): every object sphere within Delta_r of the graphic
+// hand, found through bounds (hand, finger) and then the trees with culling.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "geometry/types.h"
+#include "hand/kinematics.h"
+#include "spheretree/sphere_tree.h"
+
+namespace frusta {
+
+// An object in a scene: its tree (owned elsewhere) and where it is.
+struct SolverObject {
+  const SphereTree* tree = nullptr;
+  RigidPose pose;
+};
+
+// The palm body: its spheres. Finger segment f * 3 + s: bodies 0..14.
+constexpr int kPalmBody = FRUSTA_HAND_SEGMENT_COUNT;
+constexpr int kBodyCount = FRUSTA_HAND_SEGMENT_COUNT + 1;
+
+struct Candidate {
+  int32_t object = 0;
+  int32_t leaf = 0;
+  int32_t part = 0;  // the palm sphere's index on the palm body, else 0
+  Sphere world;      // the leaf in world coordinates
+};
+
+// Candidates grouped by body: body b owns [begin[b], begin[b + 1]).
+struct CandidateSet {
+  std::vector<Candidate> candidates;
+  int32_t begin[kBodyCount + 1] = {};
+  int32_t tree_nodes_visited = 0;
+  // scratch kept between calls
+  std::vector<TreeHit> hits;
+  std::vector<int32_t> near_objects;
+
+  int32_t count(int body) const { return begin[body + 1] - begin[body]; }
+  const Candidate* of(int body) const { return candidates.data() + begin[body]; }
+  int32_t finger_count(int finger) const {
+    return begin[(finger + 1) * FRUSTA_SEGMENTS_PER_FINGER] - begin[finger * FRUSTA_SEGMENTS_PER_FINGER];
+  }
+};
+
+// Bounds of a hand model that do not depend on its pose.
+struct HandReach {
+  double hand = 0.0;  // every hand point lies within this of the palm position
+  std::array<double, FRUSTA_FINGER_COUNT> finger{};  // ... of the finger's first joint
+  // how far a finger point can move per radian of each joint (lever arm bound)
+  std::array<std::array<double, FRUSTA_JOINTS_PER_FINGER>, FRUSTA_FINGER_COUNT> lever{};
+};
+
+HandReach hand_reach(const HandModel& model);
+
+// World bound of an object's whole tree.
+Sphere object_bound(const SolverObject& object);
+
+// Fill `out` with every leaf within `margin` of the hand at `pose`. The vector keeps
+// its capacity between calls, so a steady scene allocates nothing.
+void detect_candidates(const HandModel& model, const HandReach& reach, const HandPose& pose,
+                       const SolverObject* objects, int32_t object_count, double margin,
+                       CandidateSet& out);
+
+// The smallest exact gap between one body of the hand at `pose` and its candidates
+// (infinite with none): what every accepted step is checked against.
+double body_clearance(const HandModel& model, const HandPose& pose, const CandidateSet& candidates,
+                      int body);
+
+// The smallest gap between the hand's bound and any object's bound (infinite with no
+// objects): the hand can move that far without meeting anything.
+double bound_clearance(const HandReach& reach, const HandPose& pose, const SolverObject* objects,
+                       int32_t object_count);
+
+}  // namespace frusta

@@ -1,0 +1,129 @@
+// SPDX-License-Identifier: MIT
+#include "solver/finger_stage.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "geometry/constraint.h"
+#include "solver/stage.h"
+
+namespace frusta {
+
+double finger_motion(const HandReach& reach, int finger, const FingerAngles& from,
+                     const FingerAngles& to) {
+  double motion = 0.0;
+  for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j)
+    motion += std::fabs(to[j] - from[j]) * reach.lever[finger][j];
+  return motion;
+}
+
+FingerStage::FingerStage(const HandModel& model, const HandReach& reach, const SolverParams& params,
+                         const CandidateSet& candidates, int finger, const FingerAngles& target,
+                         double motion_cap, HandState& state, HandPose& pose)
+    : model_(model),
+      reach_(reach),
+      params_(params),
+      candidates_(candidates),
+      finger_(finger),
+      target_(target),
+      start_(angles(state)),
+      motion_cap_(motion_cap),
+      state_(state),
+      pose_(pose),
+      trial_state_(state),
+      trial_pose_(pose) {
+  // never worse than the start, which a rounding or a curvature may have left a hair deep
+  floor_ = std::min(-params.penetration_tolerance, clearance(pose));
+}
+
+FingerAngles FingerStage::angles(const HandState& state) const {
+  FingerAngles a;
+  std::copy_n(state.angles.begin() + finger_ * FRUSTA_JOINTS_PER_FINGER, a.size(), a.begin());
+  return a;
+}
+
+int32_t FingerStage::row_capacity() const {
+  return candidates_.finger_count(finger_) + 2 * FRUSTA_JOINTS_PER_FINGER;
+}
+
+int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights) const {
+  const FingerAngles now = angles(state_);
+  const FingerModel& finger = model_.fingers[finger_];
+  const FingerPose& p = pose_.fingers[finger_];
+  int32_t count = 0;
+  for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j) {
+    target[j] = target_[j] - now[j];
+    weights[j] = params_.joint_stiffness[j];
+    rows[count].a = {};
+    rows[count].a[j] = 1.0;
+    rows[count++].b = finger.joint_min[j] - now[j];
+    rows[count].a = {};
+    rows[count].a[j] = -1.0;
+    rows[count++].b = now[j] - finger.joint_max[j];
+  }
+  for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s) {
+    const int body = finger_ * FRUSTA_SEGMENTS_PER_FINGER + s;
+    if (candidates_.count(body) == 0) continue;
+    const SegmentFrame frame = make_segment_frame(finger_segment(model_, pose_, finger_, s));
+    // dD/dq and dE/dq: D = joint s, E = joint s + 1; flexion j turns about joint j - 1
+    vec3 column_d[FRUSTA_JOINTS_PER_FINGER], column_e[FRUSTA_JOINTS_PER_FINGER];
+    column_d[0] = glm::cross(p.abduction_axis, p.joint[s] - p.joint[0]);
+    column_e[0] = glm::cross(p.abduction_axis, p.joint[s + 1] - p.joint[0]);
+    for (int j = 1; j < FRUSTA_JOINTS_PER_FINGER; ++j) {
+      const bool moves = j - 1 <= s;
+      column_d[j] = moves ? glm::cross(p.flexion_axis, p.joint[s] - p.joint[j - 1]) : vec3(0.0);
+      column_e[j] = moves ? glm::cross(p.flexion_axis, p.joint[s + 1] - p.joint[j - 1]) : vec3(0.0);
+    }
+    const Candidate* c = candidates_.of(body);
+    for (int32_t i = 0; i < candidates_.count(body); ++i) {
+      const Constraint g = contact_constraint(frame, c[i].world, params_.form);
+      QpRow& row = rows[count++];
+      for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j)
+        row.a[j] = glm::dot(g.grad_proximal, column_d[j]) + glm::dot(g.grad_distal, column_e[j]);
+      for (int j = FRUSTA_JOINTS_PER_FINGER; j < kMaxQpVariables; ++j) row.a[j] = 0.0;
+      row.b = row_bound(params_, g.value, c[i].world.radius + std::max(frame.r_proximal, frame.r_distal));
+    }
+  }
+  return count;
+}
+
+double FingerStage::clearance(const HandPose& pose) const {
+  double gap = INFINITY;
+  for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s)
+    gap = std::min(gap, body_clearance(model_, pose, candidates_, finger_ * FRUSTA_SEGMENTS_PER_FINGER + s));
+  return gap;
+}
+
+double FingerStage::try_step(const double* d, double s) {
+  const FingerModel& finger = model_.fingers[finger_];
+  FingerAngles next = angles(state_);
+  for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j)
+    next[j] = std::clamp(next[j] + s * d[j], finger.joint_min[j], finger.joint_max[j]);
+  if (finger_motion(reach_, finger_, start_, next) > motion_cap_) {
+    capped_ = true;
+    return -INFINITY;
+  }
+  trial_state_ = state_;
+  std::copy(next.begin(), next.end(), trial_state_.angles.begin() + finger_ * FRUSTA_JOINTS_PER_FINGER);
+  forward_kinematics(model_, trial_state_, trial_pose_);
+  return clearance(trial_pose_);
+}
+
+void FingerStage::commit() {
+  state_ = trial_state_;
+  pose_ = trial_pose_;
+}
+
+void FingerStage::save() {
+  saved_state_ = state_;
+  saved_pose_ = pose_;
+}
+
+void FingerStage::restore() {
+  state_ = saved_state_;
+  pose_ = saved_pose_;
+}
+
+}  // namespace frusta

@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: MIT
+// One finger's solve on a fixed palm (seed eq. 6 over the finger's joints, eq. 9 and the
+// endpoint rule per candidate, joint limits as rows). Abduction is solved too: a
+// sideways haptic abduction can push a finger into an object as well as a flexion can.
+#pragma once
+
+#include <array>
+
+#include "solver/detection.h"
+#include "solver/qp.h"
+#include "solver/solver_params.h"
+
+namespace frusta {
+
+using FingerAngles = std::array<double, FRUSTA_JOINTS_PER_FINGER>;
+
+// Motion bound of a finger's change of angles: no point of it moves further.
+double finger_motion(const HandReach& reach, int finger, const FingerAngles& from,
+                     const FingerAngles& to);
+
+class FingerStage {
+ public:
+  // state/pose: the graphic hand, updated in place; target: this stage's goal angles;
+  // motion_cap: how far (m) any point may move from where the stage starts.
+  FingerStage(const HandModel& model, const HandReach& reach, const SolverParams& params,
+              const CandidateSet& candidates, int finger, const FingerAngles& target,
+              double motion_cap, HandState& state, HandPose& pose);
+
+  int dofs() const { return FRUSTA_JOINTS_PER_FINGER; }
+  int32_t row_capacity() const;
+  int32_t linearise(QpRow* rows, double* target, double* weights) const;
+  double floor() const { return floor_; }
+  bool capped() const { return capped_; }
+  double try_step(const double* d, double s);
+  void commit();
+  void save();
+  void restore();
+
+  // The smallest exact gap between this finger and its candidates.
+  double clearance(const HandPose& pose) const;
+
+ private:
+  FingerAngles angles(const HandState& state) const;
+
+  const HandModel& model_;
+  const HandReach& reach_;
+  const SolverParams& params_;
+  const CandidateSet& candidates_;
+  int finger_;
+  FingerAngles target_;
+  FingerAngles start_;
+  double motion_cap_;
+  double floor_;
+  bool capped_ = false;  // a trial may not sink below this gap
+  HandState& state_;
+  HandPose& pose_;
+  HandState trial_state_, saved_state_;
+  HandPose trial_pose_, saved_pose_;
+};
+
+}  // namespace frusta

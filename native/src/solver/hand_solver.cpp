@@ -1,0 +1,256 @@
+// SPDX-License-Identifier: MIT
+#include "solver/hand_solver.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "core/error.h"
+#include "core/validate.h"
+#include "geometry/exact_distance.h"
+#include "solver/depenetration.h"
+#include "solver/finger_stage.h"
+#include "solver/palm_stage.h"
+#include "solver/stage.h"
+
+namespace frusta {
+
+namespace {
+
+// A joint angle beyond a few turns is not a glove's reading but garbage.
+constexpr double kMaxAbsoluteAngle = 4.0 * 3.14159265358979323846;
+// Below this (metres) a sub-step did not move the hand.
+constexpr double kStandstill = 1e-9;
+
+PalmPlacement placement(const HandState& state) { return {state.palm_position, state.palm_rotation}; }
+
+FingerAngles finger_angles(const HandState& state, int finger) {
+  FingerAngles a;
+  std::copy_n(state.angles.begin() + finger * FRUSTA_JOINTS_PER_FINGER, a.size(), a.begin());
+  return a;
+}
+
+void set_finger_angles(HandState& state, int finger, const FingerAngles& a) {
+  std::copy(a.begin(), a.end(), state.angles.begin() + finger * FRUSTA_JOINTS_PER_FINGER);
+}
+
+frusta_result check_haptic(const HandState& h) {
+  const vec3& p = h.palm_position;
+  const double q[4] = {h.palm_rotation.w, h.palm_rotation.x, h.palm_rotation.y, h.palm_rotation.z};
+  for (int k = 0; k < 3; ++k)
+    if (!std::isfinite(p[k]))
+      return fail(FRUSTA_ERROR_NOT_FINITE, "haptic palm position[%d] is %g", k, p[k]);
+  for (int k = 0; k < 4; ++k)
+    if (!std::isfinite(q[k]))
+      return fail(FRUSTA_ERROR_NOT_FINITE, "haptic palm rotation[%d] is %g", k, q[k]);
+  for (size_t j = 0; j < h.angles.size(); ++j)
+    if (!std::isfinite(h.angles[j]))
+      return fail(FRUSTA_ERROR_NOT_FINITE, "haptic joint angle %zu is %g", j, h.angles[j]);
+  for (int k = 0; k < 3; ++k)
+    if (std::fabs(p[k]) > kMaxCoordinate)
+      return fail(FRUSTA_ERROR_OUT_OF_RANGE, "haptic palm position[%d] is %g m, beyond +-%g m", k,
+                  p[k], kMaxCoordinate);
+  const double norm = glm::length(h.palm_rotation);
+  if (norm < 0.5 || norm > 2.0)
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE,
+                "haptic palm rotation has length %g; a rotation quaternion has length 1", norm);
+  for (size_t j = 0; j < h.angles.size(); ++j)
+    if (std::fabs(h.angles[j]) > kMaxAbsoluteAngle)
+      return fail(FRUSTA_ERROR_OUT_OF_RANGE, "haptic joint angle %zu is %g rad, beyond +-4 pi", j,
+                  h.angles[j]);
+  return FRUSTA_OK;
+}
+
+}  // namespace
+
+HandSolver::HandSolver(const HandModel& model, const SolverParams& params)
+    : model_(model), params_(params), reach_(hand_reach(model)) {
+  forward_kinematics(model_, graphic_, pose_);
+}
+
+frusta_result HandSolver::check_params(const SolverParams& p, const HandModel& model) {
+  double smallest = INFINITY;
+  for (const FingerModel& f : model.fingers)
+    for (double r : f.radius) smallest = std::min(smallest, r);
+  if (!std::isfinite(p.prediction_margin) || !(p.prediction_margin > 0.0) ||
+      !(p.prediction_margin < smallest))
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE,
+                "prediction_margin is %g m, must be > 0 and below the smallest finger radius "
+                "(%g m) so a sub-step cannot pass through a sphere",
+                p.prediction_margin, smallest);
+  if (p.form != ConstraintForm::kSquared && p.form != ConstraintForm::kDistance)
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "form is %d, must be squared (0) or distance (1)",
+                static_cast<int>(p.form));
+  for (size_t j = 0; j < p.joint_stiffness.size(); ++j)
+    if (!std::isfinite(p.joint_stiffness[j]) || !(p.joint_stiffness[j] > 0.0))
+      return fail(FRUSTA_ERROR_OUT_OF_RANGE, "joint_stiffness[%zu] is %g, must be > 0", j,
+                  p.joint_stiffness[j]);
+  if (!std::isfinite(p.palm_translation_stiffness) || !(p.palm_translation_stiffness > 0.0))
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "palm_translation_stiffness is %g, must be > 0",
+                p.palm_translation_stiffness);
+  if (!std::isfinite(p.palm_rotation_stiffness) || !(p.palm_rotation_stiffness > 0.0))
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "palm_rotation_stiffness is %g, must be > 0",
+                p.palm_rotation_stiffness);
+  if (!std::isfinite(p.penetration_tolerance) || !(p.penetration_tolerance >= 0.0) ||
+      !(p.penetration_tolerance < p.prediction_margin))
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE,
+                "penetration_tolerance is %g m, must be >= 0 and below prediction_margin",
+                p.penetration_tolerance);
+  if (!std::isfinite(p.contact_distance) || !(p.contact_distance >= 0.0))
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "contact_distance is %g m, must be >= 0",
+                p.contact_distance);
+  if (!std::isfinite(p.convergence) || !(p.convergence > 0.0))
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "convergence is %g, must be > 0", p.convergence);
+  if (p.max_iterations < 1 || p.qp_iteration_cap < 1 || p.max_substeps < 1)
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE,
+                "max_iterations (%d), qp_iteration_cap (%d) and max_substeps (%d) must be >= 1",
+                p.max_iterations, p.qp_iteration_cap, p.max_substeps);
+  return FRUSTA_OK;
+}
+
+frusta_result HandSolver::step(const HandState& haptic, const SolverObject* objects,
+                               int32_t object_count, StepStats* stats_out) {
+  if (frusta_result r = check_haptic(haptic)) return r;
+  StepStats stats;
+  HandState target = haptic;
+  target.palm_rotation = glm::normalize(target.palm_rotation);
+  clamp_to_limits(model_, target);
+
+  if (!started_) {
+    HandState start = target;
+    if (!depenetrate(model_, reach_, objects, object_count, params_.penetration_tolerance,
+                     candidates_, start))
+      return fail(FRUSTA_ERROR_OUT_OF_RANGE,
+                  "the haptic hand starts inside objects and no placement near it is free");
+    stats.depenetrated = start.palm_position != target.palm_position;
+    graphic_ = start;
+    forward_kinematics(model_, graphic_, pose_);
+    started_ = true;
+  }
+  for (int32_t sub = 0; sub < params_.max_substeps; ++sub) {
+    bool moved = false;
+    const bool reached = substep(target, objects, object_count, stats, moved);
+    ++stats.substeps;
+    if (reached || !moved) break;
+    if (sub + 1 == params_.max_substeps) stats.lagging = true;
+  }
+  report_contacts();
+  if (stats_out) *stats_out = stats;
+  return FRUSTA_OK;
+}
+
+bool HandSolver::substep(const HandState& target, const SolverObject* objects,
+                         int32_t object_count, StepStats& stats, bool& moved) {
+  const HandState start = graphic_;
+  const PalmPlacement palm_from = placement(graphic_), palm_to = placement(target);
+  double whole_move = palm_motion(reach_, palm_from, palm_to);
+  double finger_move = 0.0;
+  for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f)
+    finger_move = std::max(finger_move, finger_motion(reach_, f, finger_angles(graphic_, f),
+                                                      finger_angles(target, f)));
+  whole_move += finger_move;
+
+  // nothing within reach of the whole move: go there at once, detecting nothing
+  if (bound_clearance(reach_, pose_, objects, object_count) > whole_move + params_.prediction_margin) {
+    graphic_ = target;
+    forward_kinematics(model_, graphic_, pose_);
+    candidates_.candidates.clear();
+    std::fill(std::begin(candidates_.begin), std::end(candidates_.begin), 0);
+    moved = whole_move > 0.0;
+    return true;
+  }
+
+  detect_candidates(model_, reach_, pose_, objects, object_count, params_.prediction_margin,
+                    candidates_);
+  stats.candidates = std::max(stats.candidates, static_cast<int32_t>(candidates_.candidates.size()));
+  stats.tree_nodes_visited += candidates_.tree_nodes_visited;
+  const double cap = 0.5 * params_.prediction_margin;
+  bool reached = true;
+  auto add = [&](const StageStats& s) {
+    stats.iterations += s.iterations;
+    stats.qp_iterations += s.qp_iterations;
+    stats.infeasible |= s.infeasible;
+    reached &= !s.capped;
+  };
+
+  // A part with candidates solves towards its full target and its stage stops at the
+  // motion bound; a part with none moves straight, cut at the bound.
+  const double palm_move = palm_motion(reach_, palm_from, palm_to);
+  if (palm_move > 0.0) {
+    if (candidates_.candidates.empty()) {
+      const double s = std::min(1.0, cap / palm_move);
+      graphic_.palm_position = s < 1.0 ? palm_from.position + s * (palm_to.position - palm_from.position)
+                                       : palm_to.position;
+      graphic_.palm_rotation = s < 1.0 ? glm::slerp(palm_from.rotation, palm_to.rotation, s)
+                                       : palm_to.rotation;
+      reached &= s == 1.0;
+      forward_kinematics(model_, graphic_, pose_);
+    } else {
+      PalmStage stage(model_, reach_, params_, candidates_, palm_to, cap, graphic_, pose_);
+      add(solve_stage(stage, params_, rows_));
+      ++stats.palm_solves;
+    }
+  }
+
+  for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
+    const FingerAngles from = finger_angles(graphic_, f), to = finger_angles(target, f);
+    const double move = finger_motion(reach_, f, from, to);
+    if (!(move > 0.0)) continue;
+    if (candidates_.finger_count(f) == 0) {  // nothing near: the haptic angles as they are
+      FingerAngles goal = to;
+      if (move > cap) {
+        for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j)
+          goal[j] = from[j] + (cap / move) * (to[j] - from[j]);
+        reached = false;
+      }
+      set_finger_angles(graphic_, f, goal);
+      continue;
+    }
+    forward_kinematics(model_, graphic_, pose_);
+    FingerStage stage(model_, reach_, params_, candidates_, f, to, cap, graphic_, pose_);
+    add(solve_stage(stage, params_, rows_));
+    ++stats.finger_solves;
+  }
+  forward_kinematics(model_, graphic_, pose_);
+
+  double motion = palm_motion(reach_, placement(start), placement(graphic_));
+  for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f)
+    motion += finger_motion(reach_, f, finger_angles(start, f), finger_angles(graphic_, f));
+  moved = motion > kStandstill;
+  return reached;
+}
+
+void HandSolver::report_contacts() {
+  contacts_.clear();
+  for (int body = 0; body < kBodyCount; ++body) {
+    const Candidate* c = candidates_.of(body);
+    for (int32_t i = 0; i < candidates_.count(body); ++i) {
+      SolverContact contact;
+      contact.object = c[i].object;
+      contact.leaf = c[i].leaf;
+      contact.body = body;
+      contact.part = c[i].part;
+      if (body == kPalmBody) {
+        const Sphere hand = palm_sphere(model_, pose_, c[i].part);
+        const vec3 d = hand.center - c[i].world.center;
+        const double length = glm::length(d);
+        contact.normal = length > 0.0 ? d / length : vec3(0.0, 0.0, 1.0);
+        contact.distance = length - hand.radius - c[i].world.radius;
+        contact.hand_point = hand.center - hand.radius * contact.normal;
+        contact.object_point = c[i].world.center + c[i].world.radius * contact.normal;
+      } else {
+        const SegmentFrame frame = make_segment_frame(finger_segment(
+            model_, pose_, body / FRUSTA_SEGMENTS_PER_FINGER, body % FRUSTA_SEGMENTS_PER_FINGER));
+        const Proximity p = exact_proximity(frame, c[i].world);
+        contact.distance = p.distance;
+        contact.hand_point = p.hand_point;
+        contact.object_point = p.object_point;
+        contact.normal = p.normal;
+      }
+      if (contact.distance <= params_.contact_distance) contacts_.push_back(contact);
+    }
+  }
+}
+
+}  // namespace frusta

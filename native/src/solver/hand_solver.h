@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: MIT
+// The graphic hand (seed [0131]-[0156]): each step takes the haptic hand, which may be
+// deep inside objects, and moves the graphic hand as close to it as the objects allow,
+// never into them. Per sub-step: detect from the graphic hand with radii inflated by
+// Delta_r, solve the palm (if it moves) and then each finger with candidates near it;
+// a finger with none takes the haptic angles as they are.
+//
+// Fast motion: within a sub-step no hand point moves more than Delta_r (half for the
+// palm, half for a finger), and every object sphere within Delta_r is a constraint, so
+// nothing the hand can reach in a sub-step is missed; passing through a sphere would
+// need a move of twice the hand's smallest radius, more than Delta_r. A move that
+// needs more sub-steps than allowed finishes on later steps.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "solver/detection.h"
+#include "solver/solver_params.h"
+#include "solver/qp.h"
+
+namespace frusta {
+
+struct SolverContact {
+  int32_t object = 0;
+  int32_t leaf = 0;
+  int32_t body = 0;  // finger segment f * 3 + s, or kPalmBody
+  int32_t part = 0;  // the palm sphere on the palm body
+  double distance = 0.0;  // exact gap, >= -penetration_tolerance
+  vec3 hand_point{0.0};
+  vec3 object_point{0.0};
+  vec3 normal{0.0};  // unit, from the object sphere towards the hand
+};
+
+struct StepStats {
+  int32_t substeps = 0;
+  int32_t candidates = 0;        // the most in one sub-step
+  int32_t tree_nodes_visited = 0;
+  int32_t iterations = 0;        // re-linearisations over every stage
+  int32_t qp_iterations = 0;
+  int32_t finger_solves = 0;     // finger stages run (fingers with candidates), summed
+  int32_t palm_solves = 0;
+  bool depenetrated = false;     // this step placed a hand that started inside
+  bool lagging = false;          // the sub-step cap stopped the hand short of its target
+  bool infeasible = false;       // some QP could not meet every row; the hand stayed safe
+};
+
+class HandSolver {
+ public:
+  HandSolver(const HandModel& model, const SolverParams& params);
+
+  // Check a parameter set against a hand; the thread's error names the field.
+  static frusta_result check_params(const SolverParams& params, const HandModel& model);
+
+  // One step towards `haptic`. Bad input (non-finite, absurd) returns an error and
+  // leaves the graphic hand as it was. Objects stay put during a step.
+  frusta_result step(const HandState& haptic, const SolverObject* objects, int32_t object_count,
+                     StepStats* stats);
+
+  // Forget the graphic hand: the next step starts it afresh from the haptic hand.
+  void reset() { started_ = false; }
+
+  bool started() const { return started_; }
+  const HandState& graphic() const { return graphic_; }
+  const HandPose& graphic_pose() const { return pose_; }
+  const std::vector<SolverContact>& contacts() const { return contacts_; }
+  const HandModel& model() const { return model_; }
+  const SolverParams& params() const { return params_; }
+
+ private:
+  // One sub-step; true when every part reached its own target (or stopped against
+  // objects) without hitting the motion cap.
+  bool substep(const HandState& target, const SolverObject* objects, int32_t object_count,
+               StepStats& stats, bool& moved);
+  void report_contacts();
+
+  HandModel model_;
+  SolverParams params_;
+  HandReach reach_;
+  bool started_ = false;
+  HandState graphic_;
+  HandPose pose_;
+  CandidateSet candidates_;
+  std::vector<QpRow> rows_;
+  std::vector<SolverContact> contacts_;
+};
+
+}  // namespace frusta

@@ -1,0 +1,142 @@
+// SPDX-License-Identifier: MIT
+#include "solver/palm_stage.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "geometry/constraint.h"
+#include "solver/stage.h"
+
+namespace frusta {
+
+vec3 rotation_between(const glm::dquat& from, const glm::dquat& to) {
+  glm::dquat delta = to * glm::conjugate(from);
+  if (delta.w < 0.0) delta = -delta;  // the short way round
+  const vec3 v(delta.x, delta.y, delta.z);
+  const double sine = glm::length(v);
+  if (sine < 1e-300) return vec3(0.0);
+  return (2.0 * std::atan2(sine, delta.w) / sine) * v;
+}
+
+double palm_motion(const HandReach& reach, const PalmPlacement& from, const PalmPlacement& to) {
+  return glm::length(to.position - from.position) +
+         glm::length(rotation_between(from.rotation, to.rotation)) * reach.hand;
+}
+
+namespace {
+
+PalmPlacement placement(const HandState& state) { return {state.palm_position, state.palm_rotation}; }
+
+glm::dquat rotated(const glm::dquat& q, const vec3& rotation_vector) {
+  const double angle = glm::length(rotation_vector);
+  if (angle < 1e-300) return q;
+  return glm::normalize(glm::angleAxis(angle, rotation_vector / angle) * q);
+}
+
+void set_row(QpRow& row, const vec3& grad_translation, const vec3& grad_rotation, double bound) {
+  for (int k = 0; k < 3; ++k) {
+    row.a[k] = grad_translation[k];
+    row.a[3 + k] = grad_rotation[k];
+  }
+  row.b = bound;
+}
+
+}  // namespace
+
+PalmStage::PalmStage(const HandModel& model, const HandReach& reach, const SolverParams& params,
+                     const CandidateSet& candidates, const PalmPlacement& target, double motion_cap,
+                     HandState& state, HandPose& pose)
+    : model_(model),
+      reach_(reach),
+      params_(params),
+      candidates_(candidates),
+      target_(target),
+      start_(placement(state)),
+      motion_cap_(motion_cap),
+      state_(state),
+      pose_(pose),
+      trial_state_(state),
+      trial_pose_(pose) {
+  floor_ = std::min(-params.penetration_tolerance, clearance(pose));
+}
+
+int32_t PalmStage::linearise(QpRow* rows, double* target, double* weights) const {
+  const vec3 to_target = target_.position - state_.palm_position;
+  const vec3 turn = rotation_between(state_.palm_rotation, target_.rotation);
+  for (int k = 0; k < 3; ++k) {
+    target[k] = to_target[k];
+    target[3 + k] = turn[k];
+    weights[k] = params_.palm_translation_stiffness;
+    weights[3 + k] = params_.palm_rotation_stiffness;
+  }
+  // a point P carried by the palm moves by dt + dw x (P - palm): g's gradient g_P
+  // becomes (g_P, (P - palm) x g_P)
+  const vec3& palm = pose_.palm_position;
+  int32_t count = 0;
+  for (int body = 0; body < FRUSTA_HAND_SEGMENT_COUNT; ++body) {
+    if (candidates_.count(body) == 0) continue;
+    const int f = body / FRUSTA_SEGMENTS_PER_FINGER, s = body % FRUSTA_SEGMENTS_PER_FINGER;
+    const SegmentFrame frame = make_segment_frame(finger_segment(model_, pose_, f, s));
+    const Candidate* c = candidates_.of(body);
+    for (int32_t i = 0; i < candidates_.count(body); ++i) {
+      const Constraint g = contact_constraint(frame, c[i].world, params_.form);
+      set_row(rows[count++], g.grad_proximal + g.grad_distal,
+              glm::cross(frame.proximal - palm, g.grad_proximal) +
+                  glm::cross(frame.distal - palm, g.grad_distal),
+              // a finger deeper than its rows ask is its own stage's to fix: here it
+              // only must not get deeper, or the palm would ratchet up a little a step
+              std::min(row_bound(params_, g.value,
+                                 c[i].world.radius + std::max(frame.r_proximal, frame.r_distal)),
+                       0.0));
+    }
+  }
+  const Candidate* c = candidates_.of(kPalmBody);
+  for (int32_t i = 0; i < candidates_.count(kPalmBody); ++i) {
+    const Sphere hand = palm_sphere(model_, pose_, c[i].part);
+    const vec3 outward = hand.center - palm;
+    const SphereConstraint g = sphere_constraint(
+        hand, c[i].world, params_.form,
+        glm::length(outward) > 0.0 ? glm::normalize(outward) : vec3(0.0, 0.0, 1.0));
+    set_row(rows[count++], g.grad_hand, glm::cross(hand.center - palm, g.grad_hand),
+            row_bound(params_, g.value, hand.radius + c[i].world.radius));
+  }
+  return count;
+}
+
+double PalmStage::clearance(const HandPose& pose) const {
+  double gap = INFINITY;
+  for (int body = 0; body < kBodyCount; ++body)
+    gap = std::min(gap, body_clearance(model_, pose, candidates_, body));
+  return gap;
+}
+
+double PalmStage::try_step(const double* d, double s) {
+  trial_state_ = state_;
+  trial_state_.palm_position = state_.palm_position + s * vec3(d[0], d[1], d[2]);
+  trial_state_.palm_rotation = rotated(state_.palm_rotation, s * vec3(d[3], d[4], d[5]));
+  if (palm_motion(reach_, start_, placement(trial_state_)) > motion_cap_) {
+    capped_ = true;
+    return -INFINITY;
+  }
+  forward_kinematics(model_, trial_state_, trial_pose_);
+  return clearance(trial_pose_);
+}
+
+void PalmStage::commit() {
+  state_ = trial_state_;
+  pose_ = trial_pose_;
+}
+
+void PalmStage::save() {
+  saved_state_ = state_;
+  saved_pose_ = pose_;
+}
+
+void PalmStage::restore() {
+  state_ = saved_state_;
+  pose_ = saved_pose_;
+}
+
+}  // namespace frusta

@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: MIT
+// The palm's 6-DOF solve (seed [0156]), run before the fingers: the palm moves as a
+// rigid body carrying the fingers at their graphic angles, so the fingers then start
+// their own solve from a hand that touches nothing.
+#pragma once
+
+#include <glm/gtc/quaternion.hpp>
+
+#include "solver/detection.h"
+#include "solver/qp.h"
+#include "solver/solver_params.h"
+
+namespace frusta {
+
+// A palm placement and how far a move between two of them can carry any hand point.
+struct PalmPlacement {
+  vec3 position{0.0};
+  glm::dquat rotation{1.0, 0.0, 0.0, 0.0};
+};
+double palm_motion(const HandReach& reach, const PalmPlacement& from, const PalmPlacement& to);
+// The rotation vector taking `from` to `to` (world frame), the short way round.
+vec3 rotation_between(const glm::dquat& from, const glm::dquat& to);
+
+class PalmStage {
+ public:
+  PalmStage(const HandModel& model, const HandReach& reach, const SolverParams& params,
+            const CandidateSet& candidates, const PalmPlacement& target, double motion_cap,
+            HandState& state, HandPose& pose);
+
+  int dofs() const { return 6; }
+  int32_t row_capacity() const { return static_cast<int32_t>(candidates_.candidates.size()); }
+  int32_t linearise(QpRow* rows, double* target, double* weights) const;
+  double floor() const { return floor_; }
+  bool capped() const { return capped_; }
+  double try_step(const double* d, double s);
+  void commit();
+  void save();
+  void restore();
+
+  // The smallest exact gap between the whole hand and every candidate.
+  double clearance(const HandPose& pose) const;
+
+ private:
+  const HandModel& model_;
+  const HandReach& reach_;
+  const SolverParams& params_;
+  const CandidateSet& candidates_;
+  PalmPlacement target_;
+  PalmPlacement start_;
+  double motion_cap_;
+  double floor_;
+  bool capped_ = false;
+  HandState& state_;
+  HandPose& pose_;
+  HandState trial_state_, saved_state_;
+  HandPose trial_pose_, saved_pose_;
+};
+
+}  // namespace frusta

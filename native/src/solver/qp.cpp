@@ -1,0 +1,173 @@
+// SPDX-License-Identifier: MIT
+#include "solver/qp.h"
+
+#include <cmath>
+#include <limits>
+
+namespace frusta {
+
+namespace {
+
+using Vec = std::array<double, kMaxQpVariables>;
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+double dot(int n, const Vec& a, const Vec& b) {
+  double s = 0.0;
+  for (int j = 0; j < n; ++j) s += a[j] * b[j];
+  return s;
+}
+
+// The active set: normals (in scaled variables) and multipliers. With G = I after
+// scaling, the primal step is n_p with its part in the active normals' span removed
+// and the dual step the coefficients of that part, both from the small Gram system.
+struct ActiveSet {
+  int n = 0;
+  int size = 0;
+  std::array<int32_t, kMaxQpVariables> row{};
+  std::array<Vec, kMaxQpVariables> normal{};
+  std::array<double, kMaxQpVariables> u{};
+
+  // z = np - N r with (N^T N) r = N^T np; false when the Gram matrix is singular
+  bool split(const Vec& np, Vec& z, Vec& r) const {
+    double gram[kMaxQpVariables][kMaxQpVariables];
+    double rhs[kMaxQpVariables];
+    for (int i = 0; i < size; ++i) {
+      for (int k = 0; k <= i; ++k) gram[i][k] = dot(n, normal[i], normal[k]);
+      rhs[i] = dot(n, normal[i], np);
+    }
+    // Cholesky in place, lower triangle
+    for (int i = 0; i < size; ++i) {
+      for (int k = 0; k <= i; ++k) {
+        double s = gram[i][k];
+        for (int m = 0; m < k; ++m) s -= gram[i][m] * gram[k][m];
+        if (i == k) {
+          if (!(s > 1e-24 * gram[i][i] + 1e-300)) return false;
+          gram[i][i] = std::sqrt(s);
+        } else {
+          gram[i][k] = s / gram[k][k];
+        }
+      }
+    }
+    for (int i = 0; i < size; ++i) {
+      double s = rhs[i];
+      for (int m = 0; m < i; ++m) s -= gram[i][m] * r[m];
+      r[i] = s / gram[i][i];
+    }
+    for (int i = size - 1; i >= 0; --i) {
+      double s = r[i];
+      for (int m = i + 1; m < size; ++m) s -= gram[m][i] * r[m];
+      r[i] = s / gram[i][i];
+    }
+    z = np;
+    for (int i = 0; i < size; ++i)
+      for (int j = 0; j < n; ++j) z[j] -= r[i] * normal[i][j];
+    return true;
+  }
+
+  void drop(int k) {
+    for (int i = k; i + 1 < size; ++i) {
+      row[i] = row[i + 1];
+      normal[i] = normal[i + 1];
+      u[i] = u[i + 1];
+    }
+    --size;
+  }
+};
+
+}  // namespace
+
+QpResult solve_projection_qp(int n, const double* weights, const double* target, const QpRow* rows,
+                             int32_t row_count, int32_t iteration_cap, double* x) {
+  QpResult result;
+  // scale to y_j = sqrt(w_j) x_j so the objective is half the squared distance to the target
+  Vec scale{}, y{};
+  for (int j = 0; j < n; ++j) {
+    scale[j] = 1.0 / std::sqrt(weights[j]);
+    y[j] = target[j] / scale[j];
+  }
+  auto scaled_normal = [&](const QpRow& row) {
+    Vec a{};
+    for (int j = 0; j < n; ++j) a[j] = row.a[j] * scale[j];
+    return a;
+  };
+  auto write_back = [&] {
+    for (int j = 0; j < n; ++j) x[j] = y[j] * scale[j];
+  };
+
+  ActiveSet active;
+  active.n = n;
+  for (;;) {
+    // the most violated row, relative to its normal's length so units do not matter
+    int32_t p = -1;
+    double worst = 0.0;
+    Vec np{};
+    for (int32_t i = 0; i < row_count; ++i) {
+      bool is_active = false;
+      for (int k = 0; k < active.size; ++k) is_active |= active.row[k] == i;
+      if (is_active) continue;
+      const Vec a = scaled_normal(rows[i]);
+      const double length = std::sqrt(dot(n, a, a));
+      const double slack = (dot(n, a, y) - rows[i].b) / (length > 0.0 ? length : 1.0);
+      if (slack < worst - 1e-12 * (1.0 + std::fabs(rows[i].b) / (length > 0.0 ? length : 1.0))) {
+        worst = slack;
+        p = i;
+        np = a;
+      }
+    }
+    if (p < 0) break;  // every row holds: optimal
+
+    double u_p = 0.0;
+    for (;;) {
+      if (result.iterations >= iteration_cap) {
+        result.status = QpStatus::kIterationCap;
+        result.active = active.size;
+        write_back();
+        return result;
+      }
+      ++result.iterations;
+      Vec z{}, r{};
+      if (!active.split(np, z, r)) {
+        result.status = QpStatus::kInfeasible;  // numerically dependent active normals
+        result.active = active.size;
+        write_back();
+        return result;
+      }
+      // dual step limit: the first active multiplier to reach zero
+      double t1 = kInfinity;
+      int drop = -1;
+      for (int k = 0; k < active.size; ++k)
+        if (r[k] > 0.0 && active.u[k] / r[k] < t1) {
+          t1 = active.u[k] / r[k];
+          drop = k;
+        }
+      // primal step: the length that satisfies row p
+      const double zz = dot(n, z, np);
+      const double violation = dot(n, np, y) - rows[p].b;
+      const double t2 = zz > 1e-20 * dot(n, np, np) ? -violation / zz : kInfinity;
+      if (t1 == kInfinity && t2 == kInfinity) {
+        result.status = QpStatus::kInfeasible;
+        result.active = active.size;
+        write_back();
+        return result;
+      }
+      const double t = t2 < t1 ? t2 : t1;
+      if (t2 != kInfinity)
+        for (int j = 0; j < n; ++j) y[j] += t * z[j];
+      for (int k = 0; k < active.size; ++k) active.u[k] -= t * r[k];
+      u_p += t;
+      if (t2 <= t1) {  // row p holds now: it joins the active set
+        active.row[active.size] = p;
+        active.normal[active.size] = np;
+        active.u[active.size] = u_p;
+        ++active.size;
+        break;
+      }
+      active.drop(drop);  // a multiplier reached zero: that row lets go
+    }
+  }
+  result.active = active.size;
+  write_back();
+  return result;
+}
+
+}  // namespace frusta

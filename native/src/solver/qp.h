@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: MIT
+// The small QP of every contact solve (seed eq. 6 under linearised eq. 9): a weighted
+// projection, min 1/2 sum_j w_j (x_j - target_j)^2 subject to a_i . x >= b_i, with at
+// most kMaxQpVariables unknowns and any number of rows. Solved by the dual active-set
+// method of Goldfarb and Idnani (1983), which needs no feasible start and reports an
+// infeasible problem instead of cycling, the two things a penetrating start needs.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+namespace frusta {
+
+constexpr int kMaxQpVariables = 6;
+
+struct QpRow {
+  std::array<double, kMaxQpVariables> a{};
+  double b = 0.0;
+};
+
+enum class QpStatus : int { kOptimal = 0, kInfeasible = 1, kIterationCap = 2 };
+
+struct QpResult {
+  QpStatus status = QpStatus::kOptimal;
+  int32_t iterations = 0;  // constraints added or dropped
+  int32_t active = 0;      // rows active at the solution
+};
+
+// x holds the solution on return (the best point reached when not optimal). Allocates
+// nothing; rows are read in order, so equal inputs give equal outputs.
+QpResult solve_projection_qp(int n, const double* weights, const double* target, const QpRow* rows,
+                             int32_t row_count, int32_t iteration_cap, double* x);
+
+}  // namespace frusta

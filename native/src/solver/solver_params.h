@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: MIT
+// The knobs of the graphic-hand solve, with the defaults the tests and benches use.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "frusta/frusta.h"
+#include "geometry/constraint.h"
+
+namespace frusta {
+
+struct SolverParams {
+  // Delta_r: detection inflates every hand radius by this much (seed FIG. 7). It also
+  // bounds how far any hand point moves per sub-step (half of it per stage), which is
+  // what keeps fast motion from tunnelling; must stay below the smallest hand radius.
+  double prediction_margin = 0.002;
+  ConstraintForm form = ConstraintForm::kDistance;
+  // Gr of seed eq. 6, per finger joint: abduction, then the three flexions
+  std::array<double, FRUSTA_JOINTS_PER_FINGER> joint_stiffness{1.0, 1.0, 1.0, 1.0};
+  // the palm's 6-DOF objective: per m^2 of translation and per rad^2 of rotation
+  double palm_translation_stiffness = 1.0;
+  double palm_rotation_stiffness = 0.19 * 0.19;  // a turn of 1 rad weighs as a hand length
+  double penetration_tolerance = 1e-6;  // metres a solved hand may sink (rounding, curvature)
+  double contact_distance = 1e-4;       // gap under which a pair is reported as a contact
+  double convergence = 1e-10;           // stop re-linearising when no variable moves more
+  int32_t max_iterations = 20;          // re-linearise and re-solve at most this often
+  int32_t qp_iteration_cap = 64;        // active-set changes per QP
+  int32_t max_substeps = 64;            // per step; beyond, the graphic hand lags behind
+};
+
+}  // namespace frusta

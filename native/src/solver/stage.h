@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: MIT
+// The iteration every stage shares (seed [0143]): linearise the constraints at the
+// current estimate, solve the QP, take the longest step (halving) that keeps the true
+// geometry apart and the motion within its bound, and repeat until nothing moves.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "solver/qp.h"
+#include "solver/solver_params.h"
+
+namespace frusta {
+
+struct StageStats {
+  int32_t iterations = 0;     // linearisations that moved the estimate
+  int32_t qp_iterations = 0;  // active-set changes over all QPs
+  bool infeasible = false;    // some QP had no point meeting every linearised row
+  bool capped = false;        // a step was cut short by the stage's motion bound
+};
+
+// The bound of a linearised row, g + a.d >= bound. Rows ask for half the penetration
+// tolerance, so a hand one stage left inside the tolerance is not pushed back out by
+// the next (that ratchets: the palm rose a micron a step under fingers pressing down).
+// `reach` scales the slack into the squared form's units (dg/d|OC| = 2 |OC|).
+inline double row_bound(const SolverParams& params, double value, double reach) {
+  const double scale = params.form == ConstraintForm::kDistance ? 1.0 : 2.0 * reach;
+  return -value - 0.5 * params.penetration_tolerance * scale;
+}
+
+// Problem: int dofs(); int32_t row_capacity(); double floor() (the least gap allowed);
+//   int32_t linearise(QpRow* rows, double* target, double* weights): rows, target and
+//     weights for the step d from the current estimate;
+//   double try_step(const double* d, double s): the smallest gap at current + s d, or
+//     -infinity when that moves the hand further than the stage allows;
+//   bool capped(): whether some trial was refused for moving too far;
+//   void commit(): make the last trial the current estimate;
+//   void save() / restore(): keep / return to an estimate that meets floor().
+//
+// Steps are taken whole (SQP converges fast that way) even when the curvature the
+// linearisation missed leaves a trial a hair inside an object: the next linearisation
+// pulls it back out. Only a trial deeper than kWorkingDepth is halved. If the last
+// estimate still sinks below floor(), the stage ends at the last one that did not.
+constexpr int kMaxHalvings = 16;  // 2^-16 of a step is not worth re-linearising for
+constexpr double kWorkingDepth = 2.5e-4;  // metres
+
+template <class Problem>
+StageStats solve_stage(Problem& problem, const SolverParams& params, std::vector<QpRow>& rows) {
+  StageStats stats;
+  const int n = problem.dofs();
+  if (rows.size() < static_cast<size_t>(problem.row_capacity()))
+    rows.resize(static_cast<size_t>(problem.row_capacity()));
+  const double working_floor = std::min(problem.floor(), -kWorkingDepth);
+  bool safe = true;
+  problem.save();
+  for (int32_t it = 0; it < params.max_iterations; ++it) {
+    double target[kMaxQpVariables] = {}, weights[kMaxQpVariables] = {}, d[kMaxQpVariables] = {};
+    const int32_t count = problem.linearise(rows.data(), target, weights);
+    const QpResult qp =
+        solve_projection_qp(n, weights, target, rows.data(), count, params.qp_iteration_cap, d);
+    stats.qp_iterations += qp.iterations;
+    stats.infeasible |= qp.status == QpStatus::kInfeasible;
+    double largest = 0.0;
+    for (int j = 0; j < n; ++j) largest = std::max(largest, std::fabs(d[j]));
+    if (!(largest > params.convergence)) break;
+    double s = 1.0;
+    double gap = problem.try_step(d, s);
+    for (int halving = 0; !(gap >= working_floor) && halving < kMaxHalvings; ++halving) {
+      s *= 0.5;
+      gap = problem.try_step(d, s);
+    }
+    if (!(gap >= working_floor)) break;  // the current estimate is as far as it goes
+    problem.commit();
+    ++stats.iterations;
+    safe = gap >= problem.floor();
+    if (safe) problem.save();
+    if (!(largest * s > params.convergence)) break;
+  }
+  if (!safe) problem.restore();
+  stats.capped = problem.capped();
+  return stats;
+}
+
+}  // namespace frusta
