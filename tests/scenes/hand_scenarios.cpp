@@ -1,0 +1,279 @@
+// SPDX-License-Identifier: MIT
+#include "scenes/hand_scenarios.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+
+#include <glm/geometric.hpp>
+#include <glm/gtx/quaternion.hpp>
+
+#include "bake/baker.h"
+#include "geometry/exact_distance.h"
+#include "hand/hand_model.h"
+#include "scenes/meshes.h"
+#include "spheretree/tree_builder.h"
+
+namespace frusta::scenes {
+
+std::shared_ptr<const TreeFile> sample_tree(const std::string& name) {
+  static std::map<std::string, std::shared_ptr<const TreeFile>> cache;
+  auto it = cache.find(name);
+  if (it != cache.end()) return it->second;
+  auto file = std::make_shared<TreeFile>();
+  const std::string path = std::string(FRUSTA_SAMPLE_OBJECTS_DIR) + "/" + name + ".frtree";
+  if (load_tree_file(path, file.get()) != FRUSTA_OK)
+    throw std::runtime_error(path + ": " + frusta_last_error() + " (built by frusta_sample_objects)");
+  cache[name] = file;
+  return file;
+}
+
+std::shared_ptr<const TreeFile> baked_box(const vec3& size, double target_error) {
+  auto file = std::make_shared<TreeFile>();
+  BakeParams params;
+  params.target_error = target_error;
+  bool met = false;
+  if (bake_sphere_tree(make_box(size, 4), params, nullptr, file.get(), &met) != FRUSTA_OK)
+    throw std::runtime_error(std::string("baking a box: ") + frusta_last_error());
+  return file;
+}
+
+std::shared_ptr<const TreeFile> ball_shell(int32_t leaves, double radius) {
+  // spacing of N points over the sphere; a leaf of radius 0.75 spacing overlaps its
+  // neighbours, and sits a radius deep so the union's outside touches the ball's
+  const double spacing = std::sqrt(4.0 * 3.14159265358979323846 * radius * radius / leaves);
+  const double r = std::min(0.75 * spacing, 0.5 * radius);
+  const double golden = 3.14159265358979323846 * (3.0 - std::sqrt(5.0));
+  std::vector<Sphere> spheres(static_cast<size_t>(leaves));
+  for (int32_t i = 0; i < leaves; ++i) {
+    const double z = 1.0 - 2.0 * (i + 0.5) / leaves;
+    const double ring = std::sqrt(1.0 - z * z), phi = golden * i;
+    spheres[static_cast<size_t>(i)] = {(radius - r) * vec3(ring * std::cos(phi), ring * std::sin(phi), z), r};
+  }
+  auto file = std::make_shared<TreeFile>();
+  if (build_sphere_tree(spheres, {8}, &file->tree) != FRUSTA_OK)
+    throw std::runtime_error(std::string("building a ball shell: ") + frusta_last_error());
+  return file;
+}
+
+glm::dquat about(const vec3& axis, double angle) { return glm::angleAxis(angle, glm::normalize(axis)); }
+
+HandState open_hand(const vec3& palm, const glm::dquat& rotation) {
+  HandState s;
+  s.palm_position = palm;
+  s.palm_rotation = rotation;
+  return s;
+}
+
+HandState mix(const HandState& a, const HandState& b, double t) {
+  t = std::clamp(t, 0.0, 1.0);
+  HandState s;
+  s.palm_position = a.palm_position + t * (b.palm_position - a.palm_position);
+  s.palm_rotation = glm::slerp(a.palm_rotation, b.palm_rotation, t);
+  for (size_t j = 0; j < s.angles.size(); ++j) s.angles[j] = a.angles[j] + t * (b.angles[j] - a.angles[j]);
+  return s;
+}
+
+void set_flexion(HandState& s, int finger, double f1, double f2, double f3) {
+  s.angles[finger * 4 + 1] = f1;
+  s.angles[finger * 4 + 2] = f2;
+  s.angles[finger * 4 + 3] = f3;
+}
+
+void HandScenario::add(std::shared_ptr<const TreeFile> tree, const RigidPose& pose) {
+  objects.push_back({&tree->tree, pose});
+  trees.push_back(std::move(tree));
+}
+
+std::vector<std::string> hand_scenario_names() {
+  return {"box_press", "ball_grasp", "slide", "plate_pinch", "bowl_press", "plate_teleport",
+          "start_inside", "palm_then_fingers"};
+}
+
+namespace {
+
+RigidPose at(const vec3& position) { return {position, glm::dmat3(1.0)}; }
+
+// an index fingertip pressed into the top face of a box (z = -25 mm)
+HandScenario box_press() {
+  HandScenario s;
+  s.add(sample_tree("box"), at(vec3(0.175, 0.034, -0.045)));
+  HandState pressed = open_hand();
+  set_flexion(pressed, 1, 0.9, 0.9, 0.6);  // the index would end 3 cm inside the box
+  s.steps = 200;
+  s.haptic = [pressed](int32_t t) { return mix(open_hand(), pressed, t / 150.0); };
+  s.held = pressed;
+  return s;
+}
+
+// the index pressed into a box, then the palm slides 3 cm along it
+HandScenario slide() {
+  HandScenario s;
+  s.add(sample_tree("box"), at(vec3(0.175, 0.034, -0.045)));
+  HandState pressed = open_hand();
+  set_flexion(pressed, 1, 0.6, 0.6, 0.4);
+  HandState slid = pressed;
+  slid.palm_position = vec3(0.03, 0.0, 0.0);
+  s.steps = 400;
+  s.haptic = [pressed, slid](int32_t t) {
+    return t < 100 ? mix(open_hand(), pressed, t / 80.0) : mix(pressed, slid, (t - 100) / 250.0);
+  };
+  s.held = slid;
+  return s;
+}
+
+// thumb and index pads pushed through a small plate held between them
+HandScenario plate_pinch() {
+  HandScenario s;
+  // a pinch pose found by search: the pads 4 mm apart, the plate between them
+  HandState pinch = open_hand();
+  const double angles[8] = {-0.1, 0.4, 0.4, 0.3, 0.0, 0.4, 1.1, 0.3};
+  std::copy(angles, angles + 8, pinch.angles.begin());
+  const HandModel model = make_hand_model(frusta_default_hand_def());
+  HandPose pose;
+  forward_kinematics(model, pinch, pose);
+  const vec3 thumb = pose.fingers[0].joint[3], index = pose.fingers[1].joint[3];
+  s.axis = glm::normalize(index - thumb);
+  s.anchor = thumb + s.axis * (model.fingers[0].radius[3] + 0.002);
+  static const std::shared_ptr<const TreeFile> plate = baked_box(vec3(0.03, 0.03, 0.004), 0.001);
+  s.add(plate, {s.anchor, glm::mat3_cast(glm::rotation(vec3(0, 0, 1), s.axis))});
+  // each pad pushed along the plate's normal: the joint motion that moves its tip
+  // centre a distance along a direction, to first order (Jacobian transpose)
+  auto pushed = [&](const HandState& from, int finger, const vec3& direction, double distance) {
+    double j[3 * kJacobianColumns];
+    point_jacobian(pose, finger, 2, pose.fingers[finger].joint[3], j);
+    double step[4], tip[3] = {};
+    for (int c = 0; c < 4; ++c)
+      step[c] = j[c] * direction.x + j[kJacobianColumns + c] * direction.y + j[2 * kJacobianColumns + c] * direction.z;
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 4; ++c) tip[r] += j[r * kJacobianColumns + c] * step[c];
+    const double scale = distance / std::sqrt(tip[0] * tip[0] + tip[1] * tip[1] + tip[2] * tip[2]);
+    HandState out = from;
+    for (int c = 0; c < 4; ++c) out.angles[finger * 4 + c] += scale * step[c];
+    return out;
+  };
+  const HandState before = pushed(pushed(pinch, 0, -s.axis, 0.008), 1, s.axis, 0.008);
+  const HandState through = pushed(pushed(pinch, 0, s.axis, 0.01), 1, -s.axis, 0.01);
+  s.steps = 300;
+  s.haptic = [before, through](int32_t t) {
+    return t < 120 ? mix(open_hand(), before, t / 100.0) : mix(before, through, (t - 120) / 120.0);
+  };
+  s.held = through;
+  return s;
+}
+
+// the hand lowered into a bowl with its fingers curling
+HandScenario bowl_press() {
+  HandScenario s;
+  s.add(sample_tree("bowl"), at(vec3(0.13, 0.0, -0.01)));
+  const HandState above = open_hand(vec3(0.0, 0.0, 0.06));
+  HandState pressed = open_hand(vec3(0.0, 0.0, -0.02));
+  for (int f = 1; f < 5; ++f) set_flexion(pressed, f, 0.5, 0.6, 0.4);
+  s.steps = 300;
+  s.haptic = [above, pressed](int32_t t) { return mix(above, pressed, t / 250.0); };
+  s.held = pressed;
+  return s;
+}
+
+// the haptic hand jumps 5 cm, through a 4 mm plate (top at z = -25 mm), in one step
+HandScenario plate_teleport() {
+  HandScenario s;
+  s.add(sample_tree("plate"), at(vec3(0.10, 0.0, -0.027)));
+  s.anchor = vec3(0.10, 0.0, -0.025);
+  s.axis = vec3(0.0, 0.0, 1.0);
+  const HandState below = open_hand(vec3(0.0, 0.0, -0.05));  // wholly under the plate
+  s.steps = 300;
+  s.haptic = [below](int32_t t) { return t < 10 ? open_hand() : below; };
+  s.held = below;
+  return s;
+}
+
+// a haptic hand that starts inside a box larger than itself (coarse: the interior fill
+// is what matters) and stays there
+HandScenario start_inside() {
+  HandScenario s;
+  static const std::shared_ptr<const TreeFile> box = baked_box(vec3(0.40, 0.30, 0.16), 0.004);
+  s.add(box, at(vec3(0.08, 0.0, 0.0)));
+  HandState inside = open_hand();
+  set_flexion(inside, 2, 0.3, 0.3, 0.3);
+  s.steps = 200;
+  s.haptic = [inside](int32_t) { return inside; };
+  s.held = inside;
+  return s;
+}
+
+// the palm pressed flat onto a box, then every finger closing. The box sits off to the
+// little finger's side: the thumb's metacarpal hangs below the palm's plane and would
+// otherwise carry the hand.
+HandScenario palm_then_fingers() {
+  HandScenario s;
+  s.add(sample_tree("box"), at(vec3(0.05, -0.02, -0.0359)));  // top face 1 mm under the palm
+  const HandState pressed = open_hand(vec3(0.0, 0.0, -0.01));
+  HandState closed = pressed;
+  for (int f = 0; f < 5; ++f) set_flexion(closed, f, 1.6, 1.6, 1.6);
+  s.steps = 400;
+  s.haptic = [pressed, closed](int32_t t) {
+    return t < 100 ? mix(open_hand(), pressed, t / 80.0) : mix(pressed, closed, (t - 100) / 250.0);
+  };
+  s.held = closed;
+  return s;
+}
+
+}  // namespace
+
+HandScenario ball_grasp(std::shared_ptr<const TreeFile> ball) {
+  HandScenario s;
+  s.add(std::move(ball), at(vec3(0.10, 0.0, -0.058)));  // 4 cm radius, 3 mm under the palm
+  HandState closed = open_hand();
+  for (int f = 0; f < 5; ++f) set_flexion(closed, f, 1.6, 1.6, 1.6);
+  s.steps = 300;
+  s.haptic = [closed](int32_t t) { return mix(open_hand(), closed, t / 250.0); };
+  s.held = closed;
+  return s;
+}
+
+HandScenario make_hand_scenario(const std::string& name) {
+  HandScenario s;
+  if (name == "box_press") s = box_press();
+  else if (name == "ball_grasp") s = ball_grasp(sample_tree("ball"));
+  else if (name == "slide") s = slide();
+  else if (name == "plate_pinch") s = plate_pinch();
+  else if (name == "bowl_press") s = bowl_press();
+  else if (name == "plate_teleport") s = plate_teleport();
+  else if (name == "start_inside") s = start_inside();
+  else if (name == "palm_then_fingers") s = palm_then_fingers();
+  else throw std::invalid_argument("no hand scenario named " + name);
+  s.name = name;
+  return s;
+}
+
+double deepest_penetration(const HandModel& model, const HandPose& pose,
+                           const std::vector<SolverObject>& objects) {
+  const HandReach reach = hand_reach(model);
+  SegmentFrame frames[FRUSTA_HAND_SEGMENT_COUNT];
+  Sphere bounds[FRUSTA_HAND_SEGMENT_COUNT];  // each segment solid lies inside its bound
+  for (int b = 0; b < FRUSTA_HAND_SEGMENT_COUNT; ++b) {
+    const Segment seg = finger_segment(model, pose, b / 3, b % 3);
+    frames[b] = make_segment_frame(seg);
+    bounds[b] = {0.5 * (seg.proximal + seg.distal),
+                 0.5 * glm::length(seg.proximal - seg.distal) + std::max(seg.proximal_radius, seg.distal_radius)};
+  }
+  std::vector<Sphere> palm;
+  for (int k = 0; k < static_cast<int>(model.palm_spheres.size()); ++k) palm.push_back(palm_sphere(model, pose, k));
+  double deepest = 0.0;
+  for (const SolverObject& object : objects) {
+    for (const Sphere& local : object.tree->leaves) {
+      const Sphere leaf{object.pose.rotation * local.center + object.pose.position, local.radius};
+      if (glm::length(leaf.center - pose.palm_position) > reach.hand + leaf.radius) continue;
+      for (int b = 0; b < FRUSTA_HAND_SEGMENT_COUNT; ++b)
+        if (glm::length(leaf.center - bounds[b].center) < bounds[b].radius + leaf.radius)
+          deepest = std::max(deepest, -exact_distance(frames[b], leaf));
+      for (const Sphere& p : palm)
+        deepest = std::max(deepest, p.radius + leaf.radius - glm::length(p.center - leaf.center));
+    }
+  }
+  return deepest;
+}
+
+}  // namespace frusta::scenes
