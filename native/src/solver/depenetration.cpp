@@ -11,7 +11,7 @@ namespace frusta {
 bool hand_is_free(const HandModel& model, const HandReach& reach, const HandPose& pose,
                   const SolverObject* objects, int32_t object_count, double tolerance,
                   CandidateSet& scratch) {
-  detect_candidates(model, reach, pose, objects, object_count, 0.0, scratch);
+  detect_candidates(model, reach, pose, objects, object_count, 0.0, -1, scratch);
   for (int body = 0; body < kBodyCount; ++body)
     if (body_clearance(model, pose, scratch, body) < -tolerance) return false;
   return true;

@@ -85,7 +85,7 @@ double bound_clearance(const HandReach& reach, const HandPose& pose, const Solve
 
 void detect_candidates(const HandModel& model, const HandReach& reach, const HandPose& pose,
                        const SolverObject* objects, int32_t object_count, double margin,
-                       CandidateSet& out) {
+                       int32_t max_level, CandidateSet& out) {
   out.candidates.clear();
   out.tree_nodes_visited = 0;
   out.near_objects.clear();
@@ -98,9 +98,12 @@ void detect_candidates(const HandModel& model, const HandReach& reach, const Han
   auto add_hits = [&](int32_t object, int32_t count, int32_t part) {
     const SolverObject& obj = objects[object];
     for (int32_t h = 0; h < count; ++h) {
-      const Sphere& leaf = obj.tree->leaves[static_cast<size_t>(out.hits[static_cast<size_t>(h)].leaf)];
-      out.candidates.push_back({object, out.hits[static_cast<size_t>(h)].leaf, part,
-                                {obj.pose.rotation * leaf.center + obj.pose.position, leaf.radius}});
+      const TreeHit& hit = out.hits[static_cast<size_t>(h)];
+      // an inner node cut off by the level stands in for every leaf below it
+      const Sphere local = hit.leaf >= 0 ? obj.tree->leaves[static_cast<size_t>(hit.leaf)]
+                                         : obj.tree->node_sphere(hit.node);
+      out.candidates.push_back({object, hit.leaf, part,
+                                {obj.pose.rotation * local.center + obj.pose.position, local.radius}});
     }
   };
 
@@ -115,7 +118,7 @@ void detect_candidates(const HandModel& model, const HandReach& reach, const Han
         const SegmentFrame frame =
             make_segment_frame(to_object_frame(obj.pose, finger_segment(model, pose, f, s)));
         const int32_t count = query_into(out.hits, [&](TreeHit* hits, int32_t capacity) {
-          const TreeQueryStats stats = query_segment(*obj.tree, frame, margin, -1, hits, capacity);
+          const TreeQueryStats stats = query_segment(*obj.tree, frame, margin, max_level, hits, capacity);
           out.tree_nodes_visited += stats.visited;
           return stats;
         });
@@ -131,7 +134,7 @@ void detect_candidates(const HandModel& model, const HandReach& reach, const Han
       if (!bounds_meet(world, object_bound(obj), margin)) continue;
       const Sphere local = to_object_frame(obj.pose, world);
       const int32_t count = query_into(out.hits, [&](TreeHit* hits, int32_t capacity) {
-        const TreeQueryStats stats = query_sphere(*obj.tree, local, margin, -1, hits, capacity);
+        const TreeQueryStats stats = query_sphere(*obj.tree, local, margin, max_level, hits, capacity);
         out.tree_nodes_visited += stats.visited;
         return stats;
       });

@@ -24,7 +24,7 @@ constexpr int kBodyCount = FRUSTA_HAND_SEGMENT_COUNT + 1;
 
 struct Candidate {
   int32_t object = 0;
-  int32_t leaf = 0;
+  int32_t leaf = 0;  // -1: an inner node standing in for its leaves (a level cut)
   int32_t part = 0;  // the palm sphere's index on the palm body, else 0
   Sphere world;      // the leaf in world coordinates
 };
@@ -58,11 +58,12 @@ HandReach hand_reach(const HandModel& model);
 // World bound of an object's whole tree.
 Sphere object_bound(const SolverObject& object);
 
-// Fill `out` with every leaf within `margin` of the hand at `pose`. The vector keeps
-// its capacity between calls, so a steady scene allocates nothing.
+// Fill `out` with every leaf within `margin` of the hand at `pose`, or with the nodes
+// at max_level standing in for theirs (-1: leaves only). The vector keeps its capacity
+// between calls, so a steady scene allocates nothing.
 void detect_candidates(const HandModel& model, const HandReach& reach, const HandPose& pose,
                        const SolverObject* objects, int32_t object_count, double margin,
-                       CandidateSet& out);
+                       int32_t max_level, CandidateSet& out);
 
 // The smallest exact gap between one body of the hand at `pose` and its candidates
 // (infinite with none): what every accepted step is checked against.

@@ -23,7 +23,7 @@ namespace frusta {
 
 struct SolverContact {
   int32_t object = 0;
-  int32_t leaf = 0;
+  int32_t leaf = 0;  // -1 when a node at the tree level stands in
   int32_t body = 0;  // finger segment f * 3 + s, or kPalmBody
   int32_t part = 0;  // the palm sphere on the palm body
   double distance = 0.0;  // exact gap, >= -penetration_tolerance

@@ -27,6 +27,10 @@ struct SolverParams {
   int32_t max_iterations = 20;          // re-linearise and re-solve at most this often
   int32_t qp_iteration_cap = 64;        // active-set changes per QP
   int32_t max_substeps = 64;            // per step; beyond, the graphic hand lags behind
+  // -1: contact spheres are the leaves. A level >= 0 uses the tree's nodes there (and
+  // leaves above it) instead: fewer, larger spheres, a hand stopping short of the
+  // leaves by up to their excess. A time-against-error knob.
+  int32_t tree_level = -1;
 };
 
 }  // namespace frusta

@@ -1,0 +1,220 @@
+// SPDX-License-Identifier: MIT
+// tools/bench solver: the graphic-hand step, its time next to its error, in one run.
+//  - every scenario of the acceptance list: p50 / p99 / max step time, contacts, QP
+//    iterations, sub-steps, and the deepest penetration against the exact leaf set;
+//  - both constraint forms on every scenario (robustness: penetration, failures);
+//  - the deep grasp against balls of 10^2..10^6 leaves, and the time-against-error
+//    knobs (Delta_r, iteration cap, tree level) at 10^4 leaves;
+//  - the thread question: a finger's solve against a thread hand-off, measured;
+//  - with FRUSTA_WITH_MUJOCO, the same grasp in MuJoCo, side by side.
+// Prints one JSON document. Step times exclude the penetration checks.
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "hand/hand_model.h"
+#include "scenes/hand_scenarios.h"
+#include "solver/hand_solver.h"
+#ifdef FRUSTA_WITH_MUJOCO
+#include "mujoco_peer.h"
+#endif
+
+namespace frusta {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double micros(Clock::duration d) { return std::chrono::duration<double, std::micro>(d).count(); }
+
+double percentile(std::vector<double> v, double p) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  return v[static_cast<size_t>(std::min<double>(static_cast<double>(v.size()) - 1.0, p * static_cast<double>(v.size())))];
+}
+
+struct Measured {
+  int32_t steps = 0, failed_steps = 0;
+  std::vector<double> step_us;
+  int32_t max_contacts = 0, max_candidates = 0, max_substeps = 0;
+  double qp_iterations = 0, iterations = 0, finger_solves = 0;
+  double max_penetration = 0.0;  // metres
+  bool lagged = false, infeasible = false;
+};
+
+// The scripted part, then `hold` held steps; penetration checked every `check_every`.
+Measured measure(const scenes::HandScenario& s, const SolverParams& params, int32_t hold, int32_t check_every) {
+  const HandModel model = make_hand_model(frusta_default_hand_def());
+  HandSolver solver(model, params);
+  Measured m;
+  const int32_t total = s.steps + hold;
+  m.step_us.reserve(static_cast<size_t>(total));
+  for (int32_t t = 0; t < total; ++t) {
+    const HandState haptic = t < s.steps ? s.haptic(t) : s.held;
+    StepStats stats;
+    const Clock::time_point start = Clock::now();
+    const frusta_result r = solver.step(haptic, s.objects.data(), static_cast<int32_t>(s.objects.size()), &stats);
+    m.step_us.push_back(micros(Clock::now() - start));
+    ++m.steps;
+    if (r != FRUSTA_OK) {
+      ++m.failed_steps;
+      continue;
+    }
+    m.max_contacts = std::max(m.max_contacts, static_cast<int32_t>(solver.contacts().size()));
+    m.max_candidates = std::max(m.max_candidates, stats.candidates);
+    m.max_substeps = std::max(m.max_substeps, stats.substeps);
+    m.qp_iterations += stats.qp_iterations;
+    m.iterations += stats.iterations;
+    m.finger_solves += stats.finger_solves;
+    m.lagged |= stats.lagging;
+    m.infeasible |= stats.infeasible;
+    if (t % check_every == 0 || t == total - 1)
+      m.max_penetration = std::max(m.max_penetration,
+                                   scenes::deepest_penetration(model, solver.graphic_pose(), s.objects));
+  }
+  return m;
+}
+
+void print_measured(const Measured& m) {
+  const double n = std::max(1, m.steps);
+  std::printf("\"steps\": %d, \"failed_steps\": %d, \"p50_us\": %.2f, \"p99_us\": %.2f, \"max_us\": %.2f, "
+              "\"max_contacts\": %d, \"max_candidates\": %d, \"max_substeps\": %d, "
+              "\"qp_iterations_per_step\": %.2f, \"linearisations_per_step\": %.2f, "
+              "\"finger_solves_per_step\": %.2f, \"lagged\": %s, \"infeasible_qp\": %s, "
+              "\"max_penetration_mm\": %.6f",
+              m.steps, m.failed_steps, percentile(m.step_us, 0.5), percentile(m.step_us, 0.99),
+              percentile(m.step_us, 1.0), m.max_contacts, m.max_candidates, m.max_substeps,
+              m.qp_iterations / n, m.iterations / n, m.finger_solves / n, m.lagged ? "true" : "false",
+              m.infeasible ? "true" : "false", m.max_penetration * 1e3);
+}
+
+// One finger's solve is microseconds: a hand-off to another thread and back (the least a
+// parallel solve must pay per step) decides whether threads can pay.
+double thread_round_trip_us() {
+  std::atomic<int> turn{0};
+  constexpr int kRounds = 20000;
+  std::thread other([&] {
+    for (int i = 0; i < kRounds; ++i) {
+      while (turn.load(std::memory_order_acquire) != 1) {
+      }
+      turn.store(0, std::memory_order_release);
+    }
+  });
+  const Clock::time_point start = Clock::now();
+  for (int i = 0; i < kRounds; ++i) {
+    turn.store(1, std::memory_order_release);
+    while (turn.load(std::memory_order_acquire) != 0) {
+    }
+  }
+  const double us = micros(Clock::now() - start) / kRounds;
+  other.join();
+  return us;
+}
+
+}  // namespace
+}  // namespace frusta
+
+int main() {
+  using namespace frusta;
+  const SolverParams defaults;
+  std::printf("{\n\"suite\": \"solver\",\n\"hardware_threads\": %u,\n", std::thread::hardware_concurrency());
+  std::printf("\"defaults\": {\"prediction_margin_mm\": %.3f, \"form\": \"distance\", \"max_iterations\": %d, "
+              "\"penetration_tolerance_mm\": %.4f},\n",
+              defaults.prediction_margin * 1e3, defaults.max_iterations, defaults.penetration_tolerance * 1e3);
+
+  // the acceptance scenarios, each scripted then held 1,000 steps
+  std::printf("\"scenarios\": [\n");
+  const std::vector<std::string> names = scenes::hand_scenario_names();
+  double finger_solve_us = 0.0;
+  for (size_t i = 0; i < names.size(); ++i) {
+    const scenes::HandScenario s = scenes::make_hand_scenario(names[i]);
+    const Measured m = measure(s, defaults, 1000, 1);
+    if (names[i] == "ball_grasp") finger_solve_us = percentile(m.step_us, 0.5) / std::max(1.0, m.finger_solves / m.steps);
+    std::printf("  {\"name\": \"%s\", ", names[i].c_str());
+    print_measured(m);
+    std::printf("}%s\n", i + 1 < names.size() ? "," : "");
+  }
+  std::printf("],\n");
+
+  // the two constraint forms on the same scripts
+  std::printf("\"forms\": [\n");
+  for (int f = 0; f < 2; ++f) {
+    SolverParams p = defaults;
+    p.form = f == 0 ? ConstraintForm::kSquared : ConstraintForm::kDistance;
+    for (size_t i = 0; i < names.size(); ++i) {
+      const Measured m = measure(scenes::make_hand_scenario(names[i]), p, 200, 1);
+      std::printf("  {\"form\": \"%s\", \"name\": \"%s\", ", f == 0 ? "squared" : "distance", names[i].c_str());
+      print_measured(m);
+      std::printf("}%s\n", f == 1 && i + 1 == names.size() ? "" : ",");
+    }
+  }
+  std::printf("],\n");
+
+  // the deep grasp against ever denser balls
+  std::printf("\"grasp_by_leaves\": [\n");
+  const int32_t counts[] = {100, 1000, 4000, 10000, 100000, 1000000};
+  for (size_t i = 0; i < std::size(counts); ++i) {
+    const std::shared_ptr<const TreeFile> ball = scenes::ball_shell(counts[i], 0.04);
+    const scenes::HandScenario s = scenes::ball_grasp(ball);
+    const Measured m = measure(s, defaults, 200, counts[i] >= 100000 ? 10 : 1);
+    std::printf("  {\"leaves\": %d, \"tree_depth\": %d, ", counts[i], ball->tree.depth);
+    print_measured(m);
+#ifdef FRUSTA_WITH_MUJOCO
+    if (counts[i] <= 10000) {
+      std::vector<Sphere> world;
+      for (const Sphere& leaf : ball->tree.leaves) world.push_back({leaf.center + s.objects[0].pose.position, leaf.radius});
+      const bench::PeerResult peer = bench::run_mujoco_grasp(make_hand_model(frusta_default_hand_def()), world,
+                                                             s.steps + 200, [&](int32_t t) { return t < s.steps ? s.haptic(t) : s.held; });
+      if (peer.ok)
+        std::printf(", \"mujoco\": {\"p50_us\": %.2f, \"p99_us\": %.2f, \"max_us\": %.2f, \"max_contacts\": %d, "
+                    "\"max_penetration_mm\": %.6f, \"p99_ratio_mujoco_over_frusta\": %.2f}",
+                    peer.p50_us, peer.p99_us, peer.max_us, peer.max_contacts, peer.max_penetration_mm,
+                    peer.p99_us / std::max(1e-9, percentile(m.step_us, 0.99)));
+      else
+        std::printf(", \"mujoco\": {\"error\": \"%s\"}", peer.error.c_str());
+    }
+#endif
+    std::printf("}%s\n", i + 1 < std::size(counts) ? "," : "");
+  }
+  std::printf("],\n");
+
+  // the knobs, one at a time, on the 10^4-leaf grasp
+  std::printf("\"grasp_knobs_10k_leaves\": [\n");
+  const scenes::HandScenario grasp = scenes::ball_grasp(scenes::ball_shell(10000, 0.04));
+  struct Knob {
+    const char* name;
+    double value;
+    SolverParams params;
+  };
+  std::vector<Knob> knobs;
+  for (double margin : {0.001, 0.002, 0.004}) {
+    SolverParams p = defaults;
+    p.prediction_margin = margin;
+    knobs.push_back({"prediction_margin_mm", margin * 1e3, p});
+  }
+  for (int cap : {1, 2, 5, 20}) {
+    SolverParams p = defaults;
+    p.max_iterations = cap;
+    knobs.push_back({"max_iterations", static_cast<double>(cap), p});
+  }
+  for (int level : {2, 3, 4, -1}) {
+    SolverParams p = defaults;
+    p.tree_level = level;
+    knobs.push_back({"tree_level", static_cast<double>(level), p});
+  }
+  for (size_t i = 0; i < knobs.size(); ++i) {
+    const Measured m = measure(grasp, knobs[i].params, 200, 1);
+    std::printf("  {\"knob\": \"%s\", \"value\": %g, ", knobs[i].name, knobs[i].value);
+    print_measured(m);
+    std::printf("}%s\n", i + 1 < knobs.size() ? "," : "");
+  }
+  std::printf("],\n");
+
+  std::printf("\"threads\": {\"finger_solve_us\": %.2f, \"thread_round_trip_us\": %.3f}\n}\n", finger_solve_us,
+              thread_round_trip_us());
+  return 0;
+}
