@@ -7,12 +7,16 @@
 //    knobs (Delta_r, iteration cap, tree level) at 10^4 leaves;
 //  - the thread question: a finger's solve against a thread hand-off, measured;
 //  - with FRUSTA_WITH_MUJOCO, the same grasp in MuJoCo, side by side.
-// Prints one JSON document. Step times exclude the penetration checks.
+// Prints one JSON document. Step times exclude the penetration checks. Arguments name
+// the sections to run (scenarios forms leaves knobs threads; default all); flags such
+// as tools/bench's --benchmark_format are ignored.
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <cmath>
 #include <cstdio>
+#include <mutex>
 #include <string>
 #include <thread>
 #include <vector>
@@ -92,9 +96,10 @@ void print_measured(const Measured& m) {
               m.infeasible ? "true" : "false", m.max_penetration * 1e3);
 }
 
-// One finger's solve is microseconds: a hand-off to another thread and back (the least a
-// parallel solve must pay per step) decides whether threads can pay.
-double thread_round_trip_us() {
+// One finger's solve is microseconds: a hand-off to another thread and back is the
+// least a parallel solve pays per step. Spinning (a core burnt per worker) and
+// sleeping (a condition variable, what a shared machine allows) are both measured.
+double spin_round_trip_us() {
   std::atomic<int> turn{0};
   constexpr int kRounds = 20000;
   std::thread other([&] {
@@ -115,21 +120,53 @@ double thread_round_trip_us() {
   return us;
 }
 
+double sleep_round_trip_us() {
+  std::mutex mutex;
+  std::condition_variable changed;
+  int turn = 0;
+  constexpr int kRounds = 5000;
+  std::thread other([&] {
+    for (int i = 0; i < kRounds; ++i) {
+      std::unique_lock<std::mutex> lock(mutex);
+      changed.wait(lock, [&] { return turn == 1; });
+      turn = 0;
+      changed.notify_one();
+    }
+  });
+  const Clock::time_point start = Clock::now();
+  for (int i = 0; i < kRounds; ++i) {
+    std::unique_lock<std::mutex> lock(mutex);
+    turn = 1;
+    changed.notify_one();
+    changed.wait(lock, [&] { return turn == 0; });
+  }
+  const double us = micros(Clock::now() - start) / kRounds;
+  other.join();
+  return us;
+}
+
 }  // namespace
 }  // namespace frusta
 
-int main() {
+int main(int argc, char** argv) {
   using namespace frusta;
+  std::vector<std::string> sections;
+  for (int i = 1; i < argc; ++i)
+    if (argv[i][0] != '-') sections.push_back(argv[i]);
+  auto wanted = [&](const char* section) {
+    return sections.empty() || std::find(sections.begin(), sections.end(), section) != sections.end();
+  };
   const SolverParams defaults;
+  const std::vector<std::string> names = scenes::hand_scenario_names();
   std::printf("{\n\"suite\": \"solver\",\n\"hardware_threads\": %u,\n", std::thread::hardware_concurrency());
   std::printf("\"defaults\": {\"prediction_margin_mm\": %.3f, \"form\": \"distance\", \"max_iterations\": %d, "
               "\"penetration_tolerance_mm\": %.4f},\n",
               defaults.prediction_margin * 1e3, defaults.max_iterations, defaults.penetration_tolerance * 1e3);
 
   // the acceptance scenarios, each scripted then held 1,000 steps
-  std::printf("\"scenarios\": [\n");
-  const std::vector<std::string> names = scenes::hand_scenario_names();
   double finger_solve_us = 0.0;
+  if (wanted("scenarios")) {
+  std::printf("\"scenarios\": [\n");
   for (size_t i = 0; i < names.size(); ++i) {
     const scenes::HandScenario s = scenes::make_hand_scenario(names[i]);
     const Measured m = measure(s, defaults, 1000, 1);
@@ -139,8 +176,10 @@ int main() {
     std::printf("}%s\n", i + 1 < names.size() ? "," : "");
   }
   std::printf("],\n");
+  }
 
   // the two constraint forms on the same scripts
+  if (wanted("forms")) {
   std::printf("\"forms\": [\n");
   for (int f = 0; f < 2; ++f) {
     SolverParams p = defaults;
@@ -153,8 +192,10 @@ int main() {
     }
   }
   std::printf("],\n");
+  }
 
   // the deep grasp against ever denser balls
+  if (wanted("leaves")) {
   std::printf("\"grasp_by_leaves\": [\n");
   const int32_t counts[] = {100, 1000, 4000, 10000, 100000, 1000000};
   for (size_t i = 0; i < std::size(counts); ++i) {
@@ -181,8 +222,10 @@ int main() {
     std::printf("}%s\n", i + 1 < std::size(counts) ? "," : "");
   }
   std::printf("],\n");
+  }
 
   // the knobs, one at a time, on the 10^4-leaf grasp
+  if (wanted("knobs")) {
   std::printf("\"grasp_knobs_10k_leaves\": [\n");
   const scenes::HandScenario grasp = scenes::ball_grasp(scenes::ball_shell(10000, 0.04));
   struct Knob {
@@ -213,8 +256,12 @@ int main() {
     std::printf("}%s\n", i + 1 < knobs.size() ? "," : "");
   }
   std::printf("],\n");
+  }
 
-  std::printf("\"threads\": {\"finger_solve_us\": %.2f, \"thread_round_trip_us\": %.3f}\n}\n", finger_solve_us,
-              thread_round_trip_us());
+  if (wanted("threads"))
+    std::printf("\"threads\": {\"finger_solve_us\": %.2f, \"spin_round_trip_us\": %.3f, "
+                "\"sleep_round_trip_us\": %.3f},\n",
+                finger_solve_us, spin_round_trip_us(), sleep_round_trip_us());
+  std::printf("\"end\": true\n}\n");
   return 0;
 }

@@ -34,9 +34,7 @@ void clamp_to_limits(const HandModel& model, HandState& state) {
   }
 }
 
-void forward_kinematics(const HandModel& model, const HandState& state, HandPose& pose) {
-  pose.palm_position = state.palm_position;
-  pose.palm_rotation = glm::mat3_cast(state.palm_rotation);
+void finger_kinematics(const HandModel& model, const HandState& state, int f, HandPose& pose) {
   // a left hand is built as a right hand and reflected through the hand's x-z plane;
   // the reflection turns axes (pseudo-vectors) the other way, and keeps segment
   // frames right-handed by flipping their y
@@ -44,26 +42,30 @@ void forward_kinematics(const HandModel& model, const HandState& state, HandPose
   const double axis_sign = model.left ? -1.0 : 1.0;
   const glm::dmat3 frame_fix = model.left ? kMirror : glm::dmat3(1.0);
 
-  for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
-    const FingerModel& finger = model.fingers[f];
-    const double* q = &state.angles[f * FRUSTA_JOINTS_PER_FINGER];
-    FingerPose& out = pose.fingers[f];
+  const FingerModel& finger = model.fingers[f];
+  const double* q = &state.angles[f * FRUSTA_JOINTS_PER_FINGER];
+  FingerPose& out = pose.fingers[f];
 
-    const glm::dmat3 rest = finger.base_rotation * rotation_z(q[0]);
-    out.abduction_axis = axis_sign * (to_world * finger.base_rotation[2]);
-    out.flexion_axis = axis_sign * (to_world * rest[1]);
+  const glm::dmat3 rest = finger.base_rotation * rotation_z(q[0]);
+  out.abduction_axis = axis_sign * (to_world * finger.base_rotation[2]);
+  out.flexion_axis = axis_sign * (to_world * rest[1]);
 
-    vec3 joint = finger.base_position;
-    out.joint[0] = state.palm_position + to_world * joint;
-    double flexion = 0.0;
-    for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s) {
-      flexion += q[1 + s];
-      const glm::dmat3 local = rest * rotation_y(flexion);
-      out.segment_rotation[s] = to_world * local * frame_fix;
-      joint += finger.length[s] * local[0];
-      out.joint[s + 1] = state.palm_position + to_world * joint;
-    }
+  vec3 joint = finger.base_position;
+  out.joint[0] = pose.palm_position + to_world * joint;
+  double flexion = 0.0;
+  for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s) {
+    flexion += q[1 + s];
+    const glm::dmat3 local = rest * rotation_y(flexion);
+    out.segment_rotation[s] = to_world * local * frame_fix;
+    joint += finger.length[s] * local[0];
+    out.joint[s + 1] = pose.palm_position + to_world * joint;
   }
+}
+
+void forward_kinematics(const HandModel& model, const HandState& state, HandPose& pose) {
+  pose.palm_position = state.palm_position;
+  pose.palm_rotation = glm::mat3_cast(state.palm_rotation);
+  for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) finger_kinematics(model, state, f, pose);
 }
 
 Segment finger_segment(const HandModel& model, const HandPose& pose, int finger, int segment) {

@@ -44,6 +44,9 @@ void clamp_to_limits(const HandModel& model, HandState& state);
 // Seed eq. 7: P = M0(palm) Ms(abduction) M1 M2 M3 P_local for every finger.
 void forward_kinematics(const HandModel& model, const HandState& state, HandPose& pose);
 
+// One finger of it, on the palm already in pose (after a change of that finger's angles).
+void finger_kinematics(const HandModel& model, const HandState& state, int finger, HandPose& pose);
+
 // The segment solid between joint s and s + 1 of a finger.
 Segment finger_segment(const HandModel& model, const HandPose& pose, int finger, int segment);
 

@@ -5,6 +5,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "geometry/contact_test.h"
 #include "geometry/exact_distance.h"
 #include "geometry/segment_frame.h"
 
@@ -54,7 +55,7 @@ Sphere object_bound(const SolverObject& object) {
 
 double body_clearance(const HandModel& model, const HandPose& pose, const CandidateSet& candidates,
                       int body) {
-  double gap = INFINITY;
+  double gap = 0.0;
   const Candidate* c = candidates.of(body);
   if (body == kPalmBody) {
     for (int32_t i = 0; i < candidates.count(body); ++i) {
@@ -68,7 +69,8 @@ double body_clearance(const HandModel& model, const HandPose& pose, const Candid
   const SegmentFrame frame = make_segment_frame(finger_segment(
       model, pose, body / FRUSTA_SEGMENTS_PER_FINGER, body % FRUSTA_SEGMENTS_PER_FINGER));
   for (int32_t i = 0; i < candidates.count(body); ++i)
-    gap = std::min(gap, exact_distance(frame, c[i].world));
+    // the cheap conservative test first: only a sphere that may touch can sink in
+    if (may_touch(frame, c[i].world, 0.0)) gap = std::min(gap, exact_distance(frame, c[i].world));
   return gap;
 }
 

@@ -65,8 +65,10 @@ void detect_candidates(const HandModel& model, const HandReach& reach, const Han
                        const SolverObject* objects, int32_t object_count, double margin,
                        int32_t max_level, CandidateSet& out);
 
-// The smallest exact gap between one body of the hand at `pose` and its candidates
-// (infinite with none): what every accepted step is checked against.
+// How deep one body of the hand at `pose` sinks into its candidates, as a negative
+// exact gap; 0 when it touches none (callers compare it with thresholds <= 0 only, so
+// spheres apart are skipped after a cheap conservative test). What every accepted
+// step is checked against.
 double body_clearance(const HandModel& model, const HandPose& pose, const CandidateSet& candidates,
                       int body);
 

@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "geometry/constraint.h"
+#include "geometry/contact_test.h"
 #include "solver/stage.h"
 
 namespace frusta {
@@ -67,6 +68,8 @@ int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights) con
     const int body = finger_ * FRUSTA_SEGMENTS_PER_FINGER + s;
     if (candidates_.count(body) == 0) continue;
     const SegmentFrame frame = make_segment_frame(finger_segment(model_, pose_, finger_, s));
+    // a sphere further than any admissible trial can move is no row: exact, not a guess
+    const double reach = motion_cap_ + finger_motion(reach_, finger_, start_, now);
     // dD/dq and dE/dq: D = joint s, E = joint s + 1; flexion j turns about joint j - 1
     vec3 column_d[FRUSTA_JOINTS_PER_FINGER], column_e[FRUSTA_JOINTS_PER_FINGER];
     column_d[0] = glm::cross(p.abduction_axis, p.joint[s] - p.joint[0]);
@@ -78,6 +81,7 @@ int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights) con
     }
     const Candidate* c = candidates_.of(body);
     for (int32_t i = 0; i < candidates_.count(body); ++i) {
+      if (!may_touch(frame, c[i].world, reach)) continue;
       const Constraint g = contact_constraint(frame, c[i].world, params_.form);
       QpRow& row = rows[count++];
       for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j)
@@ -90,7 +94,7 @@ int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights) con
 }
 
 double FingerStage::clearance(const HandPose& pose) const {
-  double gap = INFINITY;
+  double gap = 0.0;
   for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s)
     gap = std::min(gap, body_clearance(model_, pose, candidates_, finger_ * FRUSTA_SEGMENTS_PER_FINGER + s));
   return gap;
@@ -107,7 +111,8 @@ double FingerStage::try_step(const double* d, double s) {
   }
   trial_state_ = state_;
   std::copy(next.begin(), next.end(), trial_state_.angles.begin() + finger_ * FRUSTA_JOINTS_PER_FINGER);
-  forward_kinematics(model_, trial_state_, trial_pose_);
+  trial_pose_ = pose_;
+  finger_kinematics(model_, trial_state_, finger_, trial_pose_);
   return clearance(trial_pose_);
 }
 

@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "core/validate.h"
+#include "geometry/contact_test.h"
 #include "geometry/exact_distance.h"
 #include "solver/depenetration.h"
 #include "solver/finger_stage.h"
@@ -196,22 +197,25 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
     }
   }
 
+  // the fingers may use whatever of Delta_r the palm left
+  const double finger_cap =
+      params_.prediction_margin - palm_motion(reach_, palm_from, placement(graphic_));
   for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
     const FingerAngles from = finger_angles(graphic_, f), to = finger_angles(target, f);
     const double move = finger_motion(reach_, f, from, to);
     if (!(move > 0.0)) continue;
     if (candidates_.finger_count(f) == 0) {  // nothing near: the haptic angles as they are
       FingerAngles goal = to;
-      if (move > cap) {
+      if (move > finger_cap) {
         for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j)
-          goal[j] = from[j] + (cap / move) * (to[j] - from[j]);
+          goal[j] = from[j] + (finger_cap / move) * (to[j] - from[j]);
         reached = false;
       }
       set_finger_angles(graphic_, f, goal);
       continue;
     }
     forward_kinematics(model_, graphic_, pose_);
-    FingerStage stage(model_, reach_, params_, candidates_, f, to, cap, graphic_, pose_);
+    FingerStage stage(model_, reach_, params_, candidates_, f, to, finger_cap, graphic_, pose_);
     add(solve_stage(stage, params_, rows_));
     ++stats.finger_solves;
   }
@@ -226,6 +230,10 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
 
 void HandSolver::report_contacts() {
   contacts_.clear();
+  SegmentFrame frames[FRUSTA_HAND_SEGMENT_COUNT];
+  for (int body = 0; body < FRUSTA_HAND_SEGMENT_COUNT; ++body)
+    frames[body] = make_segment_frame(finger_segment(model_, pose_, body / FRUSTA_SEGMENTS_PER_FINGER,
+                                                     body % FRUSTA_SEGMENTS_PER_FINGER));
   for (int body = 0; body < kBodyCount; ++body) {
     const Candidate* c = candidates_.of(body);
     for (int32_t i = 0; i < candidates_.count(body); ++i) {
@@ -243,8 +251,8 @@ void HandSolver::report_contacts() {
         contact.hand_point = hand.center - hand.radius * contact.normal;
         contact.object_point = c[i].world.center + c[i].world.radius * contact.normal;
       } else {
-        const SegmentFrame frame = make_segment_frame(finger_segment(
-            model_, pose_, body / FRUSTA_SEGMENTS_PER_FINGER, body % FRUSTA_SEGMENTS_PER_FINGER));
+        const SegmentFrame& frame = frames[body];
+        if (!may_touch(frame, c[i].world, params_.contact_distance)) continue;
         const Proximity p = exact_proximity(frame, c[i].world);
         contact.distance = p.distance;
         contact.hand_point = p.hand_point;

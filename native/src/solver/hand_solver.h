@@ -5,8 +5,9 @@
 // Delta_r, solve the palm (if it moves) and then each finger with candidates near it;
 // a finger with none takes the haptic angles as they are.
 //
-// Fast motion: within a sub-step no hand point moves more than Delta_r (half for the
-// palm, half for a finger), and every object sphere within Delta_r is a constraint, so
+// Fast motion: within a sub-step no hand point moves more than Delta_r (at most half
+// for the palm, the rest for a finger), and every object sphere within Delta_r is a
+// constraint, so
 // nothing the hand can reach in a sub-step is missed; passing through a sphere would
 // need a move of twice the hand's smallest radius, more than Delta_r. A move that
 // needs more sub-steps than allowed finishes on later steps.

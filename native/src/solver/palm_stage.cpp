@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "geometry/constraint.h"
+#include "geometry/contact_test.h"
 #include "solver/stage.h"
 
 namespace frusta {
@@ -74,6 +75,8 @@ int32_t PalmStage::linearise(QpRow* rows, double* target, double* weights) const
   // a point P carried by the palm moves by dt + dw x (P - palm): g's gradient g_P
   // becomes (g_P, (P - palm) x g_P)
   const vec3& palm = pose_.palm_position;
+  // a sphere further than any admissible trial can move is no row: exact, not a guess
+  const double reach = motion_cap_ + palm_motion(reach_, start_, placement(state_));
   int32_t count = 0;
   for (int body = 0; body < FRUSTA_HAND_SEGMENT_COUNT; ++body) {
     if (candidates_.count(body) == 0) continue;
@@ -81,6 +84,7 @@ int32_t PalmStage::linearise(QpRow* rows, double* target, double* weights) const
     const SegmentFrame frame = make_segment_frame(finger_segment(model_, pose_, f, s));
     const Candidate* c = candidates_.of(body);
     for (int32_t i = 0; i < candidates_.count(body); ++i) {
+      if (!may_touch(frame, c[i].world, reach)) continue;
       const Constraint g = contact_constraint(frame, c[i].world, params_.form);
       set_row(rows[count++], g.grad_proximal + g.grad_distal,
               glm::cross(frame.proximal - palm, g.grad_proximal) +
@@ -95,6 +99,7 @@ int32_t PalmStage::linearise(QpRow* rows, double* target, double* weights) const
   const Candidate* c = candidates_.of(kPalmBody);
   for (int32_t i = 0; i < candidates_.count(kPalmBody); ++i) {
     const Sphere hand = palm_sphere(model_, pose_, c[i].part);
+    if (!may_touch_sphere(hand, c[i].world, reach)) continue;
     const vec3 outward = hand.center - palm;
     const SphereConstraint g = sphere_constraint(
         hand, c[i].world, params_.form,
@@ -106,7 +111,7 @@ int32_t PalmStage::linearise(QpRow* rows, double* target, double* weights) const
 }
 
 double PalmStage::clearance(const HandPose& pose) const {
-  double gap = INFINITY;
+  double gap = 0.0;
   for (int body = 0; body < kBodyCount; ++body)
     gap = std::min(gap, body_clearance(model_, pose, candidates_, body));
   return gap;

@@ -76,20 +76,25 @@ struct ActiveSet {
 
 }  // namespace
 
-QpResult solve_projection_qp(int n, const double* weights, const double* target, const QpRow* rows,
+QpResult solve_projection_qp(int n, const double* weights, const double* target, QpRow* rows,
                              int32_t row_count, int32_t iteration_cap, double* x) {
   QpResult result;
-  // scale to y_j = sqrt(w_j) x_j so the objective is half the squared distance to the target
+  // scale to y_j = sqrt(w_j) x_j so the objective is half the squared distance to the
+  // target; with unit normals a row's slack is its distance, whatever its units
   Vec scale{}, y{};
   for (int j = 0; j < n; ++j) {
     scale[j] = 1.0 / std::sqrt(weights[j]);
     y[j] = target[j] / scale[j];
   }
-  auto scaled_normal = [&](const QpRow& row) {
-    Vec a{};
-    for (int j = 0; j < n; ++j) a[j] = row.a[j] * scale[j];
-    return a;
-  };
+  for (int32_t i = 0; i < row_count; ++i) {
+    QpRow& row = rows[i];
+    for (int j = 0; j < n; ++j) row.a[j] *= scale[j];
+    const double length = std::sqrt(dot(n, row.a, row.a));
+    row.active = !(length > 0.0);  // no normal: it holds or not whatever x is; ignore it
+    if (row.active) continue;
+    for (int j = 0; j < n; ++j) row.a[j] /= length;
+    row.b /= length;
+  }
   auto write_back = [&] {
     for (int j = 0; j < n; ++j) x[j] = y[j] * scale[j];
   };
@@ -97,24 +102,19 @@ QpResult solve_projection_qp(int n, const double* weights, const double* target,
   ActiveSet active;
   active.n = n;
   for (;;) {
-    // the most violated row, relative to its normal's length so units do not matter
+    // the most violated row
     int32_t p = -1;
     double worst = 0.0;
-    Vec np{};
     for (int32_t i = 0; i < row_count; ++i) {
-      bool is_active = false;
-      for (int k = 0; k < active.size; ++k) is_active |= active.row[k] == i;
-      if (is_active) continue;
-      const Vec a = scaled_normal(rows[i]);
-      const double length = std::sqrt(dot(n, a, a));
-      const double slack = (dot(n, a, y) - rows[i].b) / (length > 0.0 ? length : 1.0);
-      if (slack < worst - 1e-12 * (1.0 + std::fabs(rows[i].b) / (length > 0.0 ? length : 1.0))) {
+      if (rows[i].active) continue;
+      const double slack = dot(n, rows[i].a, y) - rows[i].b;
+      if (slack < worst - 1e-12 * (1.0 + std::fabs(rows[i].b))) {
         worst = slack;
         p = i;
-        np = a;
       }
     }
     if (p < 0) break;  // every row holds: optimal
+    const Vec& np = rows[p].a;
 
     double u_p = 0.0;
     for (;;) {
@@ -156,12 +156,14 @@ QpResult solve_projection_qp(int n, const double* weights, const double* target,
       for (int k = 0; k < active.size; ++k) active.u[k] -= t * r[k];
       u_p += t;
       if (t2 <= t1) {  // row p holds now: it joins the active set
+        rows[p].active = true;
         active.row[active.size] = p;
         active.normal[active.size] = np;
         active.u[active.size] = u_p;
         ++active.size;
         break;
       }
+      rows[active.row[drop]].active = false;
       active.drop(drop);  // a multiplier reached zero: that row lets go
     }
   }

@@ -16,6 +16,7 @@ constexpr int kMaxQpVariables = 6;
 struct QpRow {
   std::array<double, kMaxQpVariables> a{};
   double b = 0.0;
+  bool active = false;  // the solver's own mark
 };
 
 enum class QpStatus : int { kOptimal = 0, kInfeasible = 1, kIterationCap = 2 };
@@ -26,9 +27,11 @@ struct QpResult {
   int32_t active = 0;      // rows active at the solution
 };
 
-// x holds the solution on return (the best point reached when not optimal). Allocates
-// nothing; rows are read in order, so equal inputs give equal outputs.
-QpResult solve_projection_qp(int n, const double* weights, const double* target, const QpRow* rows,
+// x holds the solution on return (the best point reached when not optimal). The rows
+// are rescaled in place (scaled variables, unit normals) so each pass over them is a
+// plain dot product; a row with a zero normal is dropped. Allocates nothing; rows are
+// read in order, so equal inputs give equal outputs.
+QpResult solve_projection_qp(int n, const double* weights, const double* target, QpRow* rows,
                              int32_t row_count, int32_t iteration_cap, double* x);
 
 }  // namespace frusta

@@ -53,8 +53,9 @@ TEST(ProjectionQp, SolutionsMeetTheOptimalityConditions) {
   for (int trial = 0; trial < 20000; ++trial) {
     const Problem p = random_problem(rng);
     double x[kMaxQpVariables] = {};
-    const QpResult r = solve_projection_qp(p.n, p.weights, p.target, p.rows.data(),
-                                           static_cast<int32_t>(p.rows.size()), 200, x);
+    std::vector<QpRow> scratch = p.rows;  // the solver rescales its rows in place
+    const QpResult r = solve_projection_qp(p.n, p.weights, p.target, scratch.data(),
+                                           static_cast<int32_t>(scratch.size()), 200, x);
     ASSERT_EQ(r.status, QpStatus::kOptimal) << "trial " << trial;
     // primal feasibility
     for (const QpRow& row : p.rows) {
