@@ -23,18 +23,15 @@ double finger_motion(const HandReach& reach, int finger, const FingerAngles& fro
 FingerStage::FingerStage(const HandModel& model, const HandReach& reach, const SolverParams& params,
                          const CandidateSet& candidates, int finger, const FingerAngles& target,
                          double motion_cap, HandState& state, HandPose& pose)
-    : model_(model),
+    : StageEstimate(state, pose),
+      model_(model),
       reach_(reach),
       params_(params),
       candidates_(candidates),
       finger_(finger),
       target_(target),
       start_(angles(state)),
-      motion_cap_(motion_cap),
-      state_(state),
-      pose_(pose),
-      trial_state_(state),
-      trial_pose_(pose) {
+      motion_cap_(motion_cap) {
   // never worse than the start, which a rounding or a curvature may have left a hair deep
   floor_ = std::min(-params.penetration_tolerance, clearance(pose));
 }
@@ -114,21 +111,6 @@ double FingerStage::try_step(const double* d, double s) {
   trial_pose_ = pose_;
   finger_kinematics(model_, trial_state_, finger_, trial_pose_);
   return clearance(trial_pose_);
-}
-
-void FingerStage::commit() {
-  state_ = trial_state_;
-  pose_ = trial_pose_;
-}
-
-void FingerStage::save() {
-  saved_state_ = state_;
-  saved_pose_ = pose_;
-}
-
-void FingerStage::restore() {
-  state_ = saved_state_;
-  pose_ = saved_pose_;
 }
 
 }  // namespace frusta

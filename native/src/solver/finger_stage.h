@@ -9,6 +9,7 @@
 #include "solver/detection.h"
 #include "solver/qp.h"
 #include "solver/solver_params.h"
+#include "solver/stage.h"
 
 namespace frusta {
 
@@ -18,7 +19,7 @@ using FingerAngles = std::array<double, FRUSTA_JOINTS_PER_FINGER>;
 double finger_motion(const HandReach& reach, int finger, const FingerAngles& from,
                      const FingerAngles& to);
 
-class FingerStage {
+class FingerStage : public StageEstimate {
  public:
   // state/pose: the graphic hand, updated in place; target: this stage's goal angles;
   // motion_cap: how far (m) any point may move from where the stage starts.
@@ -29,12 +30,7 @@ class FingerStage {
   int dofs() const { return FRUSTA_JOINTS_PER_FINGER; }
   int32_t row_capacity() const;
   int32_t linearise(QpRow* rows, double* target, double* weights) const;
-  double floor() const { return floor_; }
-  bool capped() const { return capped_; }
   double try_step(const double* d, double s);
-  void commit();
-  void save();
-  void restore();
 
   // The smallest exact gap between this finger and its candidates.
   double clearance(const HandPose& pose) const;
@@ -50,12 +46,6 @@ class FingerStage {
   FingerAngles target_;
   FingerAngles start_;
   double motion_cap_;
-  double floor_;
-  bool capped_ = false;  // a trial may not sink below this gap
-  HandState& state_;
-  HandPose& pose_;
-  HandState trial_state_, saved_state_;
-  HandPose trial_pose_, saved_pose_;
 };
 
 }  // namespace frusta

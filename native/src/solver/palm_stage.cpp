@@ -49,17 +49,14 @@ void set_row(QpRow& row, const vec3& grad_translation, const vec3& grad_rotation
 PalmStage::PalmStage(const HandModel& model, const HandReach& reach, const SolverParams& params,
                      const CandidateSet& candidates, const PalmPlacement& target, double motion_cap,
                      HandState& state, HandPose& pose)
-    : model_(model),
+    : StageEstimate(state, pose),
+      model_(model),
       reach_(reach),
       params_(params),
       candidates_(candidates),
       target_(target),
       start_(placement(state)),
-      motion_cap_(motion_cap),
-      state_(state),
-      pose_(pose),
-      trial_state_(state),
-      trial_pose_(pose) {
+      motion_cap_(motion_cap) {
   floor_ = std::min(-params.penetration_tolerance, clearance(pose));
 }
 
@@ -127,21 +124,6 @@ double PalmStage::try_step(const double* d, double s) {
   }
   forward_kinematics(model_, trial_state_, trial_pose_);
   return clearance(trial_pose_);
-}
-
-void PalmStage::commit() {
-  state_ = trial_state_;
-  pose_ = trial_pose_;
-}
-
-void PalmStage::save() {
-  saved_state_ = state_;
-  saved_pose_ = pose_;
-}
-
-void PalmStage::restore() {
-  state_ = saved_state_;
-  pose_ = saved_pose_;
 }
 
 }  // namespace frusta

@@ -9,6 +9,7 @@
 #include "solver/detection.h"
 #include "solver/qp.h"
 #include "solver/solver_params.h"
+#include "solver/stage.h"
 
 namespace frusta {
 
@@ -21,7 +22,7 @@ double palm_motion(const HandReach& reach, const PalmPlacement& from, const Palm
 // The rotation vector taking `from` to `to` (world frame), the short way round.
 vec3 rotation_between(const glm::dquat& from, const glm::dquat& to);
 
-class PalmStage {
+class PalmStage : public StageEstimate {
  public:
   PalmStage(const HandModel& model, const HandReach& reach, const SolverParams& params,
             const CandidateSet& candidates, const PalmPlacement& target, double motion_cap,
@@ -30,12 +31,7 @@ class PalmStage {
   int dofs() const { return 6; }
   int32_t row_capacity() const { return static_cast<int32_t>(candidates_.candidates.size()); }
   int32_t linearise(QpRow* rows, double* target, double* weights) const;
-  double floor() const { return floor_; }
-  bool capped() const { return capped_; }
   double try_step(const double* d, double s);
-  void commit();
-  void save();
-  void restore();
 
   // The smallest exact gap between the whole hand and every candidate.
   double clearance(const HandPose& pose) const;
@@ -48,12 +44,6 @@ class PalmStage {
   PalmPlacement target_;
   PalmPlacement start_;
   double motion_cap_;
-  double floor_;
-  bool capped_ = false;
-  HandState& state_;
-  HandPose& pose_;
-  HandState trial_state_, saved_state_;
-  HandPose trial_pose_, saved_pose_;
 };
 
 }  // namespace frusta

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <vector>
 
+#include "hand/kinematics.h"
 #include "solver/qp.h"
 #include "solver/solver_params.h"
 
@@ -18,6 +19,39 @@ struct StageStats {
   int32_t qp_iterations = 0;  // active-set changes over all QPs
   bool infeasible = false;    // some QP had no point meeting every linearised row
   bool capped = false;        // a step was cut short by the stage's motion bound
+};
+
+// What every stage keeps besides its problem: the graphic hand it updates in place, a
+// trial and the last estimate that sank no deeper than its floor (the Problem half
+// of solve_stage below).
+class StageEstimate {
+ public:
+  StageEstimate(HandState& state, HandPose& pose)
+      : state_(state), pose_(pose), trial_state_(state), saved_state_(state), trial_pose_(pose),
+        saved_pose_(pose) {}
+
+  double floor() const { return floor_; }
+  bool capped() const { return capped_; }
+  void commit() {
+    state_ = trial_state_;
+    pose_ = trial_pose_;
+  }
+  void save() {
+    saved_state_ = state_;
+    saved_pose_ = pose_;
+  }
+  void restore() {
+    state_ = saved_state_;
+    pose_ = saved_pose_;
+  }
+
+ protected:
+  HandState& state_;
+  HandPose& pose_;
+  HandState trial_state_, saved_state_;
+  HandPose trial_pose_, saved_pose_;
+  double floor_ = 0.0;    // a trial may not sink below this gap
+  bool capped_ = false;   // some trial was refused for moving too far
 };
 
 // The bound of a linearised row, g + a.d >= bound. Rows ask for half the penetration

@@ -15,6 +15,7 @@
 #include "geometry/exact_distance.h"
 #include "geometry/segment_frame.h"
 #include "property_support.h"
+#include "geometry_fixtures.h"
 #include "scenes/random_cases.h"
 
 namespace frusta {
@@ -27,15 +28,7 @@ using scenes::Family;
 constexpr ConstraintForm kSquared = ConstraintForm::kSquared;
 constexpr ConstraintForm kDistance = ConstraintForm::kDistance;
 
-// E at the origin, D = (0.04, 0, 0), r2 = 3 mm, r1 = 12 mm: cos = 40/41, sin = 9/41.
-Segment cone_9_40_41() { return {{0.04, 0.0, 0.0}, {0.0, 0.0, 0.0}, 0.012, 0.003}; }
 Segment cylinder() { return {{0.04, 0.0, 0.0}, {0.0, 0.0, 0.0}, 0.01, 0.01}; }
-
-void expect_vec_near(const vec3& a, const vec3& b, double tol) {
-  EXPECT_NEAR(a.x, b.x, tol);
-  EXPECT_NEAR(a.y, b.y, tol);
-  EXPECT_NEAR(a.z, b.z, tol);
-}
 
 TEST(EndpointRule, SideWhileTheTouchingPointIsBetweenTheEnds) {
   const SegmentFrame f = make_segment_frame(cone_9_40_41());

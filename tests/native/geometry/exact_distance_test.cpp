@@ -12,6 +12,7 @@
 #include "brute_force_reference.h"
 #include "geometry/segment_frame.h"
 #include "property_support.h"
+#include "geometry_fixtures.h"
 #include "scenes/random_cases.h"
 
 namespace frusta {
@@ -21,16 +22,6 @@ using property::format;
 using scenes::Case;
 using scenes::Family;
 
-// E at the origin, D = (0.04, 0, 0), r2 = 3 mm, r1 = 12 mm: L : (r1 - r2) : side is
-// 40 : 9 : 41, so cos(alpha) = 40/41 and sin(alpha) = 9/41 exactly in decimal terms.
-Segment cone_9_40_41() { return {{0.04, 0.0, 0.0}, {0.0, 0.0, 0.0}, 0.012, 0.003}; }
-constexpr double kCos = 40.0 / 41.0, kSin = 9.0 / 41.0;
-
-void expect_vec_near(const vec3& a, const vec3& b, double tol) {
-  EXPECT_NEAR(a.x, b.x, tol);
-  EXPECT_NEAR(a.y, b.y, tol);
-  EXPECT_NEAR(a.z, b.z, tol);
-}
 
 TEST(ExactDistance, CylinderSideGapIsRadialDistanceMinusBothRadii) {
   const SegmentFrame f = make_segment_frame({{0.04, 0.0, 0.0}, {0.0, 0.0, 0.0}, 0.01, 0.01});

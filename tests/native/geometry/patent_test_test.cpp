@@ -15,6 +15,7 @@
 #include "geometry/segment_frame.h"
 #include "geometry/trapezoid_distance.h"
 #include "property_support.h"
+#include "geometry_fixtures.h"
 #include "scenes/random_cases.h"
 
 namespace frusta {
@@ -24,8 +25,6 @@ using property::format;
 using scenes::Case;
 using scenes::Family;
 
-// E at the origin, D = (0.04, 0, 0), r2 = 3 mm, r1 = 12 mm: cos = 40/41, sin = 9/41.
-Segment cone_9_40_41() { return {{0.04, 0.0, 0.0}, {0.0, 0.0, 0.0}, 0.012, 0.003}; }
 
 TEST(PatentTest, AxialFractionIsZeroAtTheTipAndOneAtTheBase) {
   const SegmentFrame f = make_segment_frame(cone_9_40_41());
