@@ -21,6 +21,8 @@
 #include <thread>
 #include <vector>
 
+#include "geometry/contact_test.h"
+#include "geometry/exact_distance.h"
 #include "hand/hand_model.h"
 #include "scenes/hand_scenarios.h"
 #include "solver/hand_solver.h"
@@ -47,8 +49,29 @@ struct Measured {
   int32_t max_contacts = 0, max_candidates = 0, max_substeps = 0;
   double qp_iterations = 0, iterations = 0, finger_solves = 0;
   double max_penetration = 0.0;  // metres
+  double max_standoff = 0.0;     // metres a touching body stopped short of the leaves
   bool lagged = false, infeasible = false;
 };
+
+// How far short of the leaves the touching bodies stopped (the error of standing in
+// for leaves by larger nodes): per body in contact, its exact gap to the nearest leaf.
+double max_standoff(const HandModel& model, const HandSolver& solver, const std::vector<SolverObject>& objects) {
+  double worst = 0.0;
+  bool seen[kBodyCount] = {};
+  for (const SolverContact& c : solver.contacts()) {
+    if (seen[c.body] || c.body == kPalmBody) continue;
+    seen[c.body] = true;
+    const SegmentFrame frame = make_segment_frame(
+        finger_segment(model, solver.graphic_pose(), c.body / FRUSTA_SEGMENTS_PER_FINGER, c.body % FRUSTA_SEGMENTS_PER_FINGER));
+    double nearest = INFINITY;
+    for (const SolverObject& o : objects)
+      for (const Sphere& leaf : o.tree->leaves)
+        if (may_touch(frame, {o.pose.rotation * leaf.center + o.pose.position, leaf.radius}, nearest))
+          nearest = std::min(nearest, exact_distance(frame, {o.pose.rotation * leaf.center + o.pose.position, leaf.radius}));
+    worst = std::max(worst, nearest);
+  }
+  return worst;
+}
 
 // The scripted part, then `hold` held steps; penetration checked every `check_every`.
 Measured measure(const scenes::HandScenario& s, const SolverParams& params, int32_t hold, int32_t check_every) {
@@ -76,6 +99,7 @@ Measured measure(const scenes::HandScenario& s, const SolverParams& params, int3
     m.finger_solves += stats.finger_solves;
     m.lagged |= stats.lagging;
     m.infeasible |= stats.infeasible;
+    if (t == s.steps - 1) m.max_standoff = max_standoff(model, solver, s.objects);
     if (t % check_every == 0 || t == total - 1)
       m.max_penetration = std::max(m.max_penetration,
                                    scenes::deepest_penetration(model, solver.graphic_pose(), s.objects));
@@ -89,11 +113,11 @@ void print_measured(const Measured& m) {
               "\"max_contacts\": %d, \"max_candidates\": %d, \"max_substeps\": %d, "
               "\"qp_iterations_per_step\": %.2f, \"linearisations_per_step\": %.2f, "
               "\"finger_solves_per_step\": %.2f, \"lagged\": %s, \"infeasible_qp\": %s, "
-              "\"max_penetration_mm\": %.6f",
+              "\"max_penetration_mm\": %.6f, \"max_standoff_mm\": %.4f",
               m.steps, m.failed_steps, percentile(m.step_us, 0.5), percentile(m.step_us, 0.99),
               percentile(m.step_us, 1.0), m.max_contacts, m.max_candidates, m.max_substeps,
               m.qp_iterations / n, m.iterations / n, m.finger_solves / n, m.lagged ? "true" : "false",
-              m.infeasible ? "true" : "false", m.max_penetration * 1e3);
+              m.infeasible ? "true" : "false", m.max_penetration * 1e3, m.max_standoff * 1e3);
 }
 
 // One finger's solve is microseconds: a hand-off to another thread and back is the
@@ -219,9 +243,18 @@ int main(int argc, char** argv) {
         std::printf(", \"mujoco\": {\"error\": \"%s\"}", peer.error.c_str());
     }
 #endif
-    std::printf("}%s\n", i + 1 < std::size(counts) ? "," : "");
+    std::printf("},\n");
+    if (counts[i] >= 10000)  // the same grasp with nodes of <= 0.5 mm standing in for their leaves
+      for (double radius : {0.0005}) {
+        SolverParams p = defaults;
+        p.node_radius = radius;
+        const Measured cut = measure(s, p, 200, counts[i] >= 100000 ? 10 : 1);
+        std::printf("  {\"leaves\": %d, \"node_radius_mm\": %g, ", counts[i], radius * 1e3);
+        print_measured(cut);
+        std::printf("},\n");
+      }
   }
-  std::printf("],\n");
+  std::printf("  {\"end\": true}\n],\n");
   }
 
   // the knobs, one at a time, on the 10^4-leaf grasp
@@ -248,6 +281,11 @@ int main(int argc, char** argv) {
     SolverParams p = defaults;
     p.tree_level = level;
     knobs.push_back({"tree_level", static_cast<double>(level), p});
+  }
+  for (double radius : {0.00025, 0.0005, 0.001}) {
+    SolverParams p = defaults;
+    p.node_radius = radius;
+    knobs.push_back({"node_radius_mm", radius * 1e3, p});
   }
   for (size_t i = 0; i < knobs.size(); ++i) {
     const Measured m = measure(grasp, knobs[i].params, 200, 1);

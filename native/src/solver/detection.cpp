@@ -87,7 +87,7 @@ double bound_clearance(const HandReach& reach, const HandPose& pose, const Solve
 
 void detect_candidates(const HandModel& model, const HandReach& reach, const HandPose& pose,
                        const SolverObject* objects, int32_t object_count, double margin,
-                       int32_t max_level, CandidateSet& out) {
+                       TreeCut cut, CandidateSet& out) {
   out.candidates.clear();
   out.tree_nodes_visited = 0;
   out.near_objects.clear();
@@ -120,7 +120,7 @@ void detect_candidates(const HandModel& model, const HandReach& reach, const Han
         const SegmentFrame frame =
             make_segment_frame(to_object_frame(obj.pose, finger_segment(model, pose, f, s)));
         const int32_t count = query_into(out.hits, [&](TreeHit* hits, int32_t capacity) {
-          const TreeQueryStats stats = query_segment(*obj.tree, frame, margin, max_level, hits, capacity);
+          const TreeQueryStats stats = query_segment(*obj.tree, frame, margin, cut, hits, capacity);
           out.tree_nodes_visited += stats.visited;
           return stats;
         });
@@ -136,7 +136,7 @@ void detect_candidates(const HandModel& model, const HandReach& reach, const Han
       if (!bounds_meet(world, object_bound(obj), margin)) continue;
       const Sphere local = to_object_frame(obj.pose, world);
       const int32_t count = query_into(out.hits, [&](TreeHit* hits, int32_t capacity) {
-        const TreeQueryStats stats = query_sphere(*obj.tree, local, margin, max_level, hits, capacity);
+        const TreeQueryStats stats = query_sphere(*obj.tree, local, margin, cut, hits, capacity);
         out.tree_nodes_visited += stats.visited;
         return stats;
       });

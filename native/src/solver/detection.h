@@ -59,11 +59,11 @@ HandReach hand_reach(const HandModel& model);
 Sphere object_bound(const SolverObject& object);
 
 // Fill `out` with every leaf within `margin` of the hand at `pose`, or with the nodes
-// at max_level standing in for theirs (-1: leaves only). The vector keeps its capacity
+// where the cut stops standing in for theirs. The vector keeps its capacity
 // between calls, so a steady scene allocates nothing.
 void detect_candidates(const HandModel& model, const HandReach& reach, const HandPose& pose,
                        const SolverObject* objects, int32_t object_count, double margin,
-                       int32_t max_level, CandidateSet& out);
+                       TreeCut cut, CandidateSet& out);
 
 // How deep one body of the hand at `pose` sinks into its candidates, as a negative
 // exact gap; 0 when it touches none (callers compare it with thresholds <= 0 only, so

@@ -103,6 +103,8 @@ frusta_result HandSolver::check_params(const SolverParams& p, const HandModel& m
                 p.contact_distance);
   if (!std::isfinite(p.convergence) || !(p.convergence > 0.0))
     return fail(FRUSTA_ERROR_OUT_OF_RANGE, "convergence is %g, must be > 0", p.convergence);
+  if (!std::isfinite(p.node_radius) || !(p.node_radius >= 0.0))
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "node_radius is %g m, must be >= 0", p.node_radius);
   if (p.tree_level < -1)
     return fail(FRUSTA_ERROR_OUT_OF_RANGE, "tree_level is %d, must be -1 (leaves) or >= 0",
                 p.tree_level);
@@ -166,7 +168,7 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
   }
 
   detect_candidates(model_, reach_, pose_, objects, object_count, params_.prediction_margin,
-                    params_.tree_level, candidates_);
+                    TreeCut(params_.tree_level, params_.node_radius), candidates_);
   stats.candidates = std::max(stats.candidates, static_cast<int32_t>(candidates_.candidates.size()));
   stats.tree_nodes_visited += candidates_.tree_nodes_visited;
   const double cap = 0.5 * params_.prediction_margin;

@@ -41,15 +41,15 @@ struct BufferHits {
 }  // namespace
 
 TreeQueryStats query_segment(const SphereTree& tree, const SegmentFrame& frame, double margin,
-                             int32_t max_level, TreeHit* hits, int32_t capacity) {
-  return walk_tree(tree, [&](const Sphere& s) { return may_touch(frame, s, margin); }, max_level,
+                             TreeCut cut, TreeHit* hits, int32_t capacity) {
+  return walk_tree(tree, [&](const Sphere& s) { return may_touch(frame, s, margin); }, cut,
                    BufferHits{hits, capacity});
 }
 
 TreeQueryStats query_sphere(const SphereTree& tree, const Sphere& sphere, double margin,
-                            int32_t max_level, TreeHit* hits, int32_t capacity) {
+                            TreeCut cut, TreeHit* hits, int32_t capacity) {
   return walk_tree(tree, [&](const Sphere& s) { return may_touch_sphere(sphere, s, margin); },
-                   max_level, BufferHits{hits, capacity});
+                   cut, BufferHits{hits, capacity});
 }
 
 double distance_to_leaves(const SphereTree& tree, const vec3& point) {

@@ -38,7 +38,17 @@ struct SphereTree {
 // level allowed, a leaf (leaf >= 0) or an inner node standing in for its subtree.
 struct TreeHit {
   int32_t node;
-  int32_t leaf;  // -1 when the hit is an inner node cut off by max_level
+  int32_t leaf;  // -1 when the hit is an inner node cut off by the query's TreeCut
+};
+
+// Where a walk stops descending: at a leaf, at max_level (-1: no level), or at an inner
+// node no larger than max_radius (0: none), which then stands in for its subtree. The
+// radius cut is the one that bounds the error: a node sphere stands out of its leaves
+// by less than its radius. A level converts to a cut, so callers may pass one.
+struct TreeCut {
+  TreeCut(int32_t level = -1, double radius = 0.0) : max_level(level), max_radius(radius) {}  // NOLINT
+  int32_t max_level;
+  double max_radius;
 };
 
 struct TreeQueryStats {
@@ -52,13 +62,13 @@ struct RigidPose {
   glm::dmat3 rotation{1.0};
 };
 
-// Depth-first walk reporting, in node order, every node the predicate accepts at
-// max_level (-1: leaves only) or at a leaf, to emit(TreeHit). Leaves are tested as
+// Depth-first walk reporting, in node order, every node the predicate accepts where
+// the cut stops the walk (or at a leaf), to emit(TreeHit). Leaves are tested as
 // their exact spheres, inner nodes as their outward-rounded bounds, so the result
 // equals a scan of every leaf. The stack is bounded by the tree limits and lives on
 // the thread's stack: the walk itself allocates nothing.
 template <class Touches, class Emit>
-TreeQueryStats walk_tree(const SphereTree& tree, Touches touches, int32_t max_level, Emit emit) {
+TreeQueryStats walk_tree(const SphereTree& tree, Touches touches, TreeCut cut, Emit emit) {
   TreeQueryStats stats;
   if (tree.empty()) return stats;
   struct Entry {
@@ -74,7 +84,7 @@ TreeQueryStats walk_tree(const SphereTree& tree, Touches touches, int32_t max_le
     const bool leaf = n.count == 0;
     if (!touches(leaf ? tree.leaves[static_cast<size_t>(n.first)] : tree.node_sphere(e.node)))
       continue;
-    if (leaf || e.level == max_level) {
+    if (leaf || e.level == cut.max_level || (cut.max_radius > 0.0 && n.radius <= cut.max_radius)) {
       emit(TreeHit{e.node, leaf ? n.first : -1});
       ++stats.hits;
       continue;
@@ -90,13 +100,13 @@ Segment to_object_frame(const RigidPose& pose, const Segment& world);
 Sphere to_object_frame(const RigidPose& pose, const Sphere& world);
 
 // All nodes within `margin` of the segment solid (frame in the object's frame), down
-// to max_level (-1: leaves). Writes at most capacity hits; allocates nothing.
+// to the cut (-1: leaves). Writes at most capacity hits; allocates nothing.
 TreeQueryStats query_segment(const SphereTree& tree, const SegmentFrame& frame, double margin,
-                             int32_t max_level, TreeHit* hits, int32_t capacity);
+                             TreeCut cut, TreeHit* hits, int32_t capacity);
 
 // The same for a sphere (e.g. a palm sphere).
 TreeQueryStats query_sphere(const SphereTree& tree, const Sphere& sphere, double margin,
-                            int32_t max_level, TreeHit* hits, int32_t capacity);
+                            TreeCut cut, TreeHit* hits, int32_t capacity);
 
 // Signed distance from a point to the union of the leaves (negative inside one):
 // branch and bound over the tree, for measuring how well leaves fit a surface.
