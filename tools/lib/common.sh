@@ -25,7 +25,8 @@ ensure_packages() {
   DEBIAN_FRONTEND=noninteractive $line -qq >/dev/null
 }
 
-# build_tree DIR BUILD_TYPE [extra cmake args...]: configure (once) and build
+# build_tree DIR BUILD_TYPE [extra cmake args...]: configure (once) and build (only
+# $FRUSTA_BUILD_TARGETS when set)
 build_tree() {
   local dir="$1" type="$2"
   shift 2
@@ -33,5 +34,7 @@ build_tree() {
   [ "${CI:-}" = "true" ] && werror=ON
   cmake -S "$ROOT" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE="$type" \
         -DFRUSTA_WARNINGS_AS_ERRORS="$werror" "$@" >/dev/null
-  cmake --build "$dir" --parallel "$(nproc)"
+  local targets=()
+  [ -n "${FRUSTA_BUILD_TARGETS:-}" ] && targets=(--target ${FRUSTA_BUILD_TARGETS})
+  cmake --build "$dir" --parallel "$(nproc)" "${targets[@]}"
 }
