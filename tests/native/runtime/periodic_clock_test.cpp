@@ -19,10 +19,10 @@ TEST(PeriodicClock, DeadlinesAreAbsoluteSoLatenessDoesNotAccumulate) {
   for (int i = 0; i < 20; ++i) {
     const PeriodicClock::Clock::duration late = clock.wait();
     EXPECT_GE(late.count(), 0) << "never wakes early";
-    EXPECT_GE(PeriodicClock::Clock::now(), first + i * milliseconds(1));
   }
-  EXPECT_EQ(clock.deadline(), first + 20 * milliseconds(1)) << "each deadline one period after the last";
-  EXPECT_EQ(clock.missed(), 0);
+  // on the grid the first deadline set, whatever the lateness; a loaded machine may
+  // have skipped whole ticks, which the clock counts
+  EXPECT_EQ(clock.deadline(), first + (20 + clock.missed()) * milliseconds(1));
 }
 
 TEST(PeriodicClock, AStallSkipsTheLostTicksInsteadOfBursting) {
