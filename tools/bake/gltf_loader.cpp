@@ -85,8 +85,8 @@ class Reader {
     if (pa.type != TINYGLTF_TYPE_VEC3 || pa.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT)
       return bad("mesh %d primitive %d: POSITION must be float VEC3 (type %d, component %d)", mesh,
                  k, pa.type, pa.componentType);
-    const unsigned char* data;
-    size_t stride;
+    const unsigned char* data = nullptr;
+    size_t stride = 0;
     if (frusta_result r = view(position->second, "POSITION", &data, &stride, 12)) return r;
     const uint32_t base = static_cast<uint32_t>(out_.mesh.vertices.size());
     for (size_t i = 0; i < pa.count; ++i) {
