@@ -119,10 +119,11 @@ std::string grasp_xml(const HandModel& model, const std::vector<Sphere>& leaves,
       << "<position kp=\"" << servo.kp << "\"/>\n"
       // fingers collide only with the ball: finger-finger and leaf-leaf pairs fail
       // MuJoCo's contype/conaffinity test
-      << "<geom contype=\"1\" conaffinity=\"0\"/>\n"
-         "<default class=\"leaf\"><geom type=\"sphere\" contype=\"0\" conaffinity=\"1\"";
+      << "<geom contype=\"1\" conaffinity=\"0\"";
+  // on every geom: MuJoCo mixes the two geoms' solref of a contact
   if (contact_time_constant > 0.0) out << " solref=\"" << contact_time_constant << " 1\"";
-  out << "/></default>\n"
+  out << "/>\n"
+         "<default class=\"leaf\"><geom type=\"sphere\" contype=\"0\" conaffinity=\"1\"/></default>\n"
          "</default>\n"
          "<worldbody>\n";
   if (!leaves.empty()) {
