@@ -134,6 +134,7 @@ frusta_result HandSolver::step(const HandState& haptic, const SolverObject* obje
     forward_kinematics(model_, graphic_, pose_);
     started_ = true;
   }
+  settled_.fill(false);
   for (int32_t sub = 0; sub < params_.max_substeps; ++sub) {
     bool moved = false;
     const bool reached = substep(target, objects, object_count, stats, moved);
@@ -202,9 +203,14 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
   // the fingers may use whatever of Delta_r the palm left
   const double finger_cap =
       params_.prediction_margin - palm_motion(reach_, palm_from, placement(graphic_));
+  // a finger that settled in an earlier sub-step on a palm that has not moved since
+  // would solve the same problem again: it is skipped
+  const bool palm_moved = palm_motion(reach_, palm_from, placement(graphic_)) > 0.0;
   for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
+    if (settled_[f] && !palm_moved) continue;
     const FingerAngles from = finger_angles(graphic_, f), to = finger_angles(target, f);
     const double move = finger_motion(reach_, f, from, to);
+    settled_[f] = true;
     if (!(move > 0.0)) continue;
     if (candidates_.finger_count(f) == 0) {  // nothing near: the haptic angles as they are
       FingerAngles goal = to;
@@ -212,13 +218,16 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
         for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j)
           goal[j] = from[j] + (finger_cap / move) * (to[j] - from[j]);
         reached = false;
+        settled_[f] = false;
       }
       set_finger_angles(graphic_, f, goal);
       continue;
     }
     forward_kinematics(model_, graphic_, pose_);
     FingerStage stage(model_, reach_, params_, candidates_, f, to, finger_cap, graphic_, pose_);
-    add(solve_stage(stage, params_, rows_));
+    const StageStats finger_stats = solve_stage(stage, params_, rows_);
+    add(finger_stats);
+    settled_[f] = !finger_stats.capped;
     ++stats.finger_solves;
   }
   forward_kinematics(model_, graphic_, pose_);

@@ -13,6 +13,7 @@
 // needs more sub-steps than allowed finishes on later steps.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -82,6 +83,7 @@ class HandSolver {
   HandState graphic_;
   HandPose pose_;
   CandidateSet candidates_;
+  std::array<bool, FRUSTA_FINGER_COUNT> settled_{};  // per sub-step: reached or stopped
   std::vector<QpRow> rows_;
   std::vector<SolverContact> contacts_;
 };
