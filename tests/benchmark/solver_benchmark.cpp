@@ -8,7 +8,7 @@
 //  - the thread question: a finger's solve against a thread hand-off, measured;
 //  - with FRUSTA_WITH_MUJOCO, the same grasp in MuJoCo, side by side.
 // Prints one JSON document. Step times exclude the penetration checks. Arguments name
-// the sections to run (scenarios forms leaves knobs threads; default all); flags such
+// the sections to run (scenarios free forms leaves knobs threads; default all); flags such
 // as tools/bench's --benchmark_format are ignored.
 #include <algorithm>
 #include <atomic>
@@ -200,6 +200,28 @@ int main(int argc, char** argv) {
     std::printf("}%s\n", i + 1 < names.size() ? "," : "");
   }
   std::printf("],\n");
+  }
+
+  // nothing near: a hand waving among 20 objects half a metre away (the cost of a scene
+  // the hand is not touching: bounds only, no detection, no solve)
+  if (wanted("free")) {
+    scenes::HandScenario s;
+    for (int k = 0; k < 20; ++k)
+      s.add(scenes::sample_tree(k % 2 ? "mug" : "ball"),
+            {vec3(0.5 * std::cos(0.314 * k), 0.5 * std::sin(0.314 * k), 0.1 * (k % 3)), glm::dmat3(1.0)});
+    HandState open = scenes::open_hand(), closed = open;
+    for (int f = 0; f < 5; ++f) scenes::set_flexion(closed, f, 1.2, 1.2, 1.0);
+    s.steps = 1000;
+    s.haptic = [open, closed](int32_t t) {
+      HandState h = scenes::mix(open, closed, 0.5 + 0.5 * std::sin(0.02 * t));
+      h.palm_position = vec3(0.05 * std::sin(0.01 * t), 0.05 * std::cos(0.013 * t), 0.0);
+      return h;
+    };
+    s.held = closed;
+    const Measured m = measure(s, defaults, 0, 50);
+    std::printf("\"free_space_20_objects\": {");
+    print_measured(m);
+    std::printf("},\n");
   }
 
   // the two constraint forms on the same scripts
