@@ -19,6 +19,11 @@ class TripleBuffer {
   TripleBuffer(const TripleBuffer&) = delete;
   TripleBuffer& operator=(const TripleBuffer&) = delete;
 
+  // Only while neither side runs (set-up): every slot becomes value.
+  void reset(const T& value) {
+    for (T& slot : slots_) slot = value;
+  }
+
   // Writer thread only: the slot to fill, then publish() it.
   T& write_slot() { return slots_[write_]; }
   void publish() {

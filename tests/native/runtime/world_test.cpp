@@ -1,0 +1,200 @@
+// SPDX-License-Identifier: MIT
+// The world as a host sees it: commands at step boundaries, the hands it solves equal
+// to standalone solvers, trees held while used, nothing allocated in a steady step, and
+// a reader on another thread that never sees a torn snapshot.
+#include "runtime/world.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <new>
+#include <thread>
+
+#include "hand/hand_model.h"
+#include "scenes/hand_scenarios.h"
+
+// Every allocation in this test binary is counted, so a test can require none.
+static std::atomic<int64_t> g_allocations{0};
+void* operator new(std::size_t size) {
+  g_allocations.fetch_add(1, std::memory_order_relaxed);
+  if (void* p = std::malloc(size ? size : 1)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+namespace frusta {
+namespace {
+
+HandModel right_hand() { return make_hand_model(frusta_default_hand_def()); }
+
+// made here rather than loaded: the ThreadSanitizer build has no baked samples
+std::shared_ptr<const TreeFile> ball_tree() {
+  static const std::shared_ptr<const TreeFile> tree = scenes::ball_shell(500, 0.04);
+  return tree;
+}
+
+const RigidPose kBallPose{vec3(0.10, 0.0, -0.058), glm::dmat3(1.0)};
+
+TEST(World, SolvesEachHandExactlyAsAStandaloneSolver) {
+  const scenes::HandScenario grasp = scenes::ball_grasp(ball_tree());
+  World world(WorldDef{});
+  const int32_t hand = world.add_hand(right_hand());
+  ObjectHandle ball;
+  ASSERT_EQ(world.add_object(grasp.trees[0], kBallPose, &ball), FRUSTA_OK);
+  HandSolver alone(right_hand(), SolverParams{});
+  for (int32_t t = 0; t < grasp.steps; ++t) {
+    world.set_haptic(hand, grasp.haptic(t));
+    world.step();
+    ASSERT_EQ(alone.step(grasp.haptic(t), grasp.objects.data(), 1, nullptr), FRUSTA_OK);
+  }
+  const WorldSnapshot& s = world.read();
+  EXPECT_EQ(s.step, static_cast<uint64_t>(grasp.steps));
+  for (size_t j = 0; j < alone.graphic().angles.size(); ++j)
+    EXPECT_EQ(s.hands[0].graphic.angles[j], alone.graphic().angles[j]) << "joint " << j;
+  ASSERT_EQ(s.hands[0].contact_count, static_cast<int32_t>(alone.contacts().size()));
+  for (int32_t i = 0; i < s.hands[0].contact_count; ++i)
+    EXPECT_EQ(s.hands[0].contacts[static_cast<size_t>(i)].object, ball.slot) << "contacts name the slot";
+}
+
+TEST(World, CommandsTakeEffectAtTheNextStepAndStaleHandlesAreRefused) {
+  WorldDef def;
+  def.max_objects = 3;
+  World world(def);
+  const int32_t hand = world.add_hand(right_hand());
+  HandState closed = scenes::open_hand();
+  for (int f = 1; f < 5; ++f) scenes::set_flexion(closed, f, 1.6, 1.6, 1.6);
+  world.set_haptic(hand, closed);
+  ObjectHandle ball;
+  ASSERT_EQ(world.add_object(ball_tree(), kBallPose, &ball), FRUSTA_OK);
+  EXPECT_EQ(world.read().step, 0u) << "nothing happens before a step";
+  // the first step places the hand; the fingers close onto the ball over the next ones
+  for (int i = 0; i < 50; ++i) world.step();
+  EXPECT_GT(world.read().hands[0].contact_count, 0);
+  ASSERT_EQ(world.remove_object(ball), FRUSTA_OK);
+  EXPECT_EQ(world.remove_object(ball), FRUSTA_ERROR_STALE_ID) << "removed twice";
+  EXPECT_EQ(world.set_object_pose(ball, kBallPose), FRUSTA_ERROR_STALE_ID);
+  world.step();
+  const WorldSnapshot& s = world.read();
+  EXPECT_EQ(s.hands[0].contact_count, 0) << "the ball is gone";
+  // with nothing left, the hand closes to its haptic angles (clamped) at once
+  HandState clamped = closed;
+  clamp_to_limits(right_hand(), clamped);
+  for (size_t j = 0; j < clamped.angles.size(); ++j)
+    EXPECT_EQ(s.hands[0].graphic.angles[j], clamped.angles[j]);
+  // capacity: three slots
+  ObjectHandle o[3];
+  for (ObjectHandle& h : o) ASSERT_EQ(world.add_object(ball_tree(), {vec3(1.0), glm::dmat3(1.0)}, &h), FRUSTA_OK);
+  ObjectHandle extra;
+  EXPECT_EQ(world.add_object(ball_tree(), {vec3(2.0), glm::dmat3(1.0)}, &extra), FRUSTA_ERROR_CAPACITY);
+  EXPECT_NE(o[0].generation, 0u);
+}
+
+TEST(World, HoldsATreeUntilAStepHasLetGoOfIt) {
+  World world(WorldDef{});
+  world.add_hand(right_hand());
+  std::weak_ptr<const TreeFile> watch;
+  ObjectHandle box;
+  {
+    auto tree = std::make_shared<TreeFile>(*ball_tree());
+    watch = tree;
+    ASSERT_EQ(world.add_object(std::move(tree), {vec3(0.5, 0, 0), glm::dmat3(1.0)}, &box), FRUSTA_OK);
+  }
+  world.step();
+  EXPECT_FALSE(watch.expired()) << "the world holds it";
+  ASSERT_EQ(world.remove_object(box), FRUSTA_OK);
+  world.read();
+  EXPECT_FALSE(watch.expired()) << "no step has applied the removal: the stepping thread may still use it";
+  world.step();
+  world.read();  // the host releases retired trees
+  EXPECT_TRUE(watch.expired());
+}
+
+TEST(World, BadHapticInputIsCountedAndLeavesTheGraphicHand) {
+  World world(WorldDef{});
+  const int32_t hand = world.add_hand(right_hand());
+  HandState h = scenes::open_hand();
+  h.angles[5] = 0.3;
+  world.set_haptic(hand, h);
+  world.step();
+  const HandState before = world.read().hands[0].graphic;
+  h.angles[5] = std::numeric_limits<double>::quiet_NaN();
+  world.set_haptic(hand, h);
+  world.step();
+  const WorldSnapshot& s = world.read();
+  EXPECT_EQ(s.rejected_inputs, 1);
+  EXPECT_EQ(s.hands[0].graphic.angles[5], before.angles[5]);
+}
+
+TEST(World, TwoHandsAndTwentyObjectsStepWithoutAllocating) {
+  World world(WorldDef{});
+  const int32_t right = world.add_hand(right_hand());
+  frusta_hand_def left_def = frusta_default_hand_def();
+  left_def.side = FRUSTA_HAND_LEFT;
+  const int32_t left = world.add_hand(make_hand_model(left_def));
+  ObjectHandle handles[20];
+  for (int k = 0; k < 20; ++k) {
+    const vec3 at = k == 0 ? kBallPose.position : vec3(0.6 * std::cos(0.3 * k), 0.6 * std::sin(0.3 * k), 0.0);
+    ASSERT_EQ(world.add_object(ball_tree(), {at, glm::dmat3(1.0)}, &handles[k]),
+              FRUSTA_OK);
+  }
+  HandState closed = scenes::open_hand();
+  for (int f = 0; f < 5; ++f) scenes::set_flexion(closed, f, 1.6, 1.6, 1.6);
+  HandState far = scenes::open_hand(vec3(0.0, 0.3, 0.0));
+  for (int t = 0; t < 300; ++t) {  // warm up: the buffers reach their high-water marks
+    world.set_haptic(right, scenes::mix(scenes::open_hand(), closed, t / 250.0));
+    world.set_haptic(left, far);
+    world.step();
+  }
+  const int64_t before = g_allocations.load();
+  for (int t = 0; t < 10000; ++t) {
+    world.set_haptic(right, closed);
+    world.set_haptic(left, far);
+    world.step();
+  }
+  EXPECT_EQ(g_allocations.load() - before, 0) << "allocations in 10,000 steady steps";
+  const WorldSnapshot& s = world.read();
+  EXPECT_GT(s.hands[0].contact_count, 0) << "the right hand holds the ball";
+  EXPECT_EQ(s.hands[1].contact_count, 0);
+  EXPECT_GT(s.step_us_p50, 0.0);
+}
+
+TEST(World, AReaderOnAnotherThreadNeverSeesATornSnapshot) {
+  World world(WorldDef{});
+  const int32_t hand = world.add_hand(right_hand());
+  ObjectHandle ball;
+  ASSERT_EQ(world.add_object(ball_tree(), kBallPose, &ball), FRUSTA_OK);
+  std::atomic<bool> done{false};
+  const scenes::HandScenario grasp = scenes::ball_grasp(ball_tree());
+  std::thread stepper([&] {
+    for (int32_t t = 0; !done.load(std::memory_order_relaxed); ++t) {
+      world.set_haptic(hand, grasp.haptic(t % grasp.steps));
+      world.step();
+    }
+  });
+  uint64_t last = 0, reads = 0, bad = 0, distinct = 0;
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::minutes(1);
+  while ((reads < 1000000 || distinct < 100) && std::chrono::steady_clock::now() < give_up) {
+    const WorldSnapshot& s = world.read();
+    ++reads;
+    bool ok = s.step >= last && s.hands.size() == 1 && s.hands[0].contact_count >= 0;
+    for (int32_t i = 0; ok && i < std::min<int32_t>(s.hands[0].contact_count, 256); ++i)
+      ok = s.hands[0].contacts[static_cast<size_t>(i)].object == ball.slot &&
+           std::isfinite(s.hands[0].contacts[static_cast<size_t>(i)].distance);
+    for (double a : s.hands[0].graphic.angles) ok &= std::isfinite(a);
+    bad += !ok;
+    distinct += s.step != last;
+    last = s.step;
+  }
+  done = true;
+  stepper.join();
+  EXPECT_EQ(bad, 0u);
+  EXPECT_GE(reads, 1000000u);
+  EXPECT_GE(distinct, 100u);
+}
+
+}  // namespace
+}  // namespace frusta
