@@ -69,7 +69,8 @@ typedef enum frusta_result {
   FRUSTA_ERROR_INTERNAL = 11,        /* a bug: please report frusta_last_error() */
   FRUSTA_ERROR_IO = 12,              /* a file could not be opened, read or written */
   FRUSTA_ERROR_FILE_FORMAT = 13,     /* not a Frusta file, or a format version we cannot read */
-  FRUSTA_ERROR_CORRUPT_FILE = 14     /* a Frusta file whose contents fail validation */
+  FRUSTA_ERROR_CORRUPT_FILE = 14,    /* a Frusta file whose contents fail validation */
+  FRUSTA_ERROR_WRONG_STATE = 15      /* not now: e.g. stepping a world its own thread runs */
 } frusta_result;
 
 /** Message of the last failed call on this thread ("" after none). Valid until the

@@ -26,6 +26,7 @@ FRUSTA_API const char* frusta_result_name(int32_t result) {
     case FRUSTA_ERROR_IO: return "FRUSTA_ERROR_IO";
     case FRUSTA_ERROR_FILE_FORMAT: return "FRUSTA_ERROR_FILE_FORMAT";
     case FRUSTA_ERROR_CORRUPT_FILE: return "FRUSTA_ERROR_CORRUPT_FILE";
+    case FRUSTA_ERROR_WRONG_STATE: return "FRUSTA_ERROR_WRONG_STATE";
     default: return "FRUSTA_ERROR_UNKNOWN";
   }
 }

@@ -5,6 +5,7 @@
 #include <chrono>
 
 #include "core/error.h"
+#include "runtime/periodic_clock.h"
 
 namespace frusta {
 
@@ -125,7 +126,44 @@ void World::apply_commands() {
   applied_.fetch_add(applied, std::memory_order_release);
 }
 
-void World::step() {
+World::~World() { stop(); }
+
+frusta_result World::step() {
+  if (running())
+    return fail(FRUSTA_ERROR_WRONG_STATE, "the world's own thread is stepping it: stop() it first");
+  step_once();
+  return FRUSTA_OK;
+}
+
+frusta_result World::start(double rate_hz, double spin_us) {
+  if (!(rate_hz >= 1.0 && rate_hz <= 100000.0))
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "rate is %g Hz, must be 1..100000", rate_hz);
+  if (!(spin_us >= 0.0 && spin_us <= 1e6 / rate_hz))
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "spin is %g us, must be 0..one period", spin_us);
+  if (running()) return fail(FRUSTA_ERROR_WRONG_STATE, "the world's thread is already running");
+  running_.store(true, std::memory_order_release);
+  thread_ = std::thread([this, rate_hz, spin_us] { run(rate_hz, spin_us); });
+  return FRUSTA_OK;
+}
+
+void World::stop() {
+  running_.store(false, std::memory_order_release);
+  if (thread_.joinable()) thread_.join();
+}
+
+void World::run(double rate_hz, double spin_us) {
+  using namespace std::chrono;
+  PeriodicClock clock(duration_cast<PeriodicClock::Clock::duration>(duration<double>(1.0 / rate_hz)),
+                      duration_cast<PeriodicClock::Clock::duration>(duration<double, std::micro>(spin_us)));
+  clock.start();
+  while (running_.load(std::memory_order_acquire)) {
+    lateness_.record(duration<double, std::micro>(clock.wait()).count());
+    overruns_ = clock.missed();
+    step_once();
+  }
+}
+
+void World::step_once() {
   const auto start = std::chrono::steady_clock::now();
   apply_commands();
   WorldSnapshot& out = output_.write_slot();
@@ -156,6 +194,10 @@ void World::step() {
   out.step_us_p50 = histogram_.percentile(0.5);
   out.step_us_p99 = histogram_.percentile(0.99);
   out.step_us_max = histogram_.max();
+  out.wake_late_us_p50 = lateness_.percentile(0.5);
+  out.wake_late_us_p99 = lateness_.percentile(0.99);
+  out.wake_late_us_max = lateness_.max();
+  out.overruns = overruns_;
   output_.publish();
 }
 

@@ -18,6 +18,7 @@
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -56,6 +57,9 @@ struct WorldSnapshot {
   uint64_t step = 0;
   std::vector<HandSnapshot> hands;
   double step_us_p50 = 0.0, step_us_p99 = 0.0, step_us_max = 0.0;
+  // on the world's own thread only: how late each tick woke, and ticks lost to overruns
+  double wake_late_us_p50 = 0.0, wake_late_us_p99 = 0.0, wake_late_us_max = 0.0;
+  int64_t overruns = 0;
   int64_t rejected_inputs = 0;  // haptic inputs the solver refused (NaN, absurd)
 };
 
@@ -79,7 +83,16 @@ class World {
   void set_haptic(int32_t hand, const HandState& haptic);
 
   // The stepping thread: apply queued commands, solve every hand, publish a snapshot.
-  void step();
+  // From the host's loop only while the world's own thread is not running.
+  frusta_result step();
+
+  // Host thread: run step() on the world's own thread at `rate_hz` on absolute
+  // deadlines (sleep, then spin the last `spin_us`), until stop(). No thread exists
+  // until start() is called.
+  frusta_result start(double rate_hz, double spin_us);
+  void stop();
+  bool running() const { return running_.load(std::memory_order_acquire); }
+  ~World();
 
   // The host thread: the newest snapshot, unchanged until the next read().
   const WorldSnapshot& read();
@@ -106,6 +119,8 @@ class World {
     bool has_input = false;
   };
 
+  void run(double rate_hz, double spin_us);
+  void step_once();
   void apply_commands();
   frusta_result check_handle(ObjectHandle object) const;
   frusta_result queue(const Command& command);
@@ -129,6 +144,10 @@ class World {
   uint64_t step_ = 0;
   int64_t rejected_ = 0;
   TripleBuffer<WorldSnapshot> output_;
+  StepHistogram lateness_;
+  int64_t overruns_ = 0;
+  std::atomic<bool> running_{false};
+  std::thread thread_;
 };
 
 }  // namespace frusta

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -194,6 +195,31 @@ TEST(World, AReaderOnAnotherThreadNeverSeesATornSnapshot) {
   EXPECT_EQ(bad, 0u);
   EXPECT_GE(reads, 1000000u);
   EXPECT_GE(distinct, 100u);
+}
+
+TEST(World, ItsOwnThreadStepsItUntilStoppedAndTheHostMayNotStepMeanwhile) {
+  World world(WorldDef{});
+  const int32_t hand = world.add_hand(right_hand());
+  world.set_haptic(hand, scenes::open_hand());
+  EXPECT_EQ(world.start(0.0, 0.0), FRUSTA_ERROR_OUT_OF_RANGE);
+  EXPECT_EQ(world.start(1000.0, 5000.0), FRUSTA_ERROR_OUT_OF_RANGE) << "a spin longer than the period";
+  ASSERT_EQ(world.start(1000.0, 100.0), FRUSTA_OK);
+  EXPECT_TRUE(world.running());
+  EXPECT_EQ(world.start(1000.0, 100.0), FRUSTA_ERROR_WRONG_STATE);
+  EXPECT_EQ(world.step(), FRUSTA_ERROR_WRONG_STATE);
+  // wait (bounded) for the thread to step; how fast is a benchmark's business, not a test's
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+  while (world.read().step < 20 && std::chrono::steady_clock::now() < give_up)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  const uint64_t seen = world.read().step;
+  EXPECT_GE(seen, 20u);
+  world.stop();
+  EXPECT_FALSE(world.running());
+  const uint64_t stopped = world.read().step;
+  std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  EXPECT_EQ(world.read().step, stopped) << "no step after stop()";
+  EXPECT_EQ(world.step(), FRUSTA_OK) << "the host may step it again";
+  EXPECT_EQ(world.read().step, stopped + 1);
 }
 
 }  // namespace
