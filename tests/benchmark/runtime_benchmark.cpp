@@ -4,14 +4,20 @@
 //    sleep only), with the CPU time each costs, so jitter and burnt CPU sit side by side;
 //  - the cost of reading the output snapshot (a triple buffer) in nanoseconds, with the
 //    writer idle and with it publishing flat out.
-// The world's step time with hands and objects joins this suite with the world.
+//  - the world's step time with 1 and 2 hands (each grasping its own ball) among 1, 5
+//    and 20 objects, on the host's loop.
+#include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <chrono>
 #include <cstdio>
 #include <ctime>
 #include <thread>
 
+#include "hand/hand_model.h"
 #include "runtime/periodic_clock.h"
+#include "runtime/world.h"
+#include "scenes/hand_scenarios.h"
 #include "runtime/step_histogram.h"
 #include "runtime/triple_buffer.h"
 
@@ -69,6 +75,42 @@ double read_ns(bool writer_busy) {
   return ns;
 }
 
+void world_steps(int hands, int objects, bool last) {
+  World world(WorldDef{});
+  const std::shared_ptr<const TreeFile> ball = scenes::ball_shell(2000, 0.04);
+  frusta_hand_def left_def = frusta_default_hand_def();
+  left_def.side = FRUSTA_HAND_LEFT;
+  // the left hand grasps its own ball half a metre away (its palm there too)
+  const vec3 offsets[2] = {vec3(0.0), vec3(0.0, 0.5, 0.0)};
+  for (int h = 0; h < hands; ++h) {
+    world.add_hand(make_hand_model(h == 0 ? frusta_default_hand_def() : left_def));
+    ObjectHandle handle;
+    world.add_object(ball, {offsets[h] + vec3(0.10, 0.0, -0.058), glm::dmat3(1.0)}, &handle);
+  }
+  for (int k = hands; k < objects; ++k) {
+    ObjectHandle handle;
+    world.add_object(ball, {vec3(0.8 * std::cos(0.3 * k), 0.8 * std::sin(0.3 * k), 0.3), glm::dmat3(1.0)}, &handle);
+  }
+  const scenes::HandScenario grasp = scenes::ball_grasp(ball);
+  StepHistogram steps;
+  constexpr int kWarm = 300, kMeasured = 2000;
+  for (int t = 0; t < kWarm + kMeasured; ++t) {
+    for (int h = 0; h < hands; ++h) {
+      HandState haptic = grasp.haptic(std::min(t, grasp.steps - 1));
+      haptic.palm_position += offsets[h];
+      world.set_haptic(h, haptic);
+    }
+    const Clock::time_point start = Clock::now();
+    world.step();
+    if (t >= kWarm) steps.record(std::chrono::duration<double, std::micro>(Clock::now() - start).count());
+  }
+  const WorldSnapshot& s = world.read();
+  std::printf("  {\"hands\": %d, \"objects\": %d, \"leaves_per_ball\": 2000, \"steps\": %d, \"p50_us\": %.2f, "
+              "\"p99_us\": %.2f, \"max_us\": %.2f, \"contacts_hand0\": %d}%s\n",
+              hands, objects, kMeasured, steps.percentile(0.5), steps.percentile(0.99), steps.max(),
+              s.hands[0].contact_count, last ? "" : ",");
+}
+
 }  // namespace
 }  // namespace frusta
 
@@ -78,7 +120,11 @@ int main() {
               std::thread::hardware_concurrency());
   const int spins[] = {0, 50, 200, 1000};
   for (size_t i = 0; i < std::size(spins); ++i) wake_up(spins[i], i + 1 == std::size(spins));
-  std::printf("],\n\"snapshot_read_ns\": {\"writer_idle\": %.2f, \"writer_publishing\": %.2f, \"snapshot_bytes\": %zu}\n}\n",
+  std::printf("],\n\"snapshot_read_ns\": {\"writer_idle\": %.2f, \"writer_publishing\": %.2f, \"snapshot_bytes\": %zu},\n",
               read_ns(false), read_ns(true), sizeof(Snapshot));
+  std::printf("\"world_step\": [\n");
+  for (int hands : {1, 2})
+    for (int objects : {2, 5, 20}) world_steps(hands, objects, hands == 2 && objects == 20);
+  std::printf("]\n}\n");
   return 0;
 }
