@@ -186,17 +186,29 @@ struct Central {
   bool switched;  // the feature differs from `feature` at a stencil point
 };
 
+// The case with coordinate var (0-2 D, 3-5 E, 6-8 O) moved by step, and the step taken.
+struct Perturbed {
+  Segment segment;
+  Sphere sphere;
+  double actual;
+};
+
+Perturbed perturb(const Case& c, int var, double step) {
+  Perturbed p{c.segment, c.sphere, 0.0};
+  double& x = var < 3 ? p.segment.proximal[var] : var < 6 ? p.segment.distal[var - 3] : p.sphere.center[var - 6];
+  const double x0 = x;
+  x = x0 + step;
+  p.actual = std::fabs(x - x0);
+  return p;
+}
+
 Central central(int fn, int var, double h, const Case& c, const SegmentFrame& f0, Feature feature) {
   double value[2], actual[2];
   bool switched = false;
   for (int point = 0; point < 2; ++point) {
-    Segment seg = c.segment;
-    Sphere sph = c.sphere;
-    double& x = var < 3 ? seg.proximal[var] : var < 6 ? seg.distal[var - 3] : sph.center[var - 6];
-    const double x0 = x;
-    x = point == 0 ? x0 + h : x0 - h;
-    actual[point] = std::fabs(x - x0);
-    const Constraint g = evaluate(fn, var < 6 ? make_segment_frame(seg) : f0, sph);
+    const Perturbed p = perturb(c, var, point == 0 ? h : -h);
+    actual[point] = p.actual;
+    const Constraint g = evaluate(fn, var < 6 ? make_segment_frame(p.segment) : f0, p.sphere);
     value[point] = g.value;
     switched = switched || g.feature != feature;
   }
@@ -260,13 +272,10 @@ void check_gradients(const char* property_name, std::initializer_list<int> fns, 
       double value[2][kFnCount] = {};
       double actual[2];
       for (int point = 0; point < 2; ++point) {
-        Segment seg = c.segment;
-        Sphere sph = c.sphere;
-        double& x = var < 3 ? seg.proximal[var] : var < 6 ? seg.distal[var - 3] : sph.center[var - 6];
-        const double x0 = x;
-        x = point == 0 ? x0 + h : x0 - h;
-        actual[point] = std::fabs(x - x0);
-        const SegmentFrame f = var < 6 ? make_segment_frame(seg) : f0;
+        const Perturbed p = perturb(c, var, point == 0 ? h : -h);
+        const Sphere& sph = p.sphere;
+        actual[point] = p.actual;
+        const SegmentFrame f = var < 6 ? make_segment_frame(p.segment) : f0;
         for (int fn : fns) {
           if (!use[fn]) continue;
           // a ball's constraint does not read the other end: its derivative there is 0
