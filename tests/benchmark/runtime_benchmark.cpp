@@ -83,7 +83,8 @@ void world_steps(int hands, int objects, bool last) {
   // the left hand grasps its own ball half a metre away (its palm there too)
   const vec3 offsets[2] = {vec3(0.0), vec3(0.0, 0.5, 0.0)};
   for (int h = 0; h < hands; ++h) {
-    world.add_hand(make_hand_model(h == 0 ? frusta_default_hand_def() : left_def));
+    int32_t index = -1;
+    world.add_hand(make_hand_model(h == 0 ? frusta_default_hand_def() : left_def), &index);
     ObjectHandle handle;
     world.add_object(ball, {offsets[h] + vec3(0.10, 0.0, -0.058), glm::dmat3(1.0)}, &handle);
   }

@@ -20,13 +20,17 @@ World::World(const WorldDef& def)
   active_slot_.reserve(static_cast<size_t>(def.max_objects));
 }
 
-int32_t World::add_hand(const HandModel& model) {
+frusta_result World::add_hand(const HandModel& model, int32_t* out_hand) {
+  if (running() || step_ > 0)
+    return fail(FRUSTA_ERROR_WRONG_STATE, "hands are added before the world's first step");
+  if (frusta_result r = HandSolver::check_params(def_.solver, model)) return r;
   hands_.push_back(std::make_unique<HandSlot>(model, def_.solver, HandState{}));
   WorldSnapshot prototype;
   prototype.hands.resize(hands_.size());
   for (HandSnapshot& h : prototype.hands) h.contacts.resize(static_cast<size_t>(def_.max_contacts_per_hand));
   output_.reset(prototype);
-  return static_cast<int32_t>(hands_.size()) - 1;
+  *out_hand = static_cast<int32_t>(hands_.size()) - 1;
+  return FRUSTA_OK;
 }
 
 frusta_result World::queue(const Command& command) {

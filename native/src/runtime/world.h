@@ -69,8 +69,9 @@ class World {
   World(const World&) = delete;
   World& operator=(const World&) = delete;
 
-  // Before the first step only (the stepping thread does not expect new hands).
-  int32_t add_hand(const HandModel& model);
+  // Before the first step only (the stepping thread does not expect new hands). The
+  // world's solver settings are checked against the hand here.
+  frusta_result add_hand(const HandModel& model, int32_t* out_hand);
 
   // Host thread. Queued; applied at the next step boundary. The tree stays alive as
   // long as the world holds it (and is released on the host thread, never in a step).

@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <limits>
 #include <new>
+#include <string>
 #include <thread>
 
 #include "hand/hand_model.h"
@@ -32,6 +33,12 @@ namespace {
 
 HandModel right_hand() { return make_hand_model(frusta_default_hand_def()); }
 
+int32_t add_hand(World& world, const HandModel& model) {
+  int32_t hand = -1;
+  EXPECT_EQ(world.add_hand(model, &hand), FRUSTA_OK);
+  return hand;
+}
+
 // made here rather than loaded: the ThreadSanitizer build has no baked samples
 std::shared_ptr<const TreeFile> ball_tree() {
   static const std::shared_ptr<const TreeFile> tree = scenes::ball_shell(500, 0.04);
@@ -43,7 +50,7 @@ const RigidPose kBallPose{vec3(0.10, 0.0, -0.058), glm::dmat3(1.0)};
 TEST(World, SolvesEachHandExactlyAsAStandaloneSolver) {
   const scenes::HandScenario grasp = scenes::ball_grasp(ball_tree());
   World world(WorldDef{});
-  const int32_t hand = world.add_hand(right_hand());
+  const int32_t hand = add_hand(world, right_hand());
   ObjectHandle ball;
   ASSERT_EQ(world.add_object(grasp.trees[0], kBallPose, &ball), FRUSTA_OK);
   HandSolver alone(right_hand(), SolverParams{});
@@ -65,7 +72,7 @@ TEST(World, CommandsTakeEffectAtTheNextStepAndStaleHandlesAreRefused) {
   WorldDef def;
   def.max_objects = 3;
   World world(def);
-  const int32_t hand = world.add_hand(right_hand());
+  const int32_t hand = add_hand(world, right_hand());
   HandState closed = scenes::open_hand();
   for (int f = 1; f < 5; ++f) scenes::set_flexion(closed, f, 1.6, 1.6, 1.6);
   world.set_haptic(hand, closed);
@@ -96,7 +103,7 @@ TEST(World, CommandsTakeEffectAtTheNextStepAndStaleHandlesAreRefused) {
 
 TEST(World, HoldsATreeUntilAStepHasLetGoOfIt) {
   World world(WorldDef{});
-  world.add_hand(right_hand());
+  add_hand(world, right_hand());
   std::weak_ptr<const TreeFile> watch;
   ObjectHandle box;
   {
@@ -116,7 +123,7 @@ TEST(World, HoldsATreeUntilAStepHasLetGoOfIt) {
 
 TEST(World, BadHapticInputIsCountedAndLeavesTheGraphicHand) {
   World world(WorldDef{});
-  const int32_t hand = world.add_hand(right_hand());
+  const int32_t hand = add_hand(world, right_hand());
   HandState h = scenes::open_hand();
   h.angles[5] = 0.3;
   world.set_haptic(hand, h);
@@ -132,10 +139,10 @@ TEST(World, BadHapticInputIsCountedAndLeavesTheGraphicHand) {
 
 TEST(World, TwoHandsAndTwentyObjectsStepWithoutAllocating) {
   World world(WorldDef{});
-  const int32_t right = world.add_hand(right_hand());
+  const int32_t right = add_hand(world, right_hand());
   frusta_hand_def left_def = frusta_default_hand_def();
   left_def.side = FRUSTA_HAND_LEFT;
-  const int32_t left = world.add_hand(make_hand_model(left_def));
+  const int32_t left = add_hand(world, make_hand_model(left_def));
   ObjectHandle handles[20];
   for (int k = 0; k < 20; ++k) {
     const vec3 at = k == 0 ? kBallPose.position : vec3(0.6 * std::cos(0.3 * k), 0.6 * std::sin(0.3 * k), 0.0);
@@ -165,7 +172,7 @@ TEST(World, TwoHandsAndTwentyObjectsStepWithoutAllocating) {
 
 TEST(World, AReaderOnAnotherThreadNeverSeesATornSnapshot) {
   World world(WorldDef{});
-  const int32_t hand = world.add_hand(right_hand());
+  const int32_t hand = add_hand(world, right_hand());
   ObjectHandle ball;
   ASSERT_EQ(world.add_object(ball_tree(), kBallPose, &ball), FRUSTA_OK);
   std::atomic<bool> done{false};
@@ -197,9 +204,22 @@ TEST(World, AReaderOnAnotherThreadNeverSeesATornSnapshot) {
   EXPECT_GE(distinct, 100u);
 }
 
+TEST(World, HandsComeBeforeTheFirstStepAndSettingsAreChecked) {
+  WorldDef def;
+  def.solver.prediction_margin = 0.05;  // more than a finger's radius
+  World bad(def);
+  int32_t hand = -1;
+  EXPECT_EQ(bad.add_hand(right_hand(), &hand), FRUSTA_ERROR_OUT_OF_RANGE);
+  EXPECT_NE(std::string(frusta_last_error()).find("prediction_margin"), std::string::npos);
+  World world(WorldDef{});
+  add_hand(world, right_hand());
+  ASSERT_EQ(world.step(), FRUSTA_OK);
+  EXPECT_EQ(world.add_hand(right_hand(), &hand), FRUSTA_ERROR_WRONG_STATE);
+}
+
 TEST(World, ItsOwnThreadStepsItUntilStoppedAndTheHostMayNotStepMeanwhile) {
   World world(WorldDef{});
-  const int32_t hand = world.add_hand(right_hand());
+  const int32_t hand = add_hand(world, right_hand());
   world.set_haptic(hand, scenes::open_hand());
   EXPECT_EQ(world.start(0.0, 0.0), FRUSTA_ERROR_OUT_OF_RANGE);
   EXPECT_EQ(world.start(1000.0, 5000.0), FRUSTA_ERROR_OUT_OF_RANGE) << "a spin longer than the period";
