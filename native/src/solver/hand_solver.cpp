@@ -183,8 +183,14 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
 
   // A part with candidates solves towards its full target and its stage stops at the
   // motion bound; a part with none moves straight, cut at the bound.
+  // A hand that starts the sub-step inside an object (the host moved the object into
+  // it) is solved even where its target has not moved, so it is pushed back out.
+  double deepest = 0.0;
+  for (int body = 0; body < kBodyCount; ++body)
+    deepest = std::min(deepest, body_clearance(model_, pose_, candidates_, body));
+  const bool recovering = deepest < -kRecoveryTolerances * params_.penetration_tolerance;
   const double palm_move = palm_motion(reach_, palm_from, palm_to);
-  if (palm_move > 0.0) {
+  if (palm_move > 0.0 || recovering) {
     if (candidates_.candidates.empty()) {
       const double s = std::min(1.0, cap / palm_move);
       graphic_.palm_position = s < 1.0 ? palm_from.position + s * (palm_to.position - palm_from.position)
@@ -211,7 +217,7 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
     const FingerAngles from = finger_angles(graphic_, f), to = finger_angles(target, f);
     const double move = finger_motion(reach_, f, from, to);
     settled_[f] = true;
-    if (!(move > 0.0)) continue;
+    if (!(move > 0.0) && !recovering) continue;
     if (candidates_.finger_count(f) == 0) {  // nothing near: the haptic angles as they are
       FingerAngles goal = to;
       if (move > finger_cap) {

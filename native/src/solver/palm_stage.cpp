@@ -57,7 +57,9 @@ PalmStage::PalmStage(const HandModel& model, const HandReach& reach, const Solve
       target_(target),
       start_(placement(state)),
       motion_cap_(motion_cap) {
-  floor_ = std::min(-params.penetration_tolerance, clearance(pose));
+  const double start_gap = clearance(pose);
+  floor_ = std::min(-params.penetration_tolerance, start_gap);
+  recovering_ = start_gap < -kRecoveryTolerances * params.penetration_tolerance;
 }
 
 int32_t PalmStage::linearise(QpRow* rows, double* target, double* weights) const {
@@ -83,14 +85,15 @@ int32_t PalmStage::linearise(QpRow* rows, double* target, double* weights) const
     for (int32_t i = 0; i < candidates_.count(body); ++i) {
       if (!may_touch(frame, c[i].world, reach)) continue;
       const Constraint g = contact_constraint(frame, c[i].world, params_.form);
+      const double bound =
+          row_bound(params_, g.value, c[i].world.radius + std::max(frame.r_proximal, frame.r_distal));
       set_row(rows[count++], g.grad_proximal + g.grad_distal,
               glm::cross(frame.proximal - palm, g.grad_proximal) +
                   glm::cross(frame.distal - palm, g.grad_distal),
-              // a finger deeper than its rows ask is its own stage's to fix: here it
-              // only must not get deeper, or the palm would ratchet up a little a step
-              std::min(row_bound(params_, g.value,
-                                 c[i].world.radius + std::max(frame.r_proximal, frame.r_distal)),
-                       0.0));
+              // a finger a hair deeper than its rows ask is its own stage's to fix: here
+              // it only must not get deeper, or the palm would ratchet up a little a
+              // step; a hand that started deep is lifted out whole
+              recovering_ ? bound : std::min(bound, 0.0));
     }
   }
   const Candidate* c = candidates_.of(kPalmBody);

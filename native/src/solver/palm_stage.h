@@ -22,6 +22,10 @@ double palm_motion(const HandReach& reach, const PalmPlacement& from, const Palm
 // The rotation vector taking `from` to `to` (world frame), the short way round.
 vec3 rotation_between(const glm::dquat& from, const glm::dquat& to);
 
+// A hand that starts a sub-step deeper than this many penetration tolerances (an object
+// moved into it) is lifted out by the palm, fingers and all.
+constexpr double kRecoveryTolerances = 10.0;
+
 class PalmStage : public StageEstimate {
  public:
   PalmStage(const HandModel& model, const HandReach& reach, const SolverParams& params,
@@ -44,6 +48,7 @@ class PalmStage : public StageEstimate {
   PalmPlacement target_;
   PalmPlacement start_;
   double motion_cap_;
+  bool recovering_ = false;  // started deep: finger rows push out too
 };
 
 }  // namespace frusta

@@ -188,6 +188,25 @@ TEST(HandSolver, PalmPressedFlatOnABoxThenFingersClose) {
   expect_holds_and_rejects_bad_input(solver, s, log);
 }
 
+// An object the host moves into a still hand (a kinematic object, faster than Delta_r a
+// step): the hand starts that step inside it, and is pushed back out within the step.
+TEST(HandSolver, AnObjectMovedIntoTheHandPushesItOut) {
+  HandScenario s;
+  s.add(scenes::sample_tree("box"), {vec3(0.05, -0.02, -0.06), glm::dmat3(1.0)});  // top 2.5 cm under the palm
+  HandSolver solver(default_model(), SolverParams{});
+  const HandState still = scenes::open_hand();
+  double deepest_after_step = 0.0;
+  for (int t = 0; t < 60; ++t) {
+    // the box rises 5 mm a step, up to 1 cm into where the palm is
+    s.objects[0].pose.position.z = std::min(-0.06 + 0.005 * t, -0.0259 + 0.01);
+    ASSERT_EQ(solver.step(still, s.objects.data(), 1, nullptr), FRUSTA_OK) << "step " << t;
+    deepest_after_step = std::max(deepest_after_step,
+                                  scenes::deepest_penetration(solver.model(), solver.graphic_pose(), s.objects));
+  }
+  EXPECT_LE(deepest_after_step, kMaxPenetration);
+  EXPECT_GT(solver.graphic().palm_position.z, 0.009) << "pushed up by the box";
+}
+
 TEST(HandSolver, EqualRunsGiveEqualHands) {
   const HandScenario s = make_hand_scenario("ball_grasp");
   HandSolver a(default_model(), SolverParams{}), b(default_model(), SolverParams{});
