@@ -24,7 +24,10 @@ struct SolverParams {
   double penetration_tolerance = 1e-6;  // metres a solved hand may sink (rounding, curvature)
   double contact_distance = 1e-4;       // gap under which a pair is reported as a contact
   double convergence = 1e-10;           // stop re-linearising when no variable moves more
-  int32_t max_iterations = 20;          // re-linearise and re-solve at most this often
+  // Re-linearise and re-solve at most this often per stage. The estimate carries over
+  // to the next step, so few suffice: on the 10^4-leaf grasp, 2 instead of 20 cut the
+  // p99 step from 1.04 ms to 0.33 ms for 0.0003 mm more penetration (tools/bench solver).
+  int32_t max_iterations = 2;
   int32_t qp_iteration_cap = 64;        // active-set changes per QP
   int32_t max_substeps = 64;            // per step; beyond, the graphic hand lags behind
   // -1: contact spheres are the leaves. A level >= 0 uses the tree's nodes there (and
