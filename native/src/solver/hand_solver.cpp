@@ -181,14 +181,15 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
     reached &= !s.capped;
   };
 
-  // A part with candidates solves towards its full target and its stage stops at the
-  // motion bound; a part with none moves straight, cut at the bound.
   // A hand that starts the sub-step inside an object (the host moved the object into
   // it) is solved even where its target has not moved, so it is pushed back out.
   double deepest = 0.0;
   for (int body = 0; body < kBodyCount; ++body)
     deepest = std::min(deepest, body_clearance(model_, pose_, candidates_, body));
   const bool recovering = deepest < -kRecoveryTolerances * params_.penetration_tolerance;
+
+  // A part with candidates solves towards its full target and its stage stops at the
+  // motion bound; a part with none moves straight, cut at the bound.
   const double palm_move = palm_motion(reach_, palm_from, palm_to);
   if (palm_move > 0.0 || recovering) {
     if (candidates_.candidates.empty()) {
@@ -206,12 +207,12 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
     }
   }
 
-  // the fingers may use whatever of Delta_r the palm left
-  const double finger_cap =
-      params_.prediction_margin - palm_motion(reach_, palm_from, placement(graphic_));
-  // a finger that settled in an earlier sub-step on a palm that has not moved since
-  // would solve the same problem again: it is skipped
-  const bool palm_moved = palm_motion(reach_, palm_from, placement(graphic_)) > 0.0;
+  // the fingers may use whatever of Delta_r the palm left; a finger that settled in an
+  // earlier sub-step on a palm that has not moved since would solve the same problem
+  // again, so it is skipped
+  const double palm_moved_by = palm_motion(reach_, palm_from, placement(graphic_));
+  const double finger_cap = params_.prediction_margin - palm_moved_by;
+  const bool palm_moved = palm_moved_by > 0.0;
   for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
     if (settled_[f] && !palm_moved) continue;
     const FingerAngles from = finger_angles(graphic_, f), to = finger_angles(target, f);
