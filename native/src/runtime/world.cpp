@@ -101,10 +101,13 @@ frusta_result World::set_object_pose(ObjectHandle object, const RigidPose& pose)
   return queue(c);
 }
 
-void World::set_haptic(int32_t hand, const HandState& haptic) {
+frusta_result World::set_haptic(int32_t hand, const HandState& haptic) {
+  if (hand < 0 || hand >= hand_count())
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "hand is %d, the world has %d", hand, hand_count());
   HandSlot& h = *hands_[static_cast<size_t>(hand)];
   h.input.write_slot() = haptic;
   h.input.publish();
+  return FRUSTA_OK;
 }
 
 void World::apply_commands() {

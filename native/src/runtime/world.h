@@ -80,8 +80,9 @@ class World {
   frusta_result remove_object(ObjectHandle object);
   frusta_result set_object_pose(ObjectHandle object, const RigidPose& pose);
 
-  // Any one thread per hand: the newest haptic hand wins.
-  void set_haptic(int32_t hand, const HandState& haptic);
+  // Any one thread per hand: the newest haptic hand wins. Bad values are the solver's
+  // to refuse (counted in the snapshot); a hand index the world lacks is refused here.
+  frusta_result set_haptic(int32_t hand, const HandState& haptic);
 
   // The stepping thread: apply queued commands, solve every hand, publish a snapshot.
   // From the host's loop only while the world's own thread is not running.

@@ -135,6 +135,8 @@ TEST(World, BadHapticInputIsCountedAndLeavesTheGraphicHand) {
   const WorldSnapshot& s = world.read();
   EXPECT_EQ(s.rejected_inputs, 1);
   EXPECT_EQ(s.hands[0].graphic.angles[5], before.angles[5]);
+  EXPECT_EQ(world.set_haptic(1, scenes::open_hand()), FRUSTA_ERROR_OUT_OF_RANGE) << "one hand only";
+  EXPECT_EQ(world.set_haptic(-1, scenes::open_hand()), FRUSTA_ERROR_OUT_OF_RANGE);
 }
 
 TEST(World, TwoHandsAndTwentyObjectsStepWithoutAllocating) {
