@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: MIT
+// What the contact forces depend on (seed eqs. 12-13, [0083], [0166]): how an object's
+// surface pushes back, and how much a glove can render.
+#pragma once
+
+#include "geometry/types.h"
+
+namespace frusta {
+
+// 1 mm of haptic penetration gives 0.4 N: a firm surface a glove can still render
+// without buzzing. A placeholder until materials are tuned on a real device.
+constexpr double kDefaultContactStiffness = 400.0;  // newtons per metre
+
+// Beyond this a stiffness is a units mistake (N/mm given as N/m is 1000x, not 1e6x),
+// and below it the force of any accepted gap (kMaxCoordinate) stays finite.
+constexpr double kMaxContactStiffness = 1e9;  // newtons per metre
+
+// How one object's surface pushes back.
+struct ForceMaterial {
+  // the diagonal of G in seed eq. 12, in the object's own frame (so an anisotropic
+  // material turns with its object); newtons per metre
+  vec3 normal_stiffness{kDefaultContactStiffness};
+  double friction = 0.6;  // mu of seed eq. 13, dimensionless
+  // the stick spring between a contact's haptic point and its anchor on the object;
+  // equal to the normal stiffness so a surface feels as hard dragged as pushed.
+  // Newtons per metre
+  double tangential_stiffness = kDefaultContactStiffness;
+};
+
+// What a device can render; every output is scaled down to fit, never redirected.
+// Placeholders of the order consumer force-feedback gloves render (around ten newtons
+// at a fingertip, tenths of a newton-metre at a finger joint), not taken from any one
+// datasheet: a device's driver sets its own.
+struct DeviceLimits {
+  double max_fingertip_force = 10.0;    // newtons, per finger
+  double max_finger_resistance = 10.0;  // newtons, per finger
+  double max_joint_torque = 0.5;        // newton-metres, per joint
+  double max_palm_force = 20.0;         // newtons
+  double max_palm_torque = 1.0;         // newton-metres, about the palm origin
+};
+
+}  // namespace frusta
