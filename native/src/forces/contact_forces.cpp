@@ -148,6 +148,7 @@ ContactForces::ContactForces(int32_t capacity) : capacity_(std::max(capacity, 0)
   anchors_.reserve(static_cast<size_t>(capacity_));
   next_anchors_.reserve(static_cast<size_t>(capacity_));
   forces_.reserve(static_cast<size_t>(capacity_));
+  prepared_.reserve(static_cast<size_t>(capacity_));
 }
 
 bool ContactForces::precedes(const Key& a, const Key& b) {
@@ -198,24 +199,45 @@ frusta_result ContactForces::update(const HandPose& graphic, const HandPose& hap
       key.ordinal = before.ordinal + 1;
   }
 
+  // P_ih of every contact, and how many press on each (object, body): a body resting on
+  // a face made of k leaves meets k contacts with one gap, and must feel one surface, so
+  // each of them gets 1/k of the stiffness (keys sort by object then body: groups are runs)
   forces_.resize(static_cast<size_t>(used));
+  prepared_.resize(order_.size());  // within the reserved capacity
+  for (size_t k = 0; k < order_.size(); ++k) {
+    const SolverContact& c = contacts[order_[k].contact];
+    Prepared& p = prepared_[k];
+    p.haptic_point = same_point_on_haptic(graphic, haptic, c.body, c.hand_point);
+    p.pressing = glm::dot(c.hand_point - p.haptic_point, c.normal) > 0.0;
+  }
+  for (size_t begin = 0, end = 0; begin < order_.size(); begin = end) {
+    int32_t pressing = 0;
+    for (end = begin; end < order_.size() && order_[end].key.object == order_[begin].key.object &&
+                      order_[end].key.body == order_[begin].key.body;
+         ++end)
+      pressing += prepared_[end].pressing ? 1 : 0;
+    for (size_t k = begin; k < end; ++k) prepared_[k].share = pressing > 1 ? 1.0 / pressing : 1.0;
+  }
+
   next_anchors_.clear();
   size_t old = 0;
-  for (const Slot& slot : order_) {
+  for (size_t k = 0; k < order_.size(); ++k) {
+    const Slot& slot = order_[k];
     const SolverContact& c = contacts[slot.contact];
     const RigidPose& object = objects[c.object].pose;
     const ForceMaterial& material = materials ? materials[c.object] : kDefaultMaterial;
+    const double share = prepared_[k].share;
     const vec3& n = c.normal;
 
     // normal force, seed eq. 12, with G turned from the object's frame into the world's
-    const vec3 haptic_point = same_point_on_haptic(graphic, haptic, c.body, c.hand_point);
+    const vec3 haptic_point = prepared_[k].haptic_point;
     const vec3 gap = c.hand_point - haptic_point;
-    const bool pressing = glm::dot(gap, n) > 0.0;
+    const bool pressing = prepared_[k].pressing;
     vec3 normal_force(0.0);
     if (pressing) {
       const vec3 stiff_n =
           object.rotation * (material.normal_stiffness * (glm::transpose(object.rotation) * n));
-      normal_force = stiff_n * glm::length(gap);
+      normal_force = share * stiff_n * glm::length(gap);
     }
 
     // the anchor the contact left last step, or (a new contact) its haptic point
@@ -228,7 +250,8 @@ frusta_result ContactForces::update(const HandPose& graphic, const HandPose& hap
     const vec3 stretch = haptic_point - anchor;
     vec3 held = stretch - glm::dot(stretch, n) * n;
     const double limit = material.friction * glm::length(normal_force);
-    const double spring = material.tangential_stiffness * glm::length(held);
+    const double tangential_stiffness = share * material.tangential_stiffness;
+    const double spring = tangential_stiffness * glm::length(held);
     bool slipping = false;
     if (spring > limit) {
       // slip: drag the anchor along the stretch until the spring pulls with exactly
@@ -241,7 +264,7 @@ frusta_result ContactForces::update(const HandPose& graphic, const HandPose& hap
       held *= limit / spring;
       slipping = limit > 0.0;
     }
-    const vec3 friction = -material.tangential_stiffness * held;
+    const vec3 friction = -tangential_stiffness * held;
     // the anchor keeps the tangential stretch only, so that when the normal turns (a
     // finger rolling over a curved surface) the depth does not leak into the friction
     const vec3 kept = haptic_point - held;

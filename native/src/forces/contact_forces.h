@@ -3,7 +3,9 @@
 // P_ig is the touching point on the graphic hand, P_ih the same material point on the
 // haptic hand (the glove), n the unit normal from the object towards the hand.
 //  - normal force, seed eq. 12: F = G n |P_ig - P_ih| while P_ih lies inside, i.e.
-//    (P_ig - P_ih) . n > 0, and 0 otherwise;
+//    (P_ig - P_ih) . n > 0, and 0 otherwise; where k contacts press one body on one
+//    object (a fingertip on a face of many leaves) each takes G / k, so a body feels
+//    one surface however finely the tree covers it;
 //  - friction, seed eq. 13 made continuous: each contact keeps an anchor on its object
 //    (riding with it); the friction is a spring from the anchor to P_ih in the tangent
 //    plane (stick), and where that spring would exceed mu |F| the anchor is dragged
@@ -94,6 +96,13 @@ class ContactForces {
     Key key;
     int32_t contact;  // index into this step's contacts
   };
+  // a contact's haptic point and its share of its body's stiffness, worked out before
+  // any force: the share needs every contact on the body
+  struct Prepared {
+    vec3 haptic_point{0.0};
+    bool pressing = false;  // (P_ig - P_ih) . n > 0
+    double share = 1.0;     // 1 / the contacts pressing the same body on the same object
+  };
   static bool precedes(const Key& a, const Key& b);
 
   int32_t capacity_;
@@ -101,6 +110,7 @@ class ContactForces {
   std::vector<Anchor> anchors_;       // sorted by key: the last step's contacts
   std::vector<Anchor> next_anchors_;  // being built; swapped in at the end of a step
   std::vector<ContactForce> forces_;
+  std::vector<Prepared> prepared_;  // per entry of order_
 };
 
 }  // namespace frusta

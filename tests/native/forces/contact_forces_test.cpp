@@ -345,9 +345,42 @@ TEST(ContactForces, ContactsSharingAKeyKeepTheirOwnAnchors) {
   ASSERT_EQ(forces.update(graphic, pose_of(model, hand_at(vec3(slide, 0.0, -depth))), cs.data(), 2,
                           &kFace, 1, nullptr, nullptr),
             FRUSTA_OK);
-  EXPECT_NEAR(forces.forces()[0].friction.x, -ForceMaterial{}.tangential_stiffness * slide, 1e-9)
+  // both press the one fingertip, so each holds half the stiffness
+  EXPECT_NEAR(forces.forces()[0].friction.x, -ForceMaterial{}.tangential_stiffness * slide / 2,
+              1e-9)
       << "the first node kept its anchor";
   EXPECT_NEAR(glm::length(forces.forces()[1].friction), 0.0, 1e-12) << "the second starts afresh";
+}
+
+TEST(ContactForces, ABodyOnAFaceOfManyLeavesFeelsOneSurface) {
+  // a fingertip on a face the tree covers with several leaves meets a contact per leaf,
+  // all with one gap: together they push as one face, k G / k, not k times as hard
+  const HandModel model = right_hand();
+  const HandPose graphic = pose_of(model, hand_at(vec3(0.0)));
+  const HandPose haptic = pose_of(model, hand_at(-0.002 * kUp));
+  const SolverObject objects[2] = {kFace, kFace};
+  for (int leaves : {1, 2, 5}) {
+    std::vector<SolverContact> cs(static_cast<size_t>(leaves), tip_on_face(model, graphic, 0));
+    for (int i = 0; i < leaves; ++i) cs[static_cast<size_t>(i)].leaf = 20 + i;
+    // the same fingertip on a second object, and the palm-side segment on the first: each
+    // their own surface, unshared
+    SolverContact other = tip_on_face(model, graphic, 1);
+    SolverContact middle = tip_on_face(model, graphic, 0);
+    middle.body = kIndexTip - 1;
+    middle.hand_point = graphic.fingers[kIndex].joint[2] - model.fingers[kIndex].radius[2] * kUp;
+    cs.push_back(other);
+    cs.push_back(middle);
+    ContactForces forces;
+    ASSERT_EQ(forces.update(graphic, haptic, cs.data(), static_cast<int32_t>(cs.size()), objects,
+                            2, nullptr, nullptr),
+              FRUSTA_OK);
+    vec3 tip_on_first(0.0);
+    for (int i = 0; i < leaves; ++i) tip_on_first += forces.forces()[static_cast<size_t>(i)].normal_force;
+    const double expected = kDefaultContactStiffness * 0.002;
+    EXPECT_NEAR(tip_on_first.z, expected, 1e-12) << leaves << " leaves";
+    EXPECT_NEAR(forces.forces()[static_cast<size_t>(leaves)].normal_force.z, expected, 1e-12);
+    EXPECT_NEAR(forces.forces()[static_cast<size_t>(leaves) + 1].normal_force.z, expected, 1e-12);
+  }
 }
 
 TEST(ContactForces, ContactsBeyondCapacityAreLeftOutAndCounted) {
