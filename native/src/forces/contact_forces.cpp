@@ -60,20 +60,9 @@ frusta_result check_contact(const SolverContact& c, int32_t i, int32_t object_co
 }
 
 frusta_result check_material(const ForceMaterial& m, int32_t i) {
-  char field[96];
-  for (int k = 0; k < 3; ++k) {
-    std::snprintf(field, sizeof field, "materials[%d].normal_stiffness[%d]", i, k);
-    if (frusta_result r =
-            check_range(m.normal_stiffness[k], 0.0, kMaxContactStiffness, false, field))
-      return r;
-  }
-  std::snprintf(field, sizeof field, "materials[%d].tangential_stiffness", i);
-  if (frusta_result r =
-          check_range(m.tangential_stiffness, 0.0, kMaxContactStiffness, false, field))
-    return r;
-  // a friction coefficient above a few is not a material but a typo; 100 leaves room
-  std::snprintf(field, sizeof field, "materials[%d].friction", i);
-  return check_range(m.friction, 0.0, 100.0, false, field);
+  char name[32];
+  std::snprintf(name, sizeof name, "materials[%d]", i);
+  return check_force_material(m, name);
 }
 
 frusta_result check_objects(const SolverObject* objects, int32_t object_count,
@@ -107,7 +96,35 @@ vec3 same_point_on_haptic(const HandPose& graphic, const HandPose& haptic, int32
   return segment_point(haptic, finger, segment, local);
 }
 
+// the frame a body's points are given in: the palm's, or a segment's at its proximal joint
+RigidPose haptic_body_frame(const HandPose& haptic, int32_t body) {
+  if (body == kPalmBody) return {haptic.palm_position, haptic.palm_rotation};
+  const FingerPose& f = haptic.fingers[body / FRUSTA_SEGMENTS_PER_FINGER];
+  const int segment = body % FRUSTA_SEGMENTS_PER_FINGER;
+  return {f.joint[segment], f.segment_rotation[segment]};
+}
+
 }  // namespace
+
+frusta_result check_force_material(const ForceMaterial& m, const char* name) {
+  char field[96];
+  for (int k = 0; k < 3; ++k) {
+    std::snprintf(field, sizeof field, "%s.normal_stiffness[%d]", name, k);
+    if (frusta_result r =
+            check_range(m.normal_stiffness[k], 0.0, kMaxContactStiffness, false, field))
+      return r;
+  }
+  std::snprintf(field, sizeof field, "%s.tangential_stiffness", name);
+  if (frusta_result r =
+          check_range(m.tangential_stiffness, 0.0, kMaxContactStiffness, false, field))
+    return r;
+  std::snprintf(field, sizeof field, "%s.normal_damping", name);
+  if (frusta_result r = check_range(m.normal_damping, 0.0, kMaxContactStiffness, false, field))
+    return r;
+  // a friction coefficient above a few is not a material but a typo; 100 leaves room
+  std::snprintf(field, sizeof field, "%s.friction", name);
+  return check_range(m.friction, 0.0, 100.0, false, field);
+}
 
 void haptic_hand_pose(const HandModel& model, const HandState& haptic, HandPose& pose) {
   HandState aimed = haptic;
@@ -145,24 +162,29 @@ frusta_result check_hand_pose(const HandPose& pose, const char* which) {
 
 ContactForces::ContactForces(int32_t capacity) : capacity_(std::max(capacity, 0)) {
   order_.reserve(static_cast<size_t>(capacity_));
-  anchors_.reserve(static_cast<size_t>(capacity_));
-  next_anchors_.reserve(static_cast<size_t>(capacity_));
-  forces_.reserve(static_cast<size_t>(capacity_));
   prepared_.reserve(static_cast<size_t>(capacity_));
+  patches_.reserve(static_cast<size_t>(capacity_));
+  next_patches_.reserve(static_cast<size_t>(capacity_));
+  forces_.reserve(static_cast<size_t>(capacity_));
 }
 
-bool ContactForces::precedes(const Key& a, const Key& b) {
-  return std::tie(a.object, a.body, a.part, a.leaf, a.ordinal) <
-         std::tie(b.object, b.body, b.part, b.leaf, b.ordinal);
+bool ContactForces::precedes(const PatchKey& a, const PatchKey& b) {
+  return std::tie(a.object, a.body) < std::tie(b.object, b.body);
 }
 
-void ContactForces::reset() { anchors_.clear(); }
+void ContactForces::reset() { patches_.clear(); }
+
+frusta_result ContactForces::set_time_step(double seconds) {
+  if (frusta_result r = check_range(seconds, 0.0, 1.0, true, "time step")) return r;
+  time_step_ = seconds;
+  return FRUSTA_OK;
+}
 
 frusta_result ContactForces::update(const HandPose& graphic, const HandPose& haptic,
                                     const SolverContact* contacts, int32_t contact_count,
                                     const SolverObject* objects, int32_t object_count,
                                     const ForceMaterial* materials, ContactForceStats* stats) {
-  // every check before anything changes, so bad input leaves forces and anchors intact
+  // every check before anything changes, so bad input leaves forces and patches intact
   if (contact_count < 0 || object_count < 0)
     return fail(FRUSTA_ERROR_OUT_OF_RANGE, "contact_count (%d) and object_count (%d) must be >= 0",
                 contact_count, object_count);
@@ -180,81 +202,106 @@ frusta_result ContactForces::update(const HandPose& graphic, const HandPose& hap
   const int32_t used = std::min(contact_count, capacity_);
   counts.dropped = contact_count - used;
 
-  // this step's keys in order, so the last step's anchors are found by one merge walk
+  // this step's contacts grouped into patches (one object, one body), patches in key
+  // order so the last step's are found by one merge walk
   order_.clear();
-  for (int32_t i = 0; i < used; ++i) {
-    const SolverContact& c = contacts[i];
-    order_.push_back({Key{c.object, c.body, c.part, c.leaf, 0}, i});
-  }
-  std::sort(order_.begin(), order_.end(), [](const Slot& a, const Slot& b) {
-    if (precedes(a.key, b.key)) return true;
-    if (precedes(b.key, a.key)) return false;
-    return a.contact < b.contact;
+  for (int32_t i = 0; i < used; ++i) order_.push_back(i);
+  std::sort(order_.begin(), order_.end(), [&](int32_t a, int32_t b) {
+    const PatchKey ka{contacts[a].object, contacts[a].body}, kb{contacts[b].object, contacts[b].body};
+    if (precedes(ka, kb)) return true;
+    if (precedes(kb, ka)) return false;
+    return a < b;
   });
-  for (size_t k = 1; k < order_.size(); ++k) {
-    Key& key = order_[k].key;
-    const Key& before = order_[k - 1].key;
-    if (key.object == before.object && key.body == before.body && key.part == before.part &&
-        key.leaf == before.leaf)
-      key.ordinal = before.ordinal + 1;
-  }
-
-  // P_ih of every contact, and how many press on each (object, body): a body resting on
-  // a face made of k leaves meets k contacts with one gap, and must feel one surface, so
-  // each of them gets 1/k of the stiffness (keys sort by object then body: groups are runs)
-  forces_.resize(static_cast<size_t>(used));
   prepared_.resize(order_.size());  // within the reserved capacity
   for (size_t k = 0; k < order_.size(); ++k) {
-    const SolverContact& c = contacts[order_[k].contact];
+    const SolverContact& c = contacts[order_[k]];
     Prepared& p = prepared_[k];
     p.haptic_point = same_point_on_haptic(graphic, haptic, c.body, c.hand_point);
-    p.pressing = glm::dot(c.hand_point - p.haptic_point, c.normal) > 0.0;
-  }
-  for (size_t begin = 0, end = 0; begin < order_.size(); begin = end) {
-    int32_t pressing = 0;
-    for (end = begin; end < order_.size() && order_[end].key.object == order_[begin].key.object &&
-                      order_[end].key.body == order_[begin].key.body;
-         ++end)
-      pressing += prepared_[end].pressing ? 1 : 0;
-    for (size_t k = begin; k < end; ++k) prepared_[k].share = pressing > 1 ? 1.0 / pressing : 1.0;
+    p.depth = glm::dot(c.hand_point - p.haptic_point, c.normal);
   }
 
-  next_anchors_.clear();
+  forces_.resize(static_cast<size_t>(used));
+  next_patches_.clear();
   size_t old = 0;
-  for (size_t k = 0; k < order_.size(); ++k) {
-    const Slot& slot = order_[k];
-    const SolverContact& c = contacts[slot.contact];
-    const RigidPose& object = objects[c.object].pose;
-    const ForceMaterial& material = materials ? materials[c.object] : kDefaultMaterial;
-    const double share = prepared_[k].share;
-    const vec3& n = c.normal;
+  for (size_t begin = 0, end = 0; begin < order_.size(); begin = end) {
+    const SolverContact& first = contacts[order_[begin]];
+    const PatchKey key{first.object, first.body};
+    // the patch's pressing contacts: how many, where on average, which way, how deep
+    int32_t pressing = 0;
+    vec3 haptic_sum(0.0), normal_sum(0.0);
+    double depth_sum = 0.0;
+    for (end = begin; end < order_.size(); ++end) {
+      const SolverContact& c = contacts[order_[end]];
+      if (c.object != key.object || c.body != key.body) break;
+      if (prepared_[end].depth <= 0.0) continue;
+      ++pressing;
+      haptic_sum += prepared_[end].haptic_point;
+      normal_sum += c.normal;
+      depth_sum += prepared_[end].depth;
+    }
+    const RigidPose& object = objects[key.object].pose;
+    const ForceMaterial& material = materials ? materials[key.object] : kDefaultMaterial;
+    while (old < patches_.size() && precedes(patches_[old].key, key)) ++old;
+    const bool known = old < patches_.size() && !precedes(key, patches_[old].key);
 
-    // normal force, seed eq. 12, with G turned from the object's frame into the world's
-    const vec3 haptic_point = prepared_[k].haptic_point;
-    const vec3 gap = c.hand_point - haptic_point;
-    const bool pressing = prepared_[k].pressing;
-    vec3 normal_force(0.0);
-    if (pressing) {
+    // normal forces, seed eq. 12, each contact with 1/k of the patch's stiffness (G turned
+    // from the object's frame into the world's), plus the patch's damping on how fast it
+    // sinks in, never pulling
+    const double share = pressing > 0 ? 1.0 / pressing : 1.0;
+    const double depth = pressing > 0 ? depth_sum * share : 0.0;
+    const double sink_rate = known && pressing > 0 ? (depth - patches_[old].depth) / time_step_ : 0.0;
+    vec3 patch_force(0.0);
+    for (size_t k = begin; k < end; ++k) {
+      const SolverContact& c = contacts[order_[k]];
+      const Prepared& p = prepared_[k];
+      ContactForce& out = forces_[static_cast<size_t>(order_[k])];
+      out.object = c.object;
+      out.leaf = c.leaf;
+      out.body = c.body;
+      out.part = c.part;
+      out.graphic_point = c.hand_point;
+      out.haptic_point = p.haptic_point;
+      out.normal = c.normal;
+      out.normal_force = vec3(0.0);
+      out.friction = vec3(0.0);
+      out.slipping = false;
+      if (p.depth <= 0.0) continue;
+      const vec3& n = c.normal;
       const vec3 stiff_n =
           object.rotation * (material.normal_stiffness * (glm::transpose(object.rotation) * n));
-      normal_force = share * stiff_n * glm::length(gap);
+      vec3 f = share * (stiff_n * glm::length(c.hand_point - p.haptic_point) +
+                        material.normal_damping * sink_rate * n);
+      if (glm::dot(f, n) < 0.0) f = vec3(0.0);
+      out.normal_force = f;
+      patch_force += f;
     }
+    counts.pressing += pressing;
+    if (pressing == 0) continue;  // nothing pressed, nothing held: the patch starts afresh
 
-    // the anchor the contact left last step, or (a new contact) its haptic point
-    while (old < anchors_.size() && precedes(anchors_[old].key, slot.key)) ++old;
-    const bool known = old < anchors_.size() && !precedes(slot.key, anchors_[old].key);
-    const vec3 anchor =
-        known ? object.position + object.rotation * anchors_[old].local : haptic_point;
-
-    // stick: a spring from the anchor to the haptic point, in the tangent plane
-    const vec3 stretch = haptic_point - anchor;
+    // friction, seed eq. 13 made continuous, once per patch: a spring stretched by how
+    // far the body's material (on the haptic hand) has moved over the object, in the
+    // plane of the patch's mean normal. The motion is that of the body's frame, not of
+    // the contacts' mean point, so leaves joining or leaving the patch move nothing
+    const vec3 n = glm::normalize(normal_sum);
+    const RigidPose body = haptic_body_frame(haptic, key.body);
+    const glm::dmat3 to_object = glm::transpose(object.rotation);
+    const RigidPose body_on_object{to_object * (body.position - object.position),
+                                   to_object * body.rotation};
+    vec3 stretch(0.0);
+    if (known) {
+      const Patch& before = patches_[old];
+      const vec3 reference = haptic_sum * share;  // any material point of the body would do
+      const vec3 local = glm::transpose(body.rotation) * (reference - body.position);
+      const vec3 now = body_on_object.position + body_on_object.rotation * local;
+      const vec3 then = before.body.position + before.body.rotation * local;
+      stretch = object.rotation * (before.stretch + now - then);
+    }
     vec3 held = stretch - glm::dot(stretch, n) * n;
-    const double limit = material.friction * glm::length(normal_force);
-    const double tangential_stiffness = share * material.tangential_stiffness;
-    const double spring = tangential_stiffness * glm::length(held);
+    const double limit = material.friction * glm::length(patch_force);
+    const double spring = material.tangential_stiffness * glm::length(held);
     bool slipping = false;
     if (spring > limit) {
-      // slip: drag the anchor along the stretch until the spring pulls with exactly
+      // slip: cut the stretch back until the spring pulls with exactly
       // mu |F|, against the direction the finger slides. The friction is thus the stick
       // spring projected onto the disc of radius mu |F|: a continuous function of the
       // motion, equal on both sides of the switch (scale = 1 there), so there is no
@@ -264,28 +311,20 @@ frusta_result ContactForces::update(const HandPose& graphic, const HandPose& hap
       held *= limit / spring;
       slipping = limit > 0.0;
     }
-    const vec3 friction = -tangential_stiffness * held;
-    // the anchor keeps the tangential stretch only, so that when the normal turns (a
-    // finger rolling over a curved surface) the depth does not leak into the friction
-    const vec3 kept = haptic_point - held;
-    next_anchors_.push_back({slot.key, glm::transpose(object.rotation) * (kept - object.position)});
-
-    ContactForce& out = forces_[static_cast<size_t>(slot.contact)];
-    out.object = c.object;
-    out.leaf = c.leaf;
-    out.body = c.body;
-    out.part = c.part;
-    out.graphic_point = c.hand_point;
-    out.haptic_point = haptic_point;
-    out.normal = n;
-    out.normal_force = normal_force;
-    out.friction = friction;
-    out.slipping = slipping;
-    counts.pressing += pressing ? 1 : 0;
-    counts.slipping += slipping ? 1 : 0;
+    const vec3 friction = -material.tangential_stiffness * held;
+    // the stretch kept is tangential only, so that when the normal turns (a finger
+    // rolling over a curved surface) the depth does not leak into the friction
+    next_patches_.push_back({key, body_on_object, to_object * held, depth});
+    for (size_t k = begin; k < end; ++k) {
+      if (prepared_[k].depth <= 0.0) continue;
+      ContactForce& out = forces_[static_cast<size_t>(order_[k])];
+      out.friction = share * friction;
+      out.slipping = slipping;
+      counts.slipping += slipping ? 1 : 0;
+    }
   }
-  // contacts absent this step are not carried over: their anchors go
-  std::swap(anchors_, next_anchors_);
+  // patches absent this step are not carried over: their stretch goes
+  std::swap(patches_, next_patches_);
   if (stats) *stats = counts;
   return FRUSTA_OK;
 }

@@ -2,16 +2,21 @@
 // The force at each contact between the graphic hand and an object (seed [0160]-[0165]).
 // P_ig is the touching point on the graphic hand, P_ih the same material point on the
 // haptic hand (the glove), n the unit normal from the object towards the hand.
+// Contacts of one body on one object form a patch (a fingertip on a face the tree
+// covers with several leaves): the patch is one surface to the hand.
 //  - normal force, seed eq. 12: F = G n |P_ig - P_ih| while P_ih lies inside, i.e.
-//    (P_ig - P_ih) . n > 0, and 0 otherwise; where k contacts press one body on one
-//    object (a fingertip on a face of many leaves) each takes G / k, so a body feels
-//    one surface however finely the tree covers it;
-//  - friction, seed eq. 13 made continuous: each contact keeps an anchor on its object
-//    (riding with it); the friction is a spring from the anchor to P_ih in the tangent
-//    plane (stick), and where that spring would exceed mu |F| the anchor is dragged
-//    along so that the friction is exactly mu |F| against the slip (slip: the seed's
-//    f = mu |F| t).
-// Contacts keep their anchors from step to step in a table sized once; a step allocates
+//    (P_ig - P_ih) . n > 0, and 0 otherwise; each of a patch's k pressing contacts takes
+//    G / k, so a body feels one surface however finely the tree covers it. An optional
+//    damping on how fast the patch sinks in (ForceMaterial::normal_damping) settles a
+//    held object instead of letting it ring on the contact springs;
+//  - friction, seed eq. 13 made continuous, per patch: a tangential spring stretched by
+//    how far the body (on the haptic hand) has moved over the object since the patch
+//    began (stick); where it would exceed mu |F| its stretch is cut back so that the
+//    friction is exactly mu |F| against the slip (slip: the seed's f = mu |F| t). The
+//    stretch is kept in the object's frame, so it rides with the object; leaves joining
+//    or leaving a patch as the hand moves over an object change nothing, so a carried
+//    object is not let go of.
+// Patches keep their stretch from step to step in a table sized once; a step allocates
 // nothing.
 #pragma once
 
@@ -38,7 +43,7 @@ struct ContactForce {
   vec3 normal{0.0};         // unit, from the object towards the hand
   vec3 normal_force{0.0};   // F of seed eq. 12, on the hand, newtons
   vec3 friction{0.0};       // f, on the hand, newtons
-  bool slipping = false;    // pressing, and the anchor was dragged this step
+  bool slipping = false;    // pressing, and its patch slid this step
 };
 
 struct ContactForceStats {
@@ -52,6 +57,10 @@ struct ContactForceStats {
 // is touched both hands coincide and a glove reading past a joint limit makes no force.
 // `haptic` must be a state HandSolver::step accepted.
 void haptic_hand_pose(const HandModel& model, const HandState& haptic, HandPose& pose);
+
+// Stiffnesses in [0, kMaxContactStiffness], friction in [0, 100]; the thread's error
+// names `name` and the field.
+frusta_result check_force_material(const ForceMaterial& material, const char* name);
 
 // Every position, frame and axis of a pose finite, positions within kMaxCoordinate;
 // the thread's error names `which` and the field. Shared with the device outputs.
@@ -69,48 +78,48 @@ class ContactForces {
   // objects, `materials` one per object (null: ForceMaterial{} for all). The first
   // `capacity` contacts in the solver's order are kept, the rest counted in stats->dropped.
   // Bad input (non-finite, an object or body out of range, a bad material) returns an
-  // error and leaves the forces and every anchor as they were. stats may be null.
+  // error and leaves the forces and every patch as they were. stats may be null.
   frusta_result update(const HandPose& graphic, const HandPose& haptic,
                        const SolverContact* contacts, int32_t contact_count,
                        const SolverObject* objects, int32_t object_count,
                        const ForceMaterial* materials, ContactForceStats* stats);
 
-  // Forget every anchor (e.g. after a teleport): the next step starts every friction at 0.
+  // Forget every patch (e.g. after a teleport): the next step starts every friction at 0.
   void reset();
+
+  // The time between updates (seconds, in (0, 1]), for the damping's sink rate; 1 ms
+  // unless set.
+  frusta_result set_time_step(double seconds);
 
   // The last successful step's forces, in the order of its contacts.
   const std::vector<ContactForce>& forces() const { return forces_; }
 
  private:
-  // A contact's identity from step to step. Several inner nodes standing in for their
-  // leaves (leaf -1) can touch one body at once; `ordinal` numbers contacts that share
-  // the rest of the key in the solver's order, so each keeps its own anchor.
-  struct Key {
-    int32_t object, body, part, leaf, ordinal;
+  // A patch's identity from step to step.
+  struct PatchKey {
+    int32_t object, body;
   };
-  struct Anchor {
-    Key key;
-    vec3 local;  // on the object, in the object's frame: it rides with the object
+  struct Patch {
+    PatchKey key;
+    RigidPose body;  // the body's haptic frame, in the object's frame
+    vec3 stretch;    // the friction spring's, tangential, in the object's frame
+    double depth;    // mean of (P_ig - P_ih) . n over its pressing contacts, metres
   };
-  struct Slot {
-    Key key;
-    int32_t contact;  // index into this step's contacts
-  };
-  // a contact's haptic point and its share of its body's stiffness, worked out before
-  // any force: the share needs every contact on the body
+  // a contact's haptic point and depth, worked out before any force: its patch's share
+  // and mean need every contact of the patch
   struct Prepared {
     vec3 haptic_point{0.0};
-    bool pressing = false;  // (P_ig - P_ih) . n > 0
-    double share = 1.0;     // 1 / the contacts pressing the same body on the same object
+    double depth = 0.0;  // (P_ig - P_ih) . n; pressing when > 0
   };
-  static bool precedes(const Key& a, const Key& b);
+  static bool precedes(const PatchKey& a, const PatchKey& b);
 
   int32_t capacity_;
-  std::vector<Slot> order_;           // this step's contacts sorted by key
-  std::vector<Anchor> anchors_;       // sorted by key: the last step's contacts
-  std::vector<Anchor> next_anchors_;  // being built; swapped in at the end of a step
+  double time_step_ = 1e-3;
+  std::vector<int32_t> order_;        // this step's contacts, grouped by patch in key order
+  std::vector<Prepared> prepared_;    // per entry of order_
+  std::vector<Patch> patches_;        // sorted by key: the last step's
+  std::vector<Patch> next_patches_;   // being built; swapped in at the end of a step
   std::vector<ContactForce> forces_;
-  std::vector<Prepared> prepared_;  // per entry of order_
 };
 
 }  // namespace frusta

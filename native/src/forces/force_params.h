@@ -25,6 +25,9 @@ struct ForceMaterial {
   // equal to the normal stiffness so a surface feels as hard dragged as pushed.
   // Newtons per metre
   double tangential_stiffness = kDefaultContactStiffness;
+  // on the rate a patch sinks in (N s/m): 0 is seed eq. 12 exactly; a held object rings
+  // on the contact springs without it. 2 sqrt(k m) damps an object of mass m critically
+  double normal_damping = 0.0;
 };
 
 // What a device can render; every output is scaled down to fit, never redirected.

@@ -322,16 +322,17 @@ TEST(ContactForces, AVanishedContactTakesItsAnchorWithIt) {
   EXPECT_NEAR(glm::length(forces.forces()[0].friction), 0.0, 1e-12) << "reset forgets anchors";
 }
 
-TEST(ContactForces, ContactsSharingAKeyKeepTheirOwnAnchors) {
-  // inner nodes standing in for their leaves (leaf -1) may touch one body more than once
+TEST(ContactForces, ALeafJoiningAPatchLeavesItsFrictionAsItWas) {
+  // a fingertip sliding over an object meets new leaves as it goes; the friction is the
+  // patch's (one body on one object), so a leaf joining it only splits it
   const HandModel model = right_hand();
   const double depth = 0.005, slide = 0.0003;
   ContactForces forces;
   auto contacts_at = [&](double s, int count) {
     const HandPose graphic = pose_of(model, hand_at(vec3(s, 0.0, 0.0)));
     std::vector<SolverContact> cs(2, tip_on_face(model, graphic, 0));
-    for (SolverContact& c : cs) c.leaf = -1;
-    cs[1].hand_point.y += 0.002;  // a second node beside the first
+    cs[1].leaf = 8;
+    cs[1].hand_point.y += 0.002;  // a second leaf beside the first
     cs.resize(static_cast<size_t>(count));
     return std::make_pair(graphic, cs);
   };
@@ -345,11 +346,10 @@ TEST(ContactForces, ContactsSharingAKeyKeepTheirOwnAnchors) {
   ASSERT_EQ(forces.update(graphic, pose_of(model, hand_at(vec3(slide, 0.0, -depth))), cs.data(), 2,
                           &kFace, 1, nullptr, nullptr),
             FRUSTA_OK);
-  // both press the one fingertip, so each holds half the stiffness
-  EXPECT_NEAR(forces.forces()[0].friction.x, -ForceMaterial{}.tangential_stiffness * slide / 2,
-              1e-9)
-      << "the first node kept its anchor";
-  EXPECT_NEAR(glm::length(forces.forces()[1].friction), 0.0, 1e-12) << "the second starts afresh";
+  const double expected = -ForceMaterial{}.tangential_stiffness * slide;
+  EXPECT_NEAR(forces.forces()[0].friction.x + forces.forces()[1].friction.x, expected, 1e-9);
+  EXPECT_NEAR(forces.forces()[0].friction.x, forces.forces()[1].friction.x, 1e-12);
+  EXPECT_NEAR(forces.forces()[0].friction.y + forces.forces()[1].friction.y, 0.0, 1e-12);
 }
 
 TEST(ContactForces, ABodyOnAFaceOfManyLeavesFeelsOneSurface) {
