@@ -86,11 +86,11 @@ void world_steps(int hands, int objects, bool last) {
     int32_t index = -1;
     world.add_hand(make_hand_model(h == 0 ? frusta_default_hand_def() : left_def), &index);
     ObjectHandle handle;
-    world.add_object(ball, {offsets[h] + vec3(0.10, 0.0, -0.058), glm::dmat3(1.0)}, &handle);
+    world.add_object(ball, RigidPose{offsets[h] + vec3(0.10, 0.0, -0.058), glm::dmat3(1.0)}, &handle);
   }
   for (int k = hands; k < objects; ++k) {
     ObjectHandle handle;
-    world.add_object(ball, {vec3(0.8 * std::cos(0.3 * k), 0.8 * std::sin(0.3 * k), 0.3), glm::dmat3(1.0)}, &handle);
+    world.add_object(ball, RigidPose{vec3(0.8 * std::cos(0.3 * k), 0.8 * std::sin(0.3 * k), 0.3), glm::dmat3(1.0)}, &handle);
   }
   const scenes::HandScenario grasp = scenes::ball_grasp(ball);
   StepHistogram steps;

@@ -123,13 +123,61 @@ HandScenario slide() {
   return s;
 }
 
-// thumb and index pads pushed through a small plate held between them
-HandScenario plate_pinch() {
-  HandScenario s;
-  // a pinch pose found by search: the pads 4 mm apart, the plate between them
+// each pad pushed along a direction: the joint motion that moves its tip centre a
+// distance that way, to first order (Jacobian transpose)
+HandState pad_pushed(const HandPose& pose, const HandState& from, int finger,
+                     const vec3& direction, double distance) {
+  double j[3 * kJacobianColumns];
+  point_jacobian(pose, finger, 2, pose.fingers[finger].joint[3], j);
+  double step[4], tip[3] = {};
+  for (int c = 0; c < 4; ++c)
+    step[c] = j[c] * direction.x + j[kJacobianColumns + c] * direction.y + j[2 * kJacobianColumns + c] * direction.z;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 4; ++c) tip[r] += j[r * kJacobianColumns + c] * step[c];
+  const double scale = distance / std::sqrt(tip[0] * tip[0] + tip[1] * tip[1] + tip[2] * tip[2]);
+  HandState out = from;
+  for (int c = 0; c < 4; ++c) out.angles[finger * 4 + c] += scale * step[c];
+  return out;
+}
+
+}  // namespace
+
+// the pinch pose the pinch scenarios start from: thumb and index pads 4 mm apart
+HandState pads_together() {
   HandState pinch = open_hand();
-  const double angles[8] = {-0.1, 0.4, 0.4, 0.3, 0.0, 0.4, 1.1, 0.3};
+  const double angles[8] = {-0.1, 0.4, 0.4, 0.3, 0.0, 0.4, 1.1, 0.3};  // found by search
   std::copy(angles, angles + 8, pinch.angles.begin());
+  return pinch;
+}
+
+HandScenario ball_pinch(double pressed) {
+  const HandModel model = make_hand_model(frusta_default_hand_def());
+  HandPose pose;
+  forward_kinematics(model, pads_together(), pose);
+  vec3 axis = glm::normalize(pose.fingers[1].joint[3] - pose.fingers[0].joint[3]);
+  // the pads opened to about 3 cm, a ball fitted between them with 0.5 mm to spare
+  const HandState opened = pad_pushed(pose, pad_pushed(pose, pads_together(), 0, -axis, 0.013), 1,
+                                      axis, 0.013);
+  forward_kinematics(model, opened, pose);
+  const vec3 thumb = pose.fingers[0].joint[3], index = pose.fingers[1].joint[3];
+  axis = glm::normalize(index - thumb);
+  const double gap = glm::length(index - thumb) - model.fingers[0].radius[3] - model.fingers[1].radius[3];
+  HandScenario s;
+  s.axis = axis;
+  s.anchor = thumb + axis * (model.fingers[0].radius[3] + gap / 2);
+  s.add(ball_shell(800, gap / 2 - 0.0005), {s.anchor, glm::dmat3(1.0)});
+  const HandState held = pad_pushed(pose, pad_pushed(pose, opened, 0, axis, pressed), 1, -axis, pressed);
+  s.steps = 300;
+  s.haptic = [opened, held](int32_t t) {
+    return t < 120 ? mix(open_hand(), opened, t / 100.0) : mix(opened, held, (t - 120) / 120.0);
+  };
+  s.held = held;
+  return s;
+}
+
+HandScenario plate_pinch(double pressed) {
+  HandScenario s;
+  const HandState pinch = pads_together();
   const HandModel model = make_hand_model(frusta_default_hand_def());
   HandPose pose;
   forward_kinematics(model, pinch, pose);
@@ -138,30 +186,17 @@ HandScenario plate_pinch() {
   s.anchor = thumb + s.axis * (model.fingers[0].radius[3] + 0.002);
   static const std::shared_ptr<const TreeFile> plate = baked_box(vec3(0.03, 0.03, 0.004), 0.001);
   s.add(plate, {s.anchor, glm::mat3_cast(glm::rotation(vec3(0, 0, 1), s.axis))});
-  // each pad pushed along the plate's normal: the joint motion that moves its tip
-  // centre a distance along a direction, to first order (Jacobian transpose)
-  auto pushed = [&](const HandState& from, int finger, const vec3& direction, double distance) {
-    double j[3 * kJacobianColumns];
-    point_jacobian(pose, finger, 2, pose.fingers[finger].joint[3], j);
-    double step[4], tip[3] = {};
-    for (int c = 0; c < 4; ++c)
-      step[c] = j[c] * direction.x + j[kJacobianColumns + c] * direction.y + j[2 * kJacobianColumns + c] * direction.z;
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 4; ++c) tip[r] += j[r * kJacobianColumns + c] * step[c];
-    const double scale = distance / std::sqrt(tip[0] * tip[0] + tip[1] * tip[1] + tip[2] * tip[2]);
-    HandState out = from;
-    for (int c = 0; c < 4; ++c) out.angles[finger * 4 + c] += scale * step[c];
-    return out;
-  };
-  const HandState before = pushed(pushed(pinch, 0, -s.axis, 0.008), 1, s.axis, 0.008);
-  const HandState through = pushed(pushed(pinch, 0, s.axis, 0.01), 1, -s.axis, 0.01);
+  const HandState before = pad_pushed(pose, pad_pushed(pose, pinch, 0, -s.axis, 0.008), 1, s.axis, 0.008);
+  const HandState held = pad_pushed(pose, pad_pushed(pose, pinch, 0, s.axis, pressed), 1, -s.axis, pressed);
   s.steps = 300;
-  s.haptic = [before, through](int32_t t) {
-    return t < 120 ? mix(open_hand(), before, t / 100.0) : mix(before, through, (t - 120) / 120.0);
+  s.haptic = [before, held](int32_t t) {
+    return t < 120 ? mix(open_hand(), before, t / 100.0) : mix(before, held, (t - 120) / 120.0);
   };
-  s.held = through;
+  s.held = held;
   return s;
 }
+
+namespace {
 
 // the hand lowered into a bowl with its fingers curling
 HandScenario bowl_press() {
@@ -238,7 +273,7 @@ HandScenario make_hand_scenario(const std::string& name) {
   if (name == "box_press") s = box_press();
   else if (name == "ball_grasp") s = ball_grasp(sample_tree("ball"));
   else if (name == "slide") s = slide();
-  else if (name == "plate_pinch") s = plate_pinch();
+  else if (name == "plate_pinch") s = plate_pinch(0.01);  // pads pushed 1 cm through
   else if (name == "bowl_press") s = bowl_press();
   else if (name == "plate_teleport") s = plate_teleport();
   else if (name == "start_inside") s = start_inside();

@@ -3,11 +3,93 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/matrix.hpp>
 
 #include "core/error.h"
+#include "core/validate.h"
 #include "runtime/periodic_clock.h"
 
 namespace frusta {
+
+namespace {
+
+// a rotation whose columns are further than this from orthonormal was not meant as one
+constexpr double kOrthonormalTolerance = 1e-6;
+// a dynamic object faster than this has been flung by a bug or absurd input: capped,
+// so that it stays a finite pose the solver can meet
+constexpr double kMaxLinearSpeed = 100.0;   // m/s
+constexpr double kMaxAngularSpeed = 1000.0; // rad/s
+
+vec3 clamp_length(const vec3& v, double limit) {
+  const double length = glm::length(v);
+  return length > limit ? v * (limit / length) : v;
+}
+
+}  // namespace
+
+frusta_result check_rigid_pose(const RigidPose& pose, const char* name) {
+  char field[96];
+  std::snprintf(field, sizeof field, "%s.position", name);
+  if (frusta_result r = check_bounded(glm::value_ptr(pose.position), 3, kMaxCoordinate, field))
+    return r;
+  std::snprintf(field, sizeof field, "%s.rotation", name);
+  if (frusta_result r = check_finite(glm::value_ptr(pose.rotation), 9, field)) return r;
+  const glm::dmat3 gram = glm::transpose(pose.rotation) * pose.rotation;
+  double worst = 0.0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) worst = std::max(worst, std::fabs(gram[i][j] - (i == j ? 1.0 : 0.0)));
+  if (worst > kOrthonormalTolerance || glm::determinant(pose.rotation) < 0.0)
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE,
+                "%s is not a rotation (R^T R differs from I by %g, det %g)", field, worst,
+                glm::determinant(pose.rotation));
+  return FRUSTA_OK;
+}
+
+frusta_result check_object_def(const ObjectDef& def) {
+  if (frusta_result r = check_rigid_pose(def.pose, "object pose")) return r;
+  if (frusta_result r = check_force_material(def.material, "object material")) return r;
+  if (frusta_result r = check_range(def.mass, 0.0, 1e6, true, "object mass")) return r;
+  for (int k = 0; k < 3; ++k)
+    if (frusta_result r = check_range(def.inertia[k], 0.0, 1e6, true, "object inertia")) return r;
+  if (frusta_result r = check_bounded(glm::value_ptr(def.linear_velocity), 3, kMaxLinearSpeed,
+                                      "object linear_velocity"))
+    return r;
+  if (frusta_result r = check_bounded(glm::value_ptr(def.angular_velocity), 3, kMaxAngularSpeed,
+                                      "object angular_velocity"))
+    return r;
+  if (frusta_result r = check_range(def.linear_damping, 0.0, 1e3, false, "object linear_damping"))
+    return r;
+  return check_range(def.angular_damping, 0.0, 1e3, false, "object angular_damping");
+}
+
+frusta_result check_world_def(const WorldDef& def) {
+  if (frusta_result r = check_range(def.rate_hz, 1.0, 100000.0, false, "rate_hz")) return r;
+  if (frusta_result r = check_range(def.spin_us, 0.0, 1e6 / def.rate_hz, false, "spin_us"))
+    return r;
+  if (frusta_result r = check_bounded(glm::value_ptr(def.gravity), 3, 1e3, "gravity")) return r;
+  if (def.max_objects < 1 || def.max_objects > 65536)
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "max_objects is %d, must be 1..65536", def.max_objects);
+  if (def.max_contacts_per_hand < 0 || def.max_contacts_per_hand > 65536)
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "max_contacts_per_hand is %d, must be 0..65536",
+                def.max_contacts_per_hand);
+  if (def.command_capacity < 1 || def.command_capacity > 1 << 20)
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "command_capacity is %d, must be 1..2^20",
+                def.command_capacity);
+  const DeviceLimits& l = def.device_limits;
+  const double any = 1e9;
+  if (frusta_result r = check_range(l.max_fingertip_force, 0.0, any, false, "max_fingertip_force"))
+    return r;
+  if (frusta_result r =
+          check_range(l.max_finger_resistance, 0.0, any, false, "max_finger_resistance"))
+    return r;
+  if (frusta_result r = check_range(l.max_joint_torque, 0.0, any, false, "max_joint_torque"))
+    return r;
+  if (frusta_result r = check_range(l.max_palm_force, 0.0, any, false, "max_palm_force")) return r;
+  return check_range(l.max_palm_torque, 0.0, any, false, "max_palm_torque");
+}
 
 World::World(const WorldDef& def)
     : def_(def),
@@ -18,16 +100,25 @@ World::World(const WorldDef& def)
   for (int32_t s = def.max_objects - 1; s >= 0; --s) host_free_.push_back(s);
   active_.reserve(static_cast<size_t>(def.max_objects));
   active_slot_.reserve(static_cast<size_t>(def.max_objects));
+  active_material_.reserve(static_cast<size_t>(def.max_objects));
+  hand_reactions_.resize(static_cast<size_t>(def.max_objects));
+  WorldSnapshot prototype;
+  prototype.objects.resize(static_cast<size_t>(def.max_objects));
+  output_.reset(prototype);
 }
 
 frusta_result World::add_hand(const HandModel& model, int32_t* out_hand) {
   if (running() || step_ > 0)
     return fail(FRUSTA_ERROR_WRONG_STATE, "hands are added before the world's first step");
   if (frusta_result r = HandSolver::check_params(def_.solver, model)) return r;
-  hands_.push_back(std::make_unique<HandSlot>(model, def_.solver, HandState{}));
+  hands_.push_back(std::make_unique<HandSlot>(model, def_.solver, def_.max_contacts_per_hand));
   WorldSnapshot prototype;
   prototype.hands.resize(hands_.size());
-  for (HandSnapshot& h : prototype.hands) h.contacts.resize(static_cast<size_t>(def_.max_contacts_per_hand));
+  for (HandSnapshot& h : prototype.hands) {
+    h.contacts.resize(static_cast<size_t>(def_.max_contacts_per_hand));
+    h.forces.resize(static_cast<size_t>(def_.max_contacts_per_hand));
+  }
+  prototype.objects.resize(static_cast<size_t>(def_.max_objects));
   output_.reset(prototype);
   *out_hand = static_cast<int32_t>(hands_.size()) - 1;
   return FRUSTA_OK;
@@ -57,23 +148,32 @@ frusta_result World::check_handle(ObjectHandle object) const {
   return FRUSTA_OK;
 }
 
-frusta_result World::add_object(std::shared_ptr<const TreeFile> tree, const RigidPose& pose,
+frusta_result World::add_object(std::shared_ptr<const TreeFile> tree, const ObjectDef& def,
                                 ObjectHandle* out) {
   release_retired();
   if (!tree) return fail(FRUSTA_ERROR_NULL_POINTER, "tree is null");
+  if (frusta_result r = check_object_def(def)) return r;
   if (host_free_.empty())
     return fail(FRUSTA_ERROR_CAPACITY, "the world holds max_objects (%d) objects", def_.max_objects);
   const int32_t slot = host_free_.back();
   Command c;
   c.kind = CommandKind::kAdd;
   c.slot = slot;
-  c.pose = pose;
+  c.generation = host_generation_[static_cast<size_t>(slot)];
+  c.def = def;
   c.tree = tree.get();
   if (frusta_result r = queue(c)) return r;
   host_free_.pop_back();
   host_trees_[static_cast<size_t>(slot)] = std::move(tree);
-  *out = {slot, host_generation_[static_cast<size_t>(slot)]};
+  *out = {slot, c.generation};
   return FRUSTA_OK;
+}
+
+frusta_result World::add_object(std::shared_ptr<const TreeFile> tree, const RigidPose& pose,
+                                ObjectHandle* out) {
+  ObjectDef def;
+  def.pose = pose;
+  return add_object(std::move(tree), def, out);
 }
 
 frusta_result World::remove_object(ObjectHandle object) {
@@ -94,10 +194,20 @@ frusta_result World::remove_object(ObjectHandle object) {
 
 frusta_result World::set_object_pose(ObjectHandle object, const RigidPose& pose) {
   if (frusta_result r = check_handle(object)) return r;
+  if (frusta_result r = check_rigid_pose(pose, "pose")) return r;
   Command c;
   c.kind = CommandKind::kPose;
   c.slot = object.slot;
-  c.pose = pose;
+  c.def.pose = pose;
+  return queue(c);
+}
+
+frusta_result World::set_object_dynamic(ObjectHandle object, bool dynamic) {
+  if (frusta_result r = check_handle(object)) return r;
+  Command c;
+  c.kind = CommandKind::kDynamic;
+  c.slot = object.slot;
+  c.def.dynamic = dynamic;
   return queue(c);
 }
 
@@ -116,21 +226,42 @@ void World::apply_commands() {
   uint64_t applied = 0;
   while (commands_.pop(c)) {
     ObjectSlot& slot = slots_[static_cast<size_t>(c.slot)];
-    if (c.kind == CommandKind::kAdd) slot = {c.tree, c.pose};
-    if (c.kind == CommandKind::kRemove) slot.tree = nullptr;
-    if (c.kind == CommandKind::kPose) slot.pose = c.pose;
+    switch (c.kind) {
+      case CommandKind::kAdd:
+        slot.tree = c.tree;
+        slot.generation = c.generation;
+        slot.def = c.def;
+        break;
+      case CommandKind::kRemove:
+        slot.tree = nullptr;
+        break;
+      case CommandKind::kPose:
+        slot.def.pose = c.def.pose;
+        slot.def.linear_velocity = slot.def.angular_velocity = vec3(0.0);
+        break;
+      case CommandKind::kDynamic:
+        slot.def.dynamic = c.def.dynamic;
+        slot.def.linear_velocity = slot.def.angular_velocity = vec3(0.0);
+        break;
+    }
     changed = true;
     ++applied;
   }
   if (!changed) return;
+  rebuild_active();
+  applied_.fetch_add(applied, std::memory_order_release);
+}
+
+void World::rebuild_active() {
   active_.clear();  // within the capacity reserved up front: no allocation
   active_slot_.clear();
+  active_material_.clear();
   for (size_t s = 0; s < slots_.size(); ++s)
     if (slots_[s].tree) {
-      active_.push_back({&slots_[s].tree->tree, slots_[s].pose});
+      active_.push_back({&slots_[s].tree->tree, slots_[s].def.pose});
       active_slot_.push_back(static_cast<int32_t>(s));
+      active_material_.push_back(slots_[s].def.material);
     }
-  applied_.fetch_add(applied, std::memory_order_release);
 }
 
 World::~World() { stop(); }
@@ -138,9 +269,11 @@ World::~World() { stop(); }
 frusta_result World::step() {
   if (running())
     return fail(FRUSTA_ERROR_WRONG_STATE, "the world's own thread is stepping it: stop() it first");
-  step_once();
+  step_once(1.0 / def_.rate_hz);
   return FRUSTA_OK;
 }
+
+frusta_result World::start() { return start(def_.rate_hz, def_.spin_us); }
 
 frusta_result World::start(double rate_hz, double spin_us) {
   if (!(rate_hz >= 1.0 && rate_hz <= 100000.0))
@@ -163,39 +296,123 @@ void World::run(double rate_hz, double spin_us) {
   PeriodicClock clock(duration_cast<PeriodicClock::Clock::duration>(duration<double>(1.0 / rate_hz)),
                       duration_cast<PeriodicClock::Clock::duration>(duration<double, std::micro>(spin_us)));
   clock.start();
+  const auto started = steady_clock::now();
+  int64_t steps = 0;
   while (running_.load(std::memory_order_acquire)) {
     lateness_.record(duration<double, std::micro>(clock.wait()).count());
     overruns_ = clock.missed();
-    step_once();
+    ++steps;
+    achieved_rate_hz_ = static_cast<double>(steps) / duration<double>(steady_clock::now() - started).count();
+    step_once(1.0 / rate_hz);
   }
 }
 
-void World::step_once() {
+void World::step_hand(HandSlot& hand, HandSnapshot& snap, double dt) {
+  if (hand.input.fresh()) hand.has_input = true;
+  const HandState& haptic = hand.input.read();
+  if (!hand.has_input) return;  // nothing to solve before the first input
+  const int32_t object_count = static_cast<int32_t>(active_.size());
+  StepStats stats;
+  if (hand.solver.step(haptic, active_.data(), object_count, &stats) == FRUSTA_OK) {
+    hand.accepted = haptic;
+  } else {
+    ++rejected_;  // the graphic hand stays as it was, the forces follow the last good input
+  }
+  snap.haptic = hand.accepted;
+  snap.graphic = hand.solver.graphic();
+  snap.stats = stats;
+  snap.solved = hand.solver.started();
+  const std::vector<SolverContact>& contacts = hand.solver.contacts();
+  snap.contact_count = static_cast<int32_t>(contacts.size());
+  snap.device = DeviceOutputs{};
+  snap.force_stats = ContactForceStats{};
+  if (!snap.solved) return;
+
+  // forces on the contacts the snapshot keeps; the table holds as many
+  haptic_hand_pose(hand.solver.model(), hand.accepted, hand.haptic_pose);
+  hand.forces.set_time_step(dt);  // in range: the rate was checked
+  const int32_t kept = std::min(snap.contact_count, def_.max_contacts_per_hand);
+  if (hand.forces.update(hand.solver.graphic_pose(), hand.haptic_pose, contacts.data(), kept,
+                         active_.data(), object_count, active_material_.data(),
+                         &snap.force_stats) != FRUSTA_OK ||
+      compute_device_outputs(hand.haptic_pose, hand.forces.forces().data(), kept, active_.data(),
+                             object_count, def_.device_limits, &snap.device,
+                             hand_reactions_.data()) != FRUSTA_OK) {
+    // the solver's own output was refused: a bug, kept visible rather than hidden
+    ++rejected_;
+    return;
+  }
+  snap.force_stats.dropped = snap.contact_count - kept;
+  for (int32_t i = 0; i < kept; ++i) {
+    const size_t k = static_cast<size_t>(i);
+    const int32_t slot = active_slot_[static_cast<size_t>(contacts[k].object)];
+    snap.contacts[k] = contacts[k];
+    snap.contacts[k].object = slot;
+    snap.forces[k] = hand.forces.forces()[k];
+    snap.forces[k].object = slot;
+  }
+  for (int32_t a = 0; a < object_count; ++a) {
+    ObjectWrench& total = slots_[static_cast<size_t>(active_slot_[static_cast<size_t>(a)])].reaction;
+    total.force += hand_reactions_[static_cast<size_t>(a)].force;
+    total.torque += hand_reactions_[static_cast<size_t>(a)].torque;
+  }
+}
+
+void World::move_dynamic_objects(double dt) {
+  bool moved = false;
+  for (ObjectSlot& slot : slots_) {
+    if (!slot.tree || !slot.def.dynamic) continue;
+    ObjectDef& o = slot.def;
+    // semi-implicit Euler: velocities first, then the pose with the new velocities,
+    // stable for the contact springs at the world's rate (stiffness / mass << rate^2)
+    const vec3 force = slot.reaction.force + o.mass * def_.gravity;
+    o.linear_velocity += dt / o.mass * force;
+    const glm::dmat3& r = o.pose.rotation;
+    const glm::dmat3 inertia = r * glm::dmat3(o.inertia.x, 0, 0, 0, o.inertia.y, 0, 0, 0, o.inertia.z) *
+                               glm::transpose(r);
+    const vec3 spin = inertia * o.angular_velocity;
+    const vec3 torque = slot.reaction.torque - glm::cross(o.angular_velocity, spin);
+    o.angular_velocity += dt * (glm::inverse(inertia) * torque);
+    o.linear_velocity = clamp_length(o.linear_velocity * std::max(0.0, 1.0 - o.linear_damping * dt),
+                                     kMaxLinearSpeed);
+    o.angular_velocity = clamp_length(
+        o.angular_velocity * std::max(0.0, 1.0 - o.angular_damping * dt), kMaxAngularSpeed);
+
+    vec3 position = o.pose.position + dt * o.linear_velocity;
+    if (glm::any(glm::greaterThan(glm::abs(position), vec3(kMaxCoordinate)))) {
+      // the world's edge: an object dropped with nothing below stops there
+      position = glm::clamp(position, vec3(-kMaxCoordinate), vec3(kMaxCoordinate));
+      o.linear_velocity = vec3(0.0);
+    }
+    o.pose.position = position;
+    const glm::dquat q = glm::quat_cast(r);
+    const glm::dquat turn(0.0, o.angular_velocity * (0.5 * dt));
+    o.pose.rotation = glm::mat3_cast(glm::normalize(q + turn * q));
+    moved = true;
+  }
+  if (moved) rebuild_active();
+}
+
+void World::step_once(double dt) {
   const auto start = std::chrono::steady_clock::now();
   apply_commands();
+  for (ObjectSlot& slot : slots_) slot.reaction = ObjectWrench{};
   WorldSnapshot& out = output_.write_slot();
-  for (size_t h = 0; h < hands_.size(); ++h) {
-    HandSlot& hand = *hands_[h];
-    HandSnapshot& snap = out.hands[h];
-    if (hand.input.fresh()) hand.has_input = true;
-    const HandState& haptic = hand.input.read();
-    if (!hand.has_input) continue;  // nothing to solve before the first input
-    StepStats stats;
-    if (hand.solver.step(haptic, active_.data(), static_cast<int32_t>(active_.size()), &stats) != FRUSTA_OK)
-      ++rejected_;  // the graphic hand stays as it was
-    snap.haptic = haptic;
-    snap.graphic = hand.solver.graphic();
-    snap.stats = stats;
-    snap.solved = hand.solver.started();
-    const std::vector<SolverContact>& contacts = hand.solver.contacts();
-    snap.contact_count = static_cast<int32_t>(contacts.size());
-    const size_t kept = std::min(contacts.size(), snap.contacts.size());
-    for (size_t i = 0; i < kept; ++i) {
-      snap.contacts[i] = contacts[i];
-      snap.contacts[i].object = active_slot_[static_cast<size_t>(contacts[i].object)];  // a slot
-    }
+  for (size_t h = 0; h < hands_.size(); ++h) step_hand(*hands_[h], out.hands[h], dt);
+  for (size_t s = 0; s < slots_.size(); ++s) {
+    const ObjectSlot& slot = slots_[s];
+    ObjectSnapshot& o = out.objects[s];
+    o.present = slot.tree != nullptr;
+    o.dynamic = slot.def.dynamic;
+    o.generation = slot.generation;
+    o.pose = slot.def.pose;  // where the hands met it this step
+    o.linear_velocity = slot.def.linear_velocity;
+    o.angular_velocity = slot.def.angular_velocity;
+    o.reaction = slot.reaction;
   }
+  move_dynamic_objects(dt);
   out.step = ++step_;
+  out.time = time_ += dt;
   out.rejected_inputs = rejected_;
   histogram_.record(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count());
   out.step_us_p50 = histogram_.percentile(0.5);
@@ -205,6 +422,7 @@ void World::step_once() {
   out.wake_late_us_p99 = lateness_.percentile(0.99);
   out.wake_late_us_max = lateness_.max();
   out.overruns = overruns_;
+  out.achieved_rate_hz = achieved_rate_hz_;
   output_.publish();
 }
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// A world: hands, objects and the step that turns haptic hands into graphic hands.
+// A world: hands, objects and the step that turns haptic hands into graphic hands,
+// contact forces, what each device receives and what each object receives.
 // The host and the stepping thread never wait for each other:
 //  - object commands (add, remove, move) go through a lock-free queue and take effect
 //    at the next step boundary;
@@ -22,6 +23,9 @@
 #include <utility>
 #include <vector>
 
+#include "forces/contact_forces.h"
+#include "forces/device_outputs.h"
+#include "forces/force_params.h"
 #include "frusta/frusta.h"
 #include "runtime/spsc_queue.h"
 #include "runtime/step_histogram.h"
@@ -33,9 +37,30 @@ namespace frusta {
 
 struct WorldDef {
   SolverParams solver;
+  DeviceLimits device_limits;  // every hand's outputs are clamped to these
+  // on dynamic objects, m/s^2; off by default: a host whose own engine moves the
+  // objects (Unity's Rigidbody) owns gravity, and the world's objects stay kinematic
+  vec3 gravity{0.0};
+  double rate_hz = 1000.0;  // the own thread's rate, and so dynamic objects' time step
+  double spin_us = 200.0;   // the own thread spins this long before each tick
   int32_t max_objects = 64;
   int32_t max_contacts_per_hand = 256;  // reported per snapshot; more are counted, not kept
   int32_t command_capacity = 256;
+};
+
+// An object as the host adds it. Kinematic objects go where the host puts them;
+// dynamic ones the world moves at its rate under the hands' reactions and gravity,
+// which is what lets a hand grasp, lift, carry and drop them at 1 kHz.
+struct ObjectDef {
+  RigidPose pose;  // of the object frame: its origin is the centre of mass
+  ForceMaterial material;
+  bool dynamic = false;
+  double mass = 0.1;          // kilograms, > 0
+  vec3 inertia{4e-5};         // principal moments in the object frame, kg m^2, > 0
+  vec3 linear_velocity{0.0};  // m/s, world frame
+  vec3 angular_velocity{0.0}; // rad/s, world frame
+  double linear_damping = 0.0;   // 1/s: the velocity lost per second, as a fraction
+  double angular_damping = 0.0;  // 1/s
 };
 
 // Names an object slot; a removed object's handle turns stale through the generation.
@@ -49,19 +74,43 @@ struct HandSnapshot {
   HandState haptic;       // the input this step used
   int32_t contact_count = 0;  // all of them, even beyond the kept ones
   std::vector<SolverContact> contacts;  // sized once, at max_contacts_per_hand
+  // forces[i] belongs to contacts[i] (object: a slot), for the kept contacts
+  std::vector<ContactForce> forces;
+  ContactForceStats force_stats;
+  DeviceOutputs device;  // clamped to WorldDef::device_limits
   StepStats stats;
   bool solved = false;    // false until the hand's first valid haptic input
 };
 
+// One object slot as the step left it.
+struct ObjectSnapshot {
+  bool present = false;
+  bool dynamic = false;
+  uint32_t generation = 0;  // with the slot, the handle of the object in it
+  RigidPose pose;
+  vec3 linear_velocity{0.0};
+  vec3 angular_velocity{0.0};
+  ObjectWrench reaction;  // from every hand this step: what a host's engine applies
+};
+
 struct WorldSnapshot {
   uint64_t step = 0;
+  double time = 0.0;  // seconds: steps times the time step
   std::vector<HandSnapshot> hands;
+  std::vector<ObjectSnapshot> objects;  // one per slot, max_objects
   double step_us_p50 = 0.0, step_us_p99 = 0.0, step_us_max = 0.0;
   // on the world's own thread only: how late each tick woke, and ticks lost to overruns
   double wake_late_us_p50 = 0.0, wake_late_us_p99 = 0.0, wake_late_us_max = 0.0;
   int64_t overruns = 0;
+  double achieved_rate_hz = 0.0;  // own thread: steps over the time since start()
   int64_t rejected_inputs = 0;  // haptic inputs the solver refused (NaN, absurd)
 };
+
+// Every field finite, the rotation orthonormal, the position within kMaxCoordinate;
+// the thread's error names `name` and the field.
+frusta_result check_rigid_pose(const RigidPose& pose, const char* name);
+frusta_result check_object_def(const ObjectDef& def);
+frusta_result check_world_def(const WorldDef& def);
 
 class World {
  public:
@@ -75,10 +124,15 @@ class World {
 
   // Host thread. Queued; applied at the next step boundary. The tree stays alive as
   // long as the world holds it (and is released on the host thread, never in a step).
+  frusta_result add_object(std::shared_ptr<const TreeFile> tree, const ObjectDef& def,
+                           ObjectHandle* out);
   frusta_result add_object(std::shared_ptr<const TreeFile> tree, const RigidPose& pose,
                            ObjectHandle* out);
   frusta_result remove_object(ObjectHandle object);
+  // Puts the object there at rest (a dynamic object's velocities are zeroed).
   frusta_result set_object_pose(ObjectHandle object, const RigidPose& pose);
+  // Hand the object to the world's dynamics, or take it back (at rest) for the host.
+  frusta_result set_object_dynamic(ObjectHandle object, bool dynamic);
 
   // Any one thread per hand: the newest haptic hand wins. Bad values are the solver's
   // to refuse (counted in the snapshot); a hand index the world lacks is refused here.
@@ -90,7 +144,8 @@ class World {
 
   // Host thread: run step() on the world's own thread at `rate_hz` on absolute
   // deadlines (sleep, then spin the last `spin_us`), until stop(). No thread exists
-  // until start() is called.
+  // until start() is called. The first form uses the def's rate and spin.
+  frusta_result start();
   frusta_result start(double rate_hz, double spin_us);
   void stop();
   bool running() const { return running_.load(std::memory_order_acquire); }
@@ -102,28 +157,37 @@ class World {
   int32_t hand_count() const { return static_cast<int32_t>(hands_.size()); }
 
  private:
-  enum class CommandKind : int32_t { kAdd, kRemove, kPose };
+  enum class CommandKind : int32_t { kAdd, kRemove, kPose, kDynamic };
   struct Command {
     CommandKind kind = CommandKind::kAdd;
     int32_t slot = -1;
-    RigidPose pose;
+    uint32_t generation = 0;
+    ObjectDef def;  // kAdd: all of it; kPose: the pose; kDynamic: the flag
     const TreeFile* tree = nullptr;  // kAdd: the host keeps it alive in host_trees_
   };
   struct ObjectSlot {  // the stepping thread's view
     const TreeFile* tree = nullptr;
-    RigidPose pose;
+    uint32_t generation = 0;
+    ObjectDef def;  // pose and velocities as the world moves it
+    ObjectWrench reaction;  // this step's, from every hand
   };
   struct HandSlot {
-    explicit HandSlot(const HandModel& model, const SolverParams& params, const HandState& rest)
-        : solver(model, params), input(rest) {}
+    HandSlot(const HandModel& model, const SolverParams& params, int32_t max_contacts)
+        : solver(model, params), input(HandState{}), forces(max_contacts) {}
     HandSolver solver;
     TripleBuffer<HandState> input;
     bool has_input = false;
+    HandState accepted;  // the last haptic input the solver took
+    HandPose haptic_pose;
+    ContactForces forces;
   };
 
   void run(double rate_hz, double spin_us);
-  void step_once();
+  void step_once(double dt);
+  void step_hand(HandSlot& hand, HandSnapshot& snap, double dt);
+  void move_dynamic_objects(double dt);
   void apply_commands();
+  void rebuild_active();
   frusta_result check_handle(ObjectHandle object) const;
   frusta_result queue(const Command& command);
   void release_retired();  // host: drop trees whose removal a step has applied
@@ -142,12 +206,16 @@ class World {
   std::vector<ObjectSlot> slots_;
   std::vector<SolverObject> active_;  // rebuilt when commands change the slots
   std::vector<int32_t> active_slot_;  // the slot behind each active object
+  std::vector<ForceMaterial> active_material_;
+  std::vector<ObjectWrench> hand_reactions_;  // one hand's, per active object
   StepHistogram histogram_;
   uint64_t step_ = 0;
+  double time_ = 0.0;
   int64_t rejected_ = 0;
   TripleBuffer<WorldSnapshot> output_;
   StepHistogram lateness_;
   int64_t overruns_ = 0;
+  double achieved_rate_hz_ = 0.0;
   std::atomic<bool> running_{false};
   std::thread thread_;
 };

@@ -95,9 +95,9 @@ TEST(World, CommandsTakeEffectAtTheNextStepAndStaleHandlesAreRefused) {
     EXPECT_EQ(s.hands[0].graphic.angles[j], clamped.angles[j]);
   // capacity: three slots
   ObjectHandle o[3];
-  for (ObjectHandle& h : o) ASSERT_EQ(world.add_object(ball_tree(), {vec3(1.0), glm::dmat3(1.0)}, &h), FRUSTA_OK);
+  for (ObjectHandle& h : o) ASSERT_EQ(world.add_object(ball_tree(), RigidPose{vec3(1.0), glm::dmat3(1.0)}, &h), FRUSTA_OK);
   ObjectHandle extra;
-  EXPECT_EQ(world.add_object(ball_tree(), {vec3(2.0), glm::dmat3(1.0)}, &extra), FRUSTA_ERROR_CAPACITY);
+  EXPECT_EQ(world.add_object(ball_tree(), RigidPose{vec3(2.0), glm::dmat3(1.0)}, &extra), FRUSTA_ERROR_CAPACITY);
   EXPECT_NE(o[0].generation, 0u);
 }
 
@@ -109,7 +109,7 @@ TEST(World, HoldsATreeUntilAStepHasLetGoOfIt) {
   {
     auto tree = std::make_shared<TreeFile>(*ball_tree());
     watch = tree;
-    ASSERT_EQ(world.add_object(std::move(tree), {vec3(0.5, 0, 0), glm::dmat3(1.0)}, &box), FRUSTA_OK);
+    ASSERT_EQ(world.add_object(std::move(tree), RigidPose{vec3(0.5, 0, 0), glm::dmat3(1.0)}, &box), FRUSTA_OK);
   }
   world.step();
   EXPECT_FALSE(watch.expired()) << "the world holds it";
@@ -148,7 +148,7 @@ TEST(World, TwoHandsAndTwentyObjectsStepWithoutAllocating) {
   ObjectHandle handles[20];
   for (int k = 0; k < 20; ++k) {
     const vec3 at = k == 0 ? kBallPose.position : vec3(0.6 * std::cos(0.3 * k), 0.6 * std::sin(0.3 * k), 0.0);
-    ASSERT_EQ(world.add_object(ball_tree(), {at, glm::dmat3(1.0)}, &handles[k]),
+    ASSERT_EQ(world.add_object(ball_tree(), RigidPose{at, glm::dmat3(1.0)}, &handles[k]),
               FRUSTA_OK);
   }
   HandState closed = scenes::open_hand();

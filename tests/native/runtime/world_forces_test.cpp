@@ -1,0 +1,259 @@
+// SPDX-License-Identifier: MIT
+// The forces a world publishes and the objects it moves, end to end through its step:
+// a fingertip pressed a known depth into a baked box pushes back with stiffness times
+// depth however many leaves it touches; what the hands feel balances what the objects
+// receive; a dynamic object falls exactly as the integrator says, and a ball grasped
+// by a closing hand is lifted, carried and dropped by the contact forces alone.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <glm/geometric.hpp>
+
+#include "hand/hand_model.h"
+#include "runtime/world.h"
+#include "scenes/hand_scenarios.h"
+
+namespace frusta {
+namespace {
+
+constexpr int kIndex = 1;
+constexpr int kIndexTip = kIndex * FRUSTA_SEGMENTS_PER_FINGER + 2;
+
+HandModel right_hand() { return make_hand_model(frusta_default_hand_def()); }
+
+HandPose pose_of(const HandModel& model, const HandState& state) {
+  HandPose pose;
+  forward_kinematics(model, state, pose);
+  return pose;
+}
+
+int32_t add_hand(World& world, const HandModel& model) {
+  int32_t hand = -1;
+  EXPECT_EQ(world.add_hand(model, &hand), FRUSTA_OK);
+  return hand;
+}
+
+// 0 to 1 with zero velocity at both ends: a hand carrying something starts and stops gently
+double smooth(double t) {
+  t = std::clamp(t, 0.0, 1.0);
+  return t * t * (3.0 - 2.0 * t);
+}
+
+vec3 total_force(const ContactForce& c) { return c.normal_force + c.friction; }
+
+TEST(WorldForces, FingertipPressedIntoABakedBoxFeelsStiffnessTimesDepth) {
+  // a 2 cm box whose top face touches the open hand's index fingertip from below
+  const HandModel model = right_hand();
+  const HandPose open = pose_of(model, scenes::open_hand());
+  const vec3 tip = open.fingers[kIndex].joint[3];
+  const double half = 0.01;
+  // from 5 mm behind the tip's centre on: under the distal segment only
+  const vec3 centre =
+      tip + vec3(half - 0.005, 0.0, -(model.fingers[kIndex].radius[3] + half));
+  ObjectDef box;
+  box.pose.position = centre;
+  box.material.normal_stiffness = vec3(600.0);
+  World world(WorldDef{});
+  const int32_t hand = add_hand(world, model);
+  ObjectHandle handle;
+  ASSERT_EQ(world.add_object(scenes::baked_box(vec3(2 * half), 0.0002), box, &handle), FRUSTA_OK);
+
+  for (double depth : {0.001, 0.003, 0.006}) {
+    // the hand lowered; the solver keeps the fingertip on the face (the palm pivots a
+    // little about it), so the gap P_ig - P_ih is measured, not assumed
+    for (int t = 0; t < 20; ++t) {
+      world.set_haptic(hand, scenes::open_hand(vec3(0.0, 0.0, -depth)));
+      world.step();
+    }
+    const WorldSnapshot& snap = world.read();
+    const HandSnapshot& h = snap.hands[static_cast<size_t>(hand)];
+    ASSERT_GT(h.contact_count, 2) << "the tip rests on several leaves";
+    vec3 on_tip(0.0), friction(0.0);
+    double gap = 0.0;
+    for (int32_t i = 0; i < h.contact_count; ++i) {
+      const ContactForce& c = h.forces[static_cast<size_t>(i)];
+      ASSERT_EQ(c.body, kIndexTip);
+      on_tip += c.normal_force;
+      friction += c.friction;
+      gap += glm::length(c.graphic_point - c.haptic_point) / h.contact_count;
+    }
+    EXPECT_GT(gap, depth) << "at least the depth the hand was lowered";
+    // one face's worth, however many leaves: the leaves' caps tilt their normals a few
+    // degrees off the face's, which shortens the sum by their spread only
+    EXPECT_NEAR(glm::length(on_tip), 600.0 * gap, 0.02 * 600.0 * gap) << depth;
+    EXPECT_GT(on_tip.z, 0.98 * glm::length(on_tip)) << "out of the top face";
+    const vec3 total = on_tip + friction;
+    EXPECT_NEAR(glm::length(h.device.fingertip_force[kIndex]), glm::length(total), 1e-9);
+    EXPECT_NEAR(h.device.finger_resistance[kIndex], glm::length(total), 1e-9);
+  }
+}
+
+TEST(WorldForces, WhatTheHandsFeelBalancesWhatTheObjectsReceive) {
+  const std::shared_ptr<const TreeFile> ball = scenes::ball_shell(500, 0.04);
+  const scenes::HandScenario grasp = scenes::ball_grasp(ball);
+  World world(WorldDef{});
+  const HandModel right = right_hand();
+  const int32_t first = add_hand(world, right), second = add_hand(world, right);
+  ObjectHandle a, b;
+  ASSERT_EQ(world.add_object(ball, grasp.objects[0].pose, &a), FRUSTA_OK);
+  RigidPose shifted = grasp.objects[0].pose;
+  shifted.position.y += 0.5;
+  ASSERT_EQ(world.add_object(ball, shifted, &b), FRUSTA_OK);
+  for (int32_t t = 0; t < grasp.steps; ++t) {
+    world.set_haptic(first, grasp.haptic(t));
+    HandState other = grasp.haptic(t);
+    other.palm_position.y += 0.5;
+    world.set_haptic(second, other);
+    world.step();
+  }
+  const WorldSnapshot& snap = world.read();
+  vec3 force(0.0), torque(0.0);  // on the hands, torque about the origin
+  for (const HandSnapshot& h : snap.hands) {
+    ASSERT_GT(h.force_stats.pressing, 3);
+    for (int32_t i = 0; i < h.contact_count; ++i) {
+      const ContactForce& c = h.forces[static_cast<size_t>(i)];
+      force += total_force(c);
+      torque += glm::cross(c.graphic_point, total_force(c));
+    }
+  }
+  vec3 reaction(0.0), reaction_torque(0.0);
+  for (const ObjectSnapshot& o : snap.objects) {
+    if (!o.present) continue;
+    reaction += o.reaction.force;
+    reaction_torque += o.reaction.torque + glm::cross(o.pose.position, o.reaction.force);
+  }
+  ASSERT_GT(glm::length(force), 1.0);
+  const double scale = glm::length(force);
+  EXPECT_LT(glm::length(force + reaction), 1e-12 * scale);
+  EXPECT_LT(glm::length(torque + reaction_torque), 1e-12 * scale);
+}
+
+TEST(WorldForces, ADynamicObjectFallsAsTheIntegratorSays) {
+  // semi-implicit Euler from rest: after n steps v = n g dt, z = g dt^2 n (n + 1) / 2
+  WorldDef def;
+  def.gravity = vec3(0.0, 0.0, -9.81);
+  World world(def);
+  ObjectDef ball;
+  ball.dynamic = true;
+  ball.pose.position = vec3(1.0, 2.0, 3.0);
+  ObjectHandle handle;
+  ASSERT_EQ(world.add_object(scenes::ball_shell(50, 0.02), ball, &handle), FRUSTA_OK);
+  const double dt = 1.0 / def.rate_hz;
+  for (int n = 1; n <= 500; ++n) world.step();
+  world.step();  // the snapshot shows the pose the step met: 500 steps moved it
+  const ObjectSnapshot& o = world.read().objects[static_cast<size_t>(handle.slot)];
+  EXPECT_NEAR(o.pose.position.z, 3.0 - 9.81 * dt * dt * 500 * 501 / 2, 1e-12);
+  EXPECT_NEAR(o.linear_velocity.z, -9.81 * dt * 500, 1e-12);
+  EXPECT_EQ(o.pose.position.x, 1.0);
+
+  // taken back by the host: at rest where it is put
+  ASSERT_EQ(world.set_object_dynamic(handle, false), FRUSTA_OK);
+  for (int n = 0; n < 10; ++n) world.step();
+  const ObjectSnapshot& still = world.read().objects[static_cast<size_t>(handle.slot)];
+  EXPECT_EQ(still.linear_velocity.z, 0.0);
+  EXPECT_EQ(still.pose.position.z, o.pose.position.z - 9.81 * dt * dt * 501);
+}
+
+TEST(WorldForces, ABoxOnAnOpenPalmIsLiftedCarriedAndTippedOff) {
+  const HandModel model = right_hand();
+  WorldDef def;
+  def.gravity = vec3(0.0, 0.0, -9.81);
+  World world(def);
+  const int32_t hand = add_hand(world, model);
+  // palm up: the hand turned over about its long axis, fingers curled a little
+  const glm::dquat up = scenes::about(vec3(1, 0, 0), M_PI);
+  HandState palm_up = scenes::open_hand(vec3(0.0), up);
+  for (int f = 1; f < 5; ++f) scenes::set_flexion(palm_up, f, 0.3, 0.3, 0.3);
+  double top = 0.0, centre_x = 0.0;  // of the palm spheres, turned over
+  for (const Sphere& p : model.palm_spheres) {
+    top = std::max(top, -p.center.z + p.radius);
+    centre_x += p.center.x / static_cast<double>(model.palm_spheres.size());
+  }
+  // a 5 cm box of 50 g dropped from 1 mm onto the palm
+  ObjectDef object;
+  object.pose.position = vec3(centre_x, 0.0, top + 0.025 + 0.001);
+  object.dynamic = true;
+  object.mass = 0.05;
+  object.inertia = vec3(object.mass * 0.05 * 0.05 / 6);
+  object.linear_damping = object.angular_damping = 0.5;  // air, roughly
+  object.material.normal_damping = 2.0 * std::sqrt(kDefaultContactStiffness * object.mass);
+  ObjectHandle handle;
+  ASSERT_EQ(world.add_object(scenes::baked_box(vec3(0.05), 0.0005), object, &handle), FRUSTA_OK);
+  const size_t slot = static_cast<size_t>(handle.slot);
+  const vec3 start = object.pose.position;
+
+  // settle 0.5 s, carry up 15 cm and across over 1 s (gently: the carry starts and
+  // stops at rest), hold 0.5 s
+  const vec3 carry(0.10, 0.05, 0.15);
+  double worst_lag = 0.0, weight_sum = 0.0;
+  for (int t = 0; t <= 2000; ++t) {
+    HandState s = palm_up;
+    s.palm_position += carry * smooth((t - 500) / 1000.0);
+    world.set_haptic(hand, s);
+    world.step();
+    const ObjectSnapshot& o = world.read().objects[slot];
+    if (t >= 500) {
+      worst_lag = std::max(worst_lag, glm::length(o.pose.position - start - carry * smooth((t - 500) / 1000.0)));
+    }
+    if (t > 1800) weight_sum += o.reaction.force.z;
+  }
+  // it sinks by its weight on the palm's springs (and the 1 mm it fell), then moves with it
+  EXPECT_LT(worst_lag, 0.004) << "the box went with the hand";
+  EXPECT_NEAR(weight_sum / 199, object.mass * 9.81, 0.05) << "the hand bears its weight";
+  const ObjectSnapshot& held = world.read().objects[slot];
+  EXPECT_LT(glm::length(held.linear_velocity), 0.02) << "and it rests there";
+
+  // turn the palm down over 0.3 s: the box falls off
+  for (int t = 0; t <= 600; ++t) {
+    HandState s = palm_up;
+    s.palm_position += carry;
+    s.palm_rotation = glm::slerp(up, glm::dquat(1, 0, 0, 0), smooth(t / 300.0));
+    world.set_haptic(hand, s);
+    world.step();
+  }
+  const ObjectSnapshot& dropped = world.read().objects[slot];
+  EXPECT_LT(dropped.pose.position.z, held.pose.position.z - 0.05);
+  EXPECT_LT(dropped.linear_velocity.z, -1.0);
+  EXPECT_EQ(world.read().hands[0].contact_count, 0);
+}
+
+TEST(WorldForces, BadObjectsAreRefusedAndChangeNothing) {
+  World world(WorldDef{});
+  const std::shared_ptr<const TreeFile> ball = scenes::ball_shell(50, 0.02);
+  ObjectDef def;
+  ObjectHandle handle{-1, 0};
+  auto refused = [&](const ObjectDef& d, frusta_result code) {
+    EXPECT_EQ(world.add_object(ball, d, &handle), code) << frusta_last_error();
+    EXPECT_EQ(handle.slot, -1);
+  };
+  ObjectDef bad = def;
+  bad.mass = 0.0;
+  refused(bad, FRUSTA_ERROR_OUT_OF_RANGE);
+  bad = def;
+  bad.pose.position.x = std::nan("");
+  refused(bad, FRUSTA_ERROR_NOT_FINITE);
+  bad = def;
+  bad.pose.rotation[0][0] = 2.0;  // a scale, not a rotation
+  refused(bad, FRUSTA_ERROR_OUT_OF_RANGE);
+  bad = def;
+  bad.pose.rotation = glm::dmat3(-1.0);  // a reflection
+  refused(bad, FRUSTA_ERROR_OUT_OF_RANGE);
+  bad = def;
+  bad.material.friction = -0.1;
+  refused(bad, FRUSTA_ERROR_OUT_OF_RANGE);
+  bad = def;
+  bad.inertia.y = std::numeric_limits<double>::infinity();
+  refused(bad, FRUSTA_ERROR_NOT_FINITE);
+  world.step();
+  for (const ObjectSnapshot& o : world.read().objects) EXPECT_FALSE(o.present);
+
+  ASSERT_EQ(world.add_object(ball, def, &handle), FRUSTA_OK);
+  RigidPose nowhere;
+  nowhere.position.z = 1e7;
+  EXPECT_EQ(world.set_object_pose(handle, nowhere), FRUSTA_ERROR_OUT_OF_RANGE);
+  world.step();
+  EXPECT_EQ(world.read().objects[static_cast<size_t>(handle.slot)].pose.position, vec3(0.0));
+}
+
+}  // namespace
+}  // namespace frusta
