@@ -217,6 +217,71 @@ TEST(WorldForces, ABoxOnAnOpenPalmIsLiftedCarriedAndTippedOff) {
   EXPECT_EQ(world.read().hands[0].contact_count, 0);
 }
 
+// A ball pinched between thumb and index pads, `pressed` deep each, handed to gravity
+// and carried 19 cm over a second; how far it strays from the hand's path, and where
+// it ends up.
+struct PinchCarry {
+  double worst_lag = 0.0;  // metres
+  double weight_borne = 0.0;  // mean reaction along +z over the last 0.2 s, newtons
+  vec3 end_velocity{0.0};
+};
+
+PinchCarry carry_pinched_ball(double mass, double friction, double pressed) {
+  const scenes::HandScenario pinch = scenes::ball_pinch(pressed);
+  WorldDef def;
+  def.gravity = vec3(0.0, 0.0, -9.81);
+  World world(def);
+  const int32_t hand = add_hand(world, right_hand());
+  ObjectDef object;
+  object.pose = pinch.objects[0].pose;
+  object.mass = mass;
+  object.inertia = vec3(0.4 * mass * 0.015 * 0.015);
+  object.linear_damping = object.angular_damping = 0.5;
+  object.material.friction = friction;
+  object.material.normal_damping = 5.0;
+  ObjectHandle handle;
+  EXPECT_EQ(world.add_object(pinch.trees[0], object, &handle), FRUSTA_OK);
+  const size_t slot = static_cast<size_t>(handle.slot);
+  // the pinch closes while the host holds the ball, then lets go of it
+  for (int32_t t = 0; t < pinch.steps; ++t) {
+    world.set_haptic(hand, pinch.haptic(t));
+    world.step();
+  }
+  EXPECT_EQ(world.set_object_dynamic(handle, true), FRUSTA_OK);
+  world.step();
+  const vec3 start = world.read().objects[slot].pose.position;
+  const vec3 carry(0.10, 0.05, 0.15);
+  PinchCarry result;
+  for (int t = 0; t <= 2000; ++t) {
+    HandState s = pinch.held;
+    s.palm_position += carry * smooth((t - 500) / 1000.0);
+    world.set_haptic(hand, s);
+    world.step();
+    const ObjectSnapshot& o = world.read().objects[slot];
+    result.worst_lag = std::max(
+        result.worst_lag, glm::length(o.pose.position - start - carry * smooth((t - 500) / 1000.0)));
+    if (t > 1800) result.weight_borne += o.reaction.force.z / 200.0;
+    result.end_velocity = o.linear_velocity;
+  }
+  return result;
+}
+
+TEST(WorldForces, APinchedBallIsCarriedWhileMuTimesTheSqueezeBearsItsWeight) {
+  // 3 mm deep a pad at 400 N/m squeezes with about 1.2 N (more where a second segment
+  // touches): at mu 0.8 that bears 50 g, not 200 g
+  const PinchCarry held = carry_pinched_ball(0.05, 0.8, 0.003);
+  EXPECT_LT(held.worst_lag, 0.005) << "the ball went with the hand";
+  EXPECT_NEAR(held.weight_borne, 0.05 * 9.81, 0.1);
+  EXPECT_LT(glm::length(held.end_velocity), 0.05);
+
+  const PinchCarry heavy = carry_pinched_ball(0.2, 0.8, 0.003);
+  EXPECT_GT(heavy.worst_lag, 0.5) << "too heavy for the squeeze: it slips out and falls";
+  EXPECT_LT(heavy.end_velocity.z, -1.0);
+
+  const PinchCarry slippery = carry_pinched_ball(0.05, 0.05, 0.003);
+  EXPECT_GT(slippery.worst_lag, 0.5) << "too slippery for the squeeze";
+}
+
 TEST(WorldForces, BadObjectsAreRefusedAndChangeNothing) {
   World world(WorldDef{});
   const std::shared_ptr<const TreeFile> ball = scenes::ball_shell(50, 0.02);
