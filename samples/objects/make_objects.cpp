@@ -83,6 +83,7 @@ int main(int argc, char** argv) {
     frusta::TriangleMesh mesh;
   } objects[] = {
       {"ball", s::make_sphere(0.04, 32)},                 // a 8 cm ball to grasp
+      {"marble", s::make_sphere(s::kMarbleRadius, 24)},   // to pinch and carry
       {"box", s::make_box(vec3(0.10, 0.06, 0.04), 2)},    // flat faces, right angles
       {"plate", s::make_box(vec3(0.12, 0.08, 0.004), 1)}, // thin: pinch it
       {"bowl", s::make_bowl(0.06, 0.006, 24)},            // concave

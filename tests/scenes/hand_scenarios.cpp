@@ -165,8 +165,10 @@ HandScenario ball_pinch(double pressed) {
   HandScenario s;
   s.axis = axis;
   s.anchor = thumb + axis * (model.fingers[0].radius[3] + gap / 2);
-  s.add(ball_shell(800, gap / 2 - 0.0005), {s.anchor, glm::dmat3(1.0)});
-  const HandState held = pad_pushed(pose, pad_pushed(pose, opened, 0, axis, pressed), 1, -axis, pressed);
+  s.add(ball_shell(800, kMarbleRadius), {s.anchor, glm::dmat3(1.0)});
+  // each pad pushed to the marble's surface, then `pressed` into it
+  const double push = gap / 2 - kMarbleRadius + pressed;
+  const HandState held = pad_pushed(pose, pad_pushed(pose, opened, 0, axis, push), 1, -axis, push);
   s.steps = 300;
   s.haptic = [opened, held](int32_t t) {
     return t < 120 ? mix(open_hand(), opened, t / 100.0) : mix(opened, held, (t - 120) / 120.0);

@@ -53,8 +53,8 @@ HandScenario make_hand_scenario(const std::string& name);
 // it (0.01 in the acceptance scenario, a few mm for a hold); axis: the plate's normal,
 // anchor: its centre.
 HandScenario plate_pinch(double pressed);
-// A ball of about 3 cm between the thumb and index pads, each pushed `pressed` metres
-// into it; axis: from the thumb to the index pad, anchor: the ball's centre.
+// A marble (kMarbleRadius, 1.74 cm across) between the thumb and index pads, each pushed `pressed`
+// metres into it; axis: from the thumb to the index pad, anchor: the marble's centre.
 HandScenario ball_pinch(double pressed);
 // The deep grasp (all fingers closing 1.6 rad) around any ball-like tree of radius 4 cm.
 HandScenario ball_grasp(std::shared_ptr<const TreeFile> ball);

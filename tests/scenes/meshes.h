@@ -7,6 +7,10 @@
 
 namespace frusta::scenes {
 
+// The sample marble's radius: it fits between the thumb and index pads of the pinch
+// scenarios (ball_pinch), opened 1.85 cm apart.
+constexpr double kMarbleRadius = 0.0087;
+
 // UV sphere; `rings` controls the triangle count (about 2 * rings^2).
 TriangleMesh make_sphere(double radius, int rings);
 // Axis-aligned box centred at the origin; each face split into n x n quads.
