@@ -3,6 +3,7 @@
 #include <cstring>
 
 #include "bake/baker.h"
+#include "capi/convert.h"
 #include "capi/tree_registry.h"
 #include "core/error.h"
 #include "core/validate.h"
@@ -14,13 +15,6 @@ namespace {
 
 // a mesh larger than this is a caller's mistake (or garbage), not a game asset
 constexpr int32_t kMaxBakeVertices = 1 << 26;
-
-frusta_result check_bake_def(const frusta_bake_def* def) {
-  if (frusta_result r = check_pointer(def, "def")) return r;
-  if (frusta_result r = check_struct_size(def->struct_size, sizeof(frusta_bake_def), "frusta_bake_def"))
-    return r;
-  return check_def_cookie(def->internal_value, "frusta_bake_def");
-}
 
 frusta_result read_mesh(const float* vertices, int32_t vertex_count, const int32_t* indices,
                         int32_t index_count, TriangleMesh* mesh) {
@@ -68,7 +62,7 @@ FRUSTA_API frusta_result frusta_bake_sphere_tree(const float* vertices, int32_t 
                                                  const int32_t* indices, int32_t index_count,
                                                  const frusta_bake_def* def,
                                                  frusta_tree_id* out_tree) {
-  if (frusta_result r = check_bake_def(def)) return r;
+  if (frusta_result r = check_def_input(def, "frusta_bake_def")) return r;
   if (frusta_result r = check_pointer(out_tree, "out_tree")) return r;
   return guarded("frusta_bake_sphere_tree", [&] {
     TriangleMesh mesh;

@@ -18,16 +18,6 @@ namespace {
 
 constexpr double kDefaultHandLength = 0.19;   // metres, about the adult 50th percentile
 constexpr double kDefaultHandBreadth = 0.085;
-// a joint angle beyond this is garbage from a device, not an extreme pose
-constexpr double kMaxJointAngle = 100.0;
-
-frusta_result check_hand_def_input(const frusta_hand_def* def) {
-  if (frusta_result r = check_pointer(def, "def")) return r;
-  if (frusta_result r = check_struct_size(def->struct_size, sizeof(frusta_hand_def),
-                                          "frusta_hand_def"))
-    return r;
-  return check_def_cookie(def->internal_value, "frusta_hand_def");
-}
 
 frusta_result check_output(int32_t capacity, int32_t needed, const char* what) {
   if (capacity >= needed) return FRUSTA_OK;
@@ -49,7 +39,7 @@ FRUSTA_API frusta_hand_def frusta_default_hand_def(void) {
 
 FRUSTA_API frusta_result frusta_hand_def_set_size(frusta_hand_def* def, double hand_length,
                                                   double hand_breadth) {
-  if (frusta_result r = check_hand_def_input(def)) return r;
+  if (frusta_result r = check_def_input(def, "frusta_hand_def")) return r;
   if (frusta_result r = check_range(hand_length, 0.0, kMaxHandSize, true, "hand_length")) return r;
   if (frusta_result r = check_range(hand_breadth, 0.0, kMaxHandSize, true, "hand_breadth"))
     return r;
@@ -61,7 +51,7 @@ FRUSTA_API frusta_result frusta_hand_def_set_size(frusta_hand_def* def, double h
 }
 
 FRUSTA_API frusta_result frusta_create_hand(const frusta_hand_def* def, frusta_hand_id* out_hand) {
-  if (frusta_result r = check_hand_def_input(def)) return r;
+  if (frusta_result r = check_def_input(def, "frusta_hand_def")) return r;
   if (frusta_result r = check_pointer(out_hand, "out_hand")) return r;
   if (frusta_result r = check_hand_def(*def)) return r;
   return guarded("frusta_create_hand", [&] { return hand_registry().create(*def, out_hand); });
@@ -90,12 +80,7 @@ FRUSTA_API frusta_result frusta_hand_set_joint_angles(frusta_hand_id hand, const
                                                       int32_t count) {
   HandObject* h = nullptr;
   if (frusta_result r = hand_registry().find(hand, &h)) return r;
-  if (frusta_result r = check_pointer(angles, "angles")) return r;
-  if (count != FRUSTA_HAND_JOINT_COUNT)
-    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "count is %d, must be FRUSTA_HAND_JOINT_COUNT (%d)",
-                count, FRUSTA_HAND_JOINT_COUNT);
-  if (frusta_result r = check_bounded(angles, count, kMaxJointAngle, "angles")) return r;
-  std::memcpy(h->state.angles.data(), angles, sizeof(double) * FRUSTA_HAND_JOINT_COUNT);
+  if (frusta_result r = read_joint_angles(angles, count, "angles", &h->state.angles)) return r;
   clamp_to_limits(h->model, h->state);
   forward_kinematics(h->model, h->state, h->pose);
   return FRUSTA_OK;

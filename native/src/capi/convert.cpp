@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "capi/convert.h"
 
+#include <algorithm>
 #include <string>
 
 #include "core/error.h"
@@ -56,8 +57,31 @@ frusta_result read_pose(const frusta_pose* in, const char* name, Pose* out) {
   return FRUSTA_OK;
 }
 
+frusta_result read_joint_angles(const double* in, int32_t count, const char* name,
+                                std::array<double, FRUSTA_HAND_JOINT_COUNT>* out) {
+  if (frusta_result r = check_pointer(in, name)) return r;
+  if (count != FRUSTA_HAND_JOINT_COUNT)
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "count is %d, must be FRUSTA_HAND_JOINT_COUNT (%d)",
+                count, FRUSTA_HAND_JOINT_COUNT);
+  if (frusta_result r = check_bounded(in, count, kMaxJointAngle, name)) return r;
+  std::copy(in, in + FRUSTA_HAND_JOINT_COUNT, out->begin());
+  return FRUSTA_OK;
+}
+
 void store(const vec3& v, double out[3]) {
   for (int k = 0; k < 3; ++k) out[k] = v[k];
+}
+
+void store(const Pose& pose, frusta_pose* out) {
+  store(pose.position, out->position);
+  out->rotation[0] = pose.rotation.x;
+  out->rotation[1] = pose.rotation.y;
+  out->rotation[2] = pose.rotation.z;
+  out->rotation[3] = pose.rotation.w;
+}
+
+Pose to_pose(const vec3& position, const glm::dmat3& rotation) {
+  return {position, glm::normalize(glm::quat_cast(rotation))};
 }
 
 }  // namespace frusta

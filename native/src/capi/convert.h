@@ -3,17 +3,30 @@
 // the offending field in the thread's error and leaves *out untouched on failure.
 #pragma once
 
+#include <array>
 #include <glm/gtc/quaternion.hpp>
 
+#include "core/validate.h"
 #include "frusta/frusta.h"
 #include "geometry/types.h"
 
 namespace frusta {
 
+// a joint angle beyond this is garbage from a device, not an extreme pose
+constexpr double kMaxJointAngle = 100.0;
+
 struct Pose {
   vec3 position{0.0};
   glm::dquat rotation{1.0, 0.0, 0.0, 0.0};  // normalised
 };
+
+// A def from the caller: not null, this library's size, made by its frusta_default_*_def().
+template <class Def>
+frusta_result check_def_input(const Def* def, const char* struct_name) {
+  if (frusta_result r = check_pointer(def, "def")) return r;
+  if (frusta_result r = check_struct_size(def->struct_size, sizeof(Def), struct_name)) return r;
+  return check_def_cookie(def->internal_value, struct_name);
+}
 
 // name prefixes the field names in messages, e.g. "segment" -> "segment.distal[1]"
 frusta_result read_segment(const frusta_segment* in, const char* name, Segment* out);
@@ -21,6 +34,12 @@ frusta_result read_sphere(const frusta_sphere* in, const char* name, Sphere* out
 // Positions within kMaxCoordinate; the quaternion's norm within [0.5, 2] is normalised.
 frusta_result read_pose(const frusta_pose* in, const char* name, Pose* out);
 
+// FRUSTA_HAND_JOINT_COUNT finite angles within kMaxJointAngle; count must equal it.
+frusta_result read_joint_angles(const double* in, int32_t count, const char* name,
+                                std::array<double, FRUSTA_HAND_JOINT_COUNT>* out);
+
 void store(const vec3& v, double out[3]);
+void store(const Pose& pose, frusta_pose* out);
+Pose to_pose(const vec3& position, const glm::dmat3& rotation);
 
 }  // namespace frusta

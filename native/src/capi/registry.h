@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // A pool of standalone objects behind small ids: a destroyed object's id (and
 // every copy of it) turns stale, never dangling, through the slot's generation.
+// Objects are shared: whoever took a reference (a world using a tree) keeps the
+// object alive past the destruction of its id.
 #pragma once
 
 #include <memory>
@@ -37,7 +39,7 @@ class Registry {
   }
 
   frusta_result destroy(Id id) {
-    std::unique_ptr<Object> doomed;  // freed after the lock is released
+    std::shared_ptr<Object> doomed;  // released after the lock is
     {
       std::lock_guard<std::mutex> lock(mutex_);
       Object* object = nullptr;
@@ -57,6 +59,15 @@ class Registry {
     return find_locked(id, true, out);
   }
 
+  // The live object of id, shared: it outlives the destruction of its id.
+  frusta_result find_shared(Id id, std::shared_ptr<Object>* out) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    Object* object = nullptr;
+    if (frusta_result r = find_locked(id, true, &object)) return r;
+    *out = slots_[static_cast<size_t>(id.index1 - 1)].object;
+    return FRUSTA_OK;
+  }
+
   bool is_valid(Id id) {
     std::lock_guard<std::mutex> lock(mutex_);
     Object* object = nullptr;
@@ -69,7 +80,7 @@ class Registry {
 
   struct Slot {
     uint16_t generation = 1;  // ids with generation 0 are never issued
-    std::unique_ptr<Object> object;
+    std::shared_ptr<Object> object;
   };
 
   frusta_result find_locked(Id id, bool report, Object** out) {
