@@ -121,6 +121,9 @@ frusta_result check_force_material(const ForceMaterial& m, const char* name) {
   std::snprintf(field, sizeof field, "%s.normal_damping", name);
   if (frusta_result r = check_range(m.normal_damping, 0.0, kMaxContactStiffness, false, field))
     return r;
+  std::snprintf(field, sizeof field, "%s.tangential_damping", name);
+  if (frusta_result r = check_range(m.tangential_damping, 0.0, kMaxContactStiffness, false, field))
+    return r;
   // a friction coefficient above a few is not a material but a typo; 100 leaves room
   std::snprintf(field, sizeof field, "%s.friction", name);
   return check_range(m.friction, 0.0, 100.0, false, field);
@@ -287,7 +290,7 @@ frusta_result ContactForces::update(const HandPose& graphic, const HandPose& hap
     const glm::dmat3 to_object = glm::transpose(object.rotation);
     const RigidPose body_on_object{to_object * (body.position - object.position),
                                    to_object * body.rotation};
-    vec3 stretch(0.0);
+    vec3 stretch(0.0), before_held(0.0);
     if (known) {
       const Patch& before = patches_[old];
       const vec3 reference = haptic_sum * share;  // any material point of the body would do
@@ -295,23 +298,29 @@ frusta_result ContactForces::update(const HandPose& graphic, const HandPose& hap
       const vec3 now = body_on_object.position + body_on_object.rotation * local;
       const vec3 then = before.body.position + before.body.rotation * local;
       stretch = object.rotation * (before.stretch + now - then);
+      before_held = object.rotation * before.stretch;
+      before_held -= glm::dot(before_held, n) * n;
     }
     vec3 held = stretch - glm::dot(stretch, n) * n;
+    // the spring, and the damping on how fast it stretched this step
+    const vec3 slide_rate = (held - before_held) / time_step_;
+    vec3 friction = -material.tangential_stiffness * held - material.tangential_damping * slide_rate;
     const double limit = material.friction * glm::length(patch_force);
-    const double spring = material.tangential_stiffness * glm::length(held);
+    const double pull = glm::length(friction);
     bool slipping = false;
-    if (spring > limit) {
-      // slip: cut the stretch back until the spring pulls with exactly
-      // mu |F|, against the direction the finger slides. The friction is thus the stick
-      // spring projected onto the disc of radius mu |F|: a continuous function of the
-      // motion, equal on both sides of the switch (scale = 1 there), so there is no
-      // jump to chatter between. Reversing the motion unloads the spring smoothly
-      // through zero, where seed eq. 13 taken literally (t from the sliding velocity)
-      // would flip the full mu |F| every time a noisy velocity crosses zero.
-      held *= limit / spring;
+    if (pull > limit) {
+      // slip: the friction is projected onto the disc of radius mu |F|, against the
+      // direction the finger slides, and the stretch cut back to match. A continuous
+      // function of the motion, equal on both sides of the switch (scale = 1 there),
+      // so there is no jump to chatter between. Reversing the motion unloads the
+      // spring smoothly through zero, where seed eq. 13 taken literally (t from the
+      // sliding velocity) would flip the full mu |F| every time a noisy velocity
+      // crosses zero.
+      friction *= limit / pull;
+      const double spring = material.tangential_stiffness * glm::length(held);
+      if (spring > limit) held *= limit / spring;
       slipping = limit > 0.0;
     }
-    const vec3 friction = -material.tangential_stiffness * held;
     // the stretch kept is tangential only, so that when the normal turns (a finger
     // rolling over a curved surface) the depth does not leak into the friction
     next_patches_.push_back({key, body_on_object, to_object * held, depth});

@@ -29,6 +29,10 @@ struct ForceMaterial {
   // on the rate a patch sinks in (N s/m): 0 is seed eq. 12 exactly; a held object rings
   // on the contact springs without it. 2 sqrt(k m) damps an object of mass m critically
   double normal_damping = 0.0;
+  // on the rate a sticking patch slides (N s/m): 0 is a pure spring. The stick spring
+  // is stiff, so a hand jittering by a step's motion kicks a held object with it;
+  // 2 sqrt(k_t m) damps an object of mass m critically
+  double tangential_damping = 0.0;
 };
 
 // What a device can render; every output is scaled down to fit, never redirected.

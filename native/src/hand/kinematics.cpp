@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
 
 namespace frusta {
 
@@ -23,6 +24,14 @@ glm::dmat3 rotation_y(double angle) {
 const glm::dmat3 kMirror(1.0, 0.0, 0.0, 0.0, -1.0, 0.0, 0.0, 0.0, 1.0);
 
 }  // namespace
+
+HandState interpolate(const HandState& a, const HandState& b, double t) {
+  HandState s;
+  s.palm_position = a.palm_position + t * (b.palm_position - a.palm_position);
+  s.palm_rotation = glm::slerp(a.palm_rotation, b.palm_rotation, t);
+  for (size_t j = 0; j < s.angles.size(); ++j) s.angles[j] = a.angles[j] + t * (b.angles[j] - a.angles[j]);
+  return s;
+}
 
 void clamp_to_limits(const HandModel& model, HandState& state) {
   for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) {

@@ -41,6 +41,10 @@ constexpr int kJacobianColumns = FRUSTA_JOINTS_PER_FINGER + FRUSTA_PALM_DOF;
 // Clamp every angle of state into the model's limits.
 void clamp_to_limits(const HandModel& model, HandState& state);
 
+// The state a fraction t of the way from a to b: palm and angles straight, the palm's
+// rotation along the shorter arc.
+HandState interpolate(const HandState& a, const HandState& b, double t);
+
 // Seed eq. 7: P = M0(palm) Ms(abduction) M1 M2 M3 P_local for every finger.
 void forward_kinematics(const HandModel& model, const HandState& state, HandPose& pose);
 

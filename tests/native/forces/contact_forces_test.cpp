@@ -255,6 +255,35 @@ TEST(ContactForces, FrictionSticksBelowMuFThenSlipsAtExactlyMuFWithoutChatter) {
   EXPECT_EQ(sign_changes, 1) << "once, where the reversed motion unloads the spring; never chatter";
 }
 
+TEST(ContactForces, TangentialDampingAddsToTheSpringWhileStickingAndStaysInTheDisc) {
+  // a fingertip pressed 5 mm (|F| = 2 N) slides at a steady 1 mm/s: while it sticks the
+  // friction is the spring on the stretch plus the damping on the rate, -(k s + c v);
+  // at the switch the sum is held to mu |F| like the spring alone
+  const HandModel model = right_hand();
+  ForceMaterial material;
+  material.tangential_stiffness = 1000.0;
+  material.tangential_damping = 200.0;
+  material.friction = 0.5;  // mu |F| = 1 N
+  const double depth = 0.005, dt = 1e-3, speed = 1e-3;
+  ContactForces forces;
+  ASSERT_EQ(forces.set_time_step(dt), FRUSTA_OK);
+  for (int k = 0; k <= 1200; ++k) {
+    const double s = k * speed * dt;
+    const HandPose graphic = pose_of(model, hand_at(vec3(s, 0.0, 0.0)));
+    const HandPose haptic = pose_of(model, hand_at(vec3(s, 0.0, -depth)));
+    const SolverContact c = tip_on_face(model, graphic, 0);
+    ASSERT_EQ(forces.update(graphic, haptic, &c, 1, &kFace, 1, &material, nullptr), FRUSTA_OK);
+    const double rate = k == 0 ? 0.0 : speed;  // a new patch has no rate yet
+    const double expected = std::min(material.tangential_stiffness * s +
+                                         material.tangential_damping * rate,
+                                     1.0);
+    EXPECT_NEAR(forces.forces()[0].friction.x, -expected, 1e-9) << "step " << k;
+    EXPECT_LE(glm::length(forces.forces()[0].friction), 1.0 + 1e-12);
+  }
+  EXPECT_TRUE(forces.forces()[0].slipping);
+  EXPECT_EQ(forces.set_time_step(0.0), FRUSTA_ERROR_OUT_OF_RANGE);
+}
+
 TEST(ContactForces, AnchorRidesWithItsObject) {
   // the hand holds still, pressed in; the object slides under it along y and drags the
   // finger along until the spring reaches mu |F|
