@@ -67,12 +67,7 @@ HandState open_hand(const vec3& palm, const glm::dquat& rotation) {
 }
 
 HandState mix(const HandState& a, const HandState& b, double t) {
-  t = std::clamp(t, 0.0, 1.0);
-  HandState s;
-  s.palm_position = a.palm_position + t * (b.palm_position - a.palm_position);
-  s.palm_rotation = glm::slerp(a.palm_rotation, b.palm_rotation, t);
-  for (size_t j = 0; j < s.angles.size(); ++j) s.angles[j] = a.angles[j] + t * (b.angles[j] - a.angles[j]);
-  return s;
+  return interpolate(a, b, std::clamp(t, 0.0, 1.0));
 }
 
 void set_flexion(HandState& s, int finger, double f1, double f2, double f3) {

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <system_error>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/matrix.hpp>
@@ -70,8 +71,8 @@ frusta_result check_world_def(const WorldDef& def) {
   if (frusta_result r = check_range(def.spin_us, 0.0, 1e6 / def.rate_hz, false, "spin_us"))
     return r;
   if (frusta_result r = check_bounded(glm::value_ptr(def.gravity), 3, 1e3, "gravity")) return r;
-  if (def.max_objects < 1 || def.max_objects > 65536)
-    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "max_objects is %d, must be 1..65536", def.max_objects);
+  if (def.max_objects < 1 || def.max_objects > 65535)
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "max_objects is %d, must be 1..65535", def.max_objects);
   if (def.max_contacts_per_hand < 0 || def.max_contacts_per_hand > 65536)
     return fail(FRUSTA_ERROR_OUT_OF_RANGE, "max_contacts_per_hand is %d, must be 0..65536",
                 def.max_contacts_per_hand);
@@ -187,7 +188,8 @@ frusta_result World::remove_object(ObjectHandle object) {
   // the stepping thread may use the tree until it applies this command
   retired_.emplace_back(pushed_, std::move(host_trees_[slot]));
   host_trees_[slot].reset();
-  host_generation_[slot] = host_generation_[slot] + 1 == 0 ? 1 : host_generation_[slot] + 1;
+  // 16 bits, as in the C ABI's ids; 0 is never issued
+  host_generation_[slot] = host_generation_[slot] == 0xFFFF ? 1 : host_generation_[slot] + 1;
   host_free_.push_back(object.slot);
   return FRUSTA_OK;
 }
@@ -215,7 +217,11 @@ frusta_result World::set_haptic(int32_t hand, const HandState& haptic) {
   if (hand < 0 || hand >= hand_count())
     return fail(FRUSTA_ERROR_OUT_OF_RANGE, "hand is %d, the world has %d", hand, hand_count());
   HandSlot& h = *hands_[static_cast<size_t>(hand)];
-  h.input.write_slot() = haptic;
+  TimedInput& slot = h.input.write_slot();
+  slot.state = haptic;
+  slot.set_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(
+                    std::chrono::steady_clock::now().time_since_epoch())
+                    .count();
   h.input.publish();
   return FRUSTA_OK;
 }
@@ -269,7 +275,7 @@ World::~World() { stop(); }
 frusta_result World::step() {
   if (running())
     return fail(FRUSTA_ERROR_WRONG_STATE, "the world's own thread is stepping it: stop() it first");
-  step_once(1.0 / def_.rate_hz);
+  step_once(1.0 / def_.rate_hz, false, 0);
   return FRUSTA_OK;
 }
 
@@ -282,7 +288,12 @@ frusta_result World::start(double rate_hz, double spin_us) {
     return fail(FRUSTA_ERROR_OUT_OF_RANGE, "spin is %g us, must be 0..one period", spin_us);
   if (running()) return fail(FRUSTA_ERROR_WRONG_STATE, "the world's thread is already running");
   running_.store(true, std::memory_order_release);
-  thread_ = std::thread([this, rate_hz, spin_us] { run(rate_hz, spin_us); });
+  try {
+    thread_ = std::thread([this, rate_hz, spin_us] { run(rate_hz, spin_us); });
+  } catch (const std::system_error& e) {
+    running_.store(false, std::memory_order_release);
+    return fail(FRUSTA_ERROR_INTERNAL, "the world's thread could not start: %s", e.what());
+  }
   return FRUSTA_OK;
 }
 
@@ -301,16 +312,29 @@ void World::run(double rate_hz, double spin_us) {
   while (running_.load(std::memory_order_acquire)) {
     lateness_.record(duration<double, std::micro>(clock.wait()).count());
     overruns_ = clock.missed();
+    const int64_t tick_ns = duration_cast<nanoseconds>(clock.tick().time_since_epoch()).count();
     ++steps;
     achieved_rate_hz_ = static_cast<double>(steps) / duration<double>(steady_clock::now() - started).count();
-    step_once(1.0 / rate_hz);
+    step_once(1.0 / rate_hz, true, tick_ns);
   }
 }
 
-void World::step_hand(HandSlot& hand, HandSnapshot& snap, double dt) {
-  if (hand.input.fresh()) hand.has_input = true;
-  const HandState& haptic = hand.input.read();
+void World::step_hand(HandSlot& hand, HandSnapshot& snap, double dt, bool paced, int64_t tick_ns) {
+  if (hand.input.fresh()) {
+    hand.previous = hand.has_input ? hand.newest : hand.input.read();
+    hand.newest = hand.input.read();
+    hand.has_input = true;
+  }
   if (!hand.has_input) return;  // nothing to solve before the first input
+  HandState haptic = hand.newest.state;
+  const int64_t span = hand.newest.set_ns - hand.previous.set_ns;
+  if (paced && span > 0) {
+    // where the glove was one period before this tick, between the two inputs around
+    // that time (a tick caught up after a stall asks for its own time, not now's)
+    const double late = static_cast<double>(tick_ns - hand.previous.set_ns) - dt * 1e9;
+    const double t = std::clamp(late / static_cast<double>(span), 0.0, 1.0);
+    haptic = interpolate(hand.previous.state, hand.newest.state, t);
+  }
   const int32_t object_count = static_cast<int32_t>(active_.size());
   StepStats stats;
   if (hand.solver.step(haptic, active_.data(), object_count, &stats) == FRUSTA_OK) {
@@ -340,6 +364,7 @@ void World::step_hand(HandSlot& hand, HandSnapshot& snap, double dt) {
                              hand_reactions_.data()) != FRUSTA_OK) {
     // the solver's own output was refused: a bug, kept visible rather than hidden
     ++rejected_;
+    snap.contact_count = 0;
     return;
   }
   snap.force_stats.dropped = snap.contact_count - kept;
@@ -393,12 +418,12 @@ void World::move_dynamic_objects(double dt) {
   if (moved) rebuild_active();
 }
 
-void World::step_once(double dt) {
+void World::step_once(double dt, bool paced, int64_t tick_ns) {
   const auto start = std::chrono::steady_clock::now();
   apply_commands();
   for (ObjectSlot& slot : slots_) slot.reaction = ObjectWrench{};
   WorldSnapshot& out = output_.write_slot();
-  for (size_t h = 0; h < hands_.size(); ++h) step_hand(*hands_[h], out.hands[h], dt);
+  for (size_t h = 0; h < hands_.size(); ++h) step_hand(*hands_[h], out.hands[h], dt, paced, tick_ns);
   for (size_t s = 0; s < slots_.size(); ++s) {
     const ObjectSlot& slot = slots_[s];
     ObjectSnapshot& o = out.objects[s];
@@ -414,7 +439,8 @@ void World::step_once(double dt) {
   out.step = ++step_;
   out.time = time_ += dt;
   out.rejected_inputs = rejected_;
-  histogram_.record(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count());
+  out.step_us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
+  histogram_.record(out.step_us);
   out.step_us_p50 = histogram_.percentile(0.5);
   out.step_us_p99 = histogram_.percentile(0.99);
   out.step_us_max = histogram_.max();

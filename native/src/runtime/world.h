@@ -98,8 +98,11 @@ struct WorldSnapshot {
   double time = 0.0;  // seconds: steps times the time step
   std::vector<HandSnapshot> hands;
   std::vector<ObjectSnapshot> objects;  // one per slot, max_objects
+  double step_us = 0.0;  // this step's
   double step_us_p50 = 0.0, step_us_p99 = 0.0, step_us_max = 0.0;
-  // on the world's own thread only: how late each tick woke, and ticks lost to overruns
+  // on the world's own thread only: how late each tick woke, and overruns: ticks that
+  // ran more than a period late (caught up back to back) or were dropped (a stall of
+  // over 10 periods)
   double wake_late_us_p50 = 0.0, wake_late_us_p99 = 0.0, wake_late_us_max = 0.0;
   int64_t overruns = 0;
   double achieved_rate_hz = 0.0;  // own thread: steps over the time since start()
@@ -136,6 +139,11 @@ class World {
 
   // Any one thread per hand: the newest haptic hand wins. Bad values are the solver's
   // to refuse (counted in the snapshot); a hand index the world lacks is refused here.
+  // On the world's own thread a step plays the inputs one period late, interpolated
+  // between the two it has by the times they were set: a glove whose inputs arrive
+  // unevenly against the steps (two in one step, none in the next) moves the hand
+  // smoothly instead of in jerks that shake a held object loose. step() from the
+  // host takes the newest input as it is (the host paces both).
   frusta_result set_haptic(int32_t hand, const HandState& haptic);
 
   // The stepping thread: apply queued commands, solve every hand, publish a snapshot.
@@ -171,20 +179,30 @@ class World {
     ObjectDef def;  // pose and velocities as the world moves it
     ObjectWrench reaction;  // this step's, from every hand
   };
+  // A haptic input and when it was set (steady clock): a device thread's inputs do not
+  // arrive one per step, and the world's own thread smooths them by their times.
+  struct TimedInput {
+    HandState state;
+    int64_t set_ns = 0;
+  };
   struct HandSlot {
     HandSlot(const HandModel& model, const SolverParams& params, int32_t max_contacts)
-        : solver(model, params), input(HandState{}), forces(max_contacts) {}
+        : solver(model, params), input(TimedInput{}), forces(max_contacts) {}
     HandSolver solver;
-    TripleBuffer<HandState> input;
+    TripleBuffer<TimedInput> input;
     bool has_input = false;
+    TimedInput previous, newest;  // the two last inputs read
     HandState accepted;  // the last haptic input the solver took
     HandPose haptic_pose;
     ContactForces forces;
   };
 
   void run(double rate_hz, double spin_us);
-  void step_once(double dt);
-  void step_hand(HandSlot& hand, HandSnapshot& snap, double dt);
+  // on the own thread `paced`: inputs are played one period before the tick (steady
+  // clock, ns), interpolated by the times they were set, so a device's jitter does not
+  // jerk the hand
+  void step_once(double dt, bool paced, int64_t tick_ns);
+  void step_hand(HandSlot& hand, HandSnapshot& snap, double dt, bool paced, int64_t tick_ns);
   void move_dynamic_objects(double dt);
   void apply_commands();
   void rebuild_active();

@@ -25,14 +25,37 @@ TEST(PeriodicClock, DeadlinesAreAbsoluteSoLatenessDoesNotAccumulate) {
   EXPECT_EQ(clock.deadline(), first + (20 + clock.missed()) * milliseconds(1));
 }
 
-TEST(PeriodicClock, AStallSkipsTheLostTicksInsteadOfBursting) {
+TEST(PeriodicClock, AShortStallIsCaughtUpTickByTick) {
   PeriodicClock clock(milliseconds(1), microseconds(100));
   clock.start();
   clock.wait();
-  std::this_thread::sleep_for(milliseconds(6));  // a stall of several periods
+  const PeriodicClock::Clock::time_point before = clock.tick();
+  std::this_thread::sleep_for(milliseconds(5));  // a stall of several periods
+  // the lost ticks come back to back, each answering its own deadline
+  int immediate = 0;
+  while (clock.deadline() < PeriodicClock::Clock::now()) {
+    clock.wait();
+    ++immediate;
+    EXPECT_EQ(clock.tick(), before + immediate * milliseconds(1));
+  }
+  EXPECT_GE(immediate, 3);
+  EXPECT_GE(clock.late(), 3);
+  EXPECT_EQ(clock.dropped(), 0);
+}
+
+TEST(PeriodicClock, ALongStallDropsAllButOneBurst) {
+  PeriodicClock clock(milliseconds(1), microseconds(100), 4);
+  clock.start();
   clock.wait();
-  EXPECT_GE(clock.missed(), 3);
-  EXPECT_GT(clock.deadline(), PeriodicClock::Clock::now()) << "the next tick is ahead again";
+  std::this_thread::sleep_for(milliseconds(20));
+  clock.wait();
+  EXPECT_GE(clock.dropped(), 10);
+  int burst = 0;
+  while (clock.deadline() < PeriodicClock::Clock::now()) {
+    clock.wait();
+    ++burst;
+  }
+  EXPECT_LE(burst, 5) << "at most max_burst ticks (and one that fell due meanwhile) run late";
 }
 
 }  // namespace
