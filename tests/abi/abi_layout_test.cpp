@@ -87,7 +87,98 @@
   X(frusta_sphere_tree_info, reserved0, 116, 4)       \
   X(frusta_tree_hit, node, 0, 4)                      \
   X(frusta_tree_hit, leaf, 4, 4)                      \
-  X(frusta_tree_hit, sphere, 8, 32)
+  X(frusta_tree_hit, sphere, 8, 32)                   \
+  X(frusta_world_id, index1, 0, 4)                    \
+  X(frusta_world_id, world0, 4, 2)                    \
+  X(frusta_world_id, generation, 6, 2)                \
+  X(frusta_object_id, index1, 0, 4)                   \
+  X(frusta_object_id, world0, 4, 2)                   \
+  X(frusta_object_id, generation, 6, 2)               \
+  X(frusta_world_def, struct_size, 0, 4)              \
+  X(frusta_world_def, max_objects, 4, 4)              \
+  X(frusta_world_def, rate_hz, 8, 8)                  \
+  X(frusta_world_def, spin_us, 16, 8)                 \
+  X(frusta_world_def, gravity, 24, 24)                \
+  X(frusta_world_def, prediction_margin, 48, 8)       \
+  X(frusta_world_def, node_radius, 56, 8)             \
+  X(frusta_world_def, max_iterations, 64, 4)          \
+  X(frusta_world_def, max_substeps, 68, 4)            \
+  X(frusta_world_def, max_contacts_per_hand, 72, 4)   \
+  X(frusta_world_def, command_capacity, 76, 4)        \
+  X(frusta_world_def, max_fingertip_force, 80, 8)     \
+  X(frusta_world_def, max_finger_resistance, 88, 8)   \
+  X(frusta_world_def, max_joint_torque, 96, 8)        \
+  X(frusta_world_def, max_palm_force, 104, 8)         \
+  X(frusta_world_def, max_palm_torque, 112, 8)        \
+  X(frusta_world_def, internal_value, 120, 4)         \
+  X(frusta_world_def, reserved0, 124, 4)              \
+  X(frusta_object_def, struct_size, 0, 4)             \
+  X(frusta_object_def, dynamic, 4, 4)                 \
+  X(frusta_object_def, pose, 8, 56)                   \
+  X(frusta_object_def, stiffness, 64, 24)             \
+  X(frusta_object_def, friction, 88, 8)               \
+  X(frusta_object_def, tangential_stiffness, 96, 8)   \
+  X(frusta_object_def, normal_damping, 104, 8)        \
+  X(frusta_object_def, tangential_damping, 112, 8)    \
+  X(frusta_object_def, mass, 120, 8)                  \
+  X(frusta_object_def, inertia, 128, 24)              \
+  X(frusta_object_def, linear_velocity, 152, 24)      \
+  X(frusta_object_def, angular_velocity, 176, 24)     \
+  X(frusta_object_def, linear_damping, 200, 8)        \
+  X(frusta_object_def, angular_damping, 208, 8)       \
+  X(frusta_object_def, internal_value, 216, 4)        \
+  X(frusta_object_def, reserved0, 220, 4)             \
+  X(frusta_world_state, struct_size, 0, 4)            \
+  X(frusta_world_state, hand_count, 4, 4)             \
+  X(frusta_world_state, step, 8, 8)                   \
+  X(frusta_world_state, time, 16, 8)                  \
+  X(frusta_world_state, step_us, 24, 8)               \
+  X(frusta_world_state, step_us_p50, 32, 8)           \
+  X(frusta_world_state, step_us_p99, 40, 8)           \
+  X(frusta_world_state, step_us_max, 48, 8)           \
+  X(frusta_world_state, wake_late_us_p50, 56, 8)      \
+  X(frusta_world_state, wake_late_us_p99, 64, 8)      \
+  X(frusta_world_state, wake_late_us_max, 72, 8)      \
+  X(frusta_world_state, achieved_rate_hz, 80, 8)      \
+  X(frusta_world_state, overruns, 88, 8)              \
+  X(frusta_world_state, rejected_inputs, 96, 8)       \
+  X(frusta_world_state, object_count, 104, 4)         \
+  X(frusta_world_state, reserved0, 108, 4)            \
+  X(frusta_world_hand, struct_size, 0, 4)             \
+  X(frusta_world_hand, solved, 4, 4)                  \
+  X(frusta_world_hand, graphic_palm, 8, 56)           \
+  X(frusta_world_hand, graphic_angles, 64, 160)       \
+  X(frusta_world_hand, haptic_palm, 224, 56)          \
+  X(frusta_world_hand, haptic_angles, 280, 160)       \
+  X(frusta_world_hand, contact_count, 440, 4)         \
+  X(frusta_world_hand, pressing, 444, 4)              \
+  X(frusta_world_hand, slipping, 448, 4)              \
+  X(frusta_world_hand, substeps, 452, 4)              \
+  X(frusta_world_hand, lagging, 456, 4)               \
+  X(frusta_world_hand, reserved0, 460, 4)             \
+  X(frusta_world_hand, fingertip_force, 464, 120)     \
+  X(frusta_world_hand, finger_resistance, 584, 40)    \
+  X(frusta_world_hand, joint_torque, 624, 160)        \
+  X(frusta_world_hand, palm_force, 784, 24)           \
+  X(frusta_world_hand, palm_torque, 808, 24)          \
+  X(frusta_world_contact, object, 0, 8)               \
+  X(frusta_world_contact, body, 8, 4)                 \
+  X(frusta_world_contact, leaf, 12, 4)                \
+  X(frusta_world_contact, slipping, 16, 4)            \
+  X(frusta_world_contact, reserved0, 20, 4)           \
+  X(frusta_world_contact, distance, 24, 8)            \
+  X(frusta_world_contact, graphic_point, 32, 24)      \
+  X(frusta_world_contact, haptic_point, 56, 24)       \
+  X(frusta_world_contact, normal, 80, 24)             \
+  X(frusta_world_contact, normal_force, 104, 24)      \
+  X(frusta_world_contact, friction, 128, 24)          \
+  X(frusta_object_state, struct_size, 0, 4)           \
+  X(frusta_object_state, dynamic, 4, 4)               \
+  X(frusta_object_state, pose, 8, 56)                 \
+  X(frusta_object_state, linear_velocity, 64, 24)     \
+  X(frusta_object_state, angular_velocity, 88, 24)    \
+  X(frusta_object_state, reaction_force, 112, 24)     \
+  X(frusta_object_state, reaction_torque, 136, 24)
 
 // X(struct, sizeof, alignof)
 #define FRUSTA_ABI_STRUCTS(X)        \
@@ -101,10 +192,18 @@
   X(frusta_tree_id, 8, 4)            \
   X(frusta_bake_def, 56, 8)          \
   X(frusta_sphere_tree_info, 120, 8) \
-  X(frusta_tree_hit, 40, 8)
+  X(frusta_tree_hit, 40, 8)          \
+  X(frusta_world_id, 8, 4)           \
+  X(frusta_object_id, 8, 4)          \
+  X(frusta_world_def, 128, 8)        \
+  X(frusta_object_def, 224, 8)       \
+  X(frusta_world_state, 112, 8)      \
+  X(frusta_world_hand, 832, 8)       \
+  X(frusta_world_contact, 152, 8)    \
+  X(frusta_object_state, 160, 8)
 
-static_assert(FRUSTA_ABI_VERSION == 1,
-              "the layout table below is ABI 1: update it and the C# mirror with the ABI");
+static_assert(FRUSTA_ABI_VERSION == 2,
+              "the layout table below is ABI 2: update it and the C# mirror with the ABI");
 
 #define FRUSTA_CHECK_MEMBER(type, member, offset, size)                          \
   static_assert(offsetof(type, member) == (offset), #type "." #member " moved"); \
@@ -196,6 +295,38 @@ FRUSTA_CHECK_SIGNATURE(frusta_sphere_tree_get_leaves,
 FRUSTA_CHECK_SIGNATURE(frusta_sphere_tree_query_segment,
                        frusta_result (*)(frusta_tree_id, const frusta_pose*, const frusta_segment*,
                                          double, int32_t, frusta_tree_hit*, int32_t, int32_t*))
+FRUSTA_CHECK_SIGNATURE(frusta_default_world_def, frusta_world_def (*)())
+FRUSTA_CHECK_SIGNATURE(frusta_default_object_def, frusta_object_def (*)())
+FRUSTA_CHECK_SIGNATURE(frusta_create_world,
+                       frusta_result (*)(const frusta_world_def*, frusta_world_id*))
+FRUSTA_CHECK_SIGNATURE(frusta_destroy_world, frusta_result (*)(frusta_world_id))
+FRUSTA_CHECK_SIGNATURE(frusta_world_is_valid, int32_t (*)(frusta_world_id))
+FRUSTA_CHECK_SIGNATURE(frusta_world_add_hand,
+                       frusta_result (*)(frusta_world_id, const frusta_hand_def*, int32_t*))
+FRUSTA_CHECK_SIGNATURE(frusta_world_set_haptic,
+                       frusta_result (*)(frusta_world_id, int32_t, const frusta_pose*,
+                                         const double*, int32_t))
+FRUSTA_CHECK_SIGNATURE(frusta_world_add_object,
+                       frusta_result (*)(frusta_world_id, frusta_tree_id, const frusta_object_def*,
+                                         frusta_object_id*))
+FRUSTA_CHECK_SIGNATURE(frusta_world_remove_object,
+                       frusta_result (*)(frusta_world_id, frusta_object_id))
+FRUSTA_CHECK_SIGNATURE(frusta_world_set_object_pose,
+                       frusta_result (*)(frusta_world_id, frusta_object_id, const frusta_pose*))
+FRUSTA_CHECK_SIGNATURE(frusta_world_set_object_dynamic,
+                       frusta_result (*)(frusta_world_id, frusta_object_id, int32_t))
+FRUSTA_CHECK_SIGNATURE(frusta_world_step, frusta_result (*)(frusta_world_id))
+FRUSTA_CHECK_SIGNATURE(frusta_world_start, frusta_result (*)(frusta_world_id))
+FRUSTA_CHECK_SIGNATURE(frusta_world_stop, frusta_result (*)(frusta_world_id))
+FRUSTA_CHECK_SIGNATURE(frusta_world_read,
+                       frusta_result (*)(frusta_world_id, frusta_world_state*))
+FRUSTA_CHECK_SIGNATURE(frusta_world_get_hand,
+                       frusta_result (*)(frusta_world_id, int32_t, frusta_world_hand*))
+FRUSTA_CHECK_SIGNATURE(frusta_world_get_contacts,
+                       frusta_result (*)(frusta_world_id, int32_t, frusta_world_contact*, int32_t,
+                                         int32_t*))
+FRUSTA_CHECK_SIGNATURE(frusta_world_get_object,
+                       frusta_result (*)(frusta_world_id, frusta_object_id, frusta_object_state*))
 #undef FRUSTA_CHECK_SIGNATURE
 
 namespace {
@@ -246,6 +377,11 @@ TEST(abiLayout, StructsHaveNoImplicitPaddingAndTheTableIsComplete) {
 }
 
 // struct_size fields hold the library's sizeof, as every binding will send it.
-TEST(abiLayout, DefaultDefCarriesItsSize) { EXPECT_EQ(frusta_default_hand_def().struct_size, 896); }
+TEST(abiLayout, DefaultDefCarriesItsSize) {
+  EXPECT_EQ(frusta_default_hand_def().struct_size, 896);
+  EXPECT_EQ(frusta_default_bake_def().struct_size, 56);
+  EXPECT_EQ(frusta_default_world_def().struct_size, 128);
+  EXPECT_EQ(frusta_default_object_def().struct_size, 224);
+}
 
 }  // namespace

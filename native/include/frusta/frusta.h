@@ -45,7 +45,7 @@
 #define FRUSTA_VERSION \
   (FRUSTA_VERSION_MAJOR * 1000000 + FRUSTA_VERSION_MINOR * 1000 + FRUSTA_VERSION_PATCH)
 /** Bumped whenever a struct layout or a signature changes; see frusta_check_abi(). */
-#define FRUSTA_ABI_VERSION 1
+#define FRUSTA_ABI_VERSION 2
 
 /** The library's FRUSTA_VERSION. Thread: any. */
 FRUSTA_API int32_t frusta_version(void);
@@ -371,5 +371,235 @@ FRUSTA_API frusta_result frusta_sphere_tree_query_segment(frusta_tree_id tree,
                                                           double margin, int32_t max_level,
                                                           frusta_tree_hit* out, int32_t capacity,
                                                           int32_t* out_count);
+
+/* ---------------------------------------------------------------- world */
+
+/* A world holds hands and objects and steps them: each step turns every hand's
+ * haptic input (the glove) into a graphic hand that never sinks into an object,
+ * the contact forces (seed eqs. 12-13), what each device receives and what each
+ * object receives. It runs on its own thread at rate_hz (frusta_world_start) or is
+ * stepped by the host (frusta_world_step). Host and stepping thread never wait for
+ * each other: object commands are queued and applied at the next step; outputs are
+ * published as a snapshot the host latches with frusta_world_read.
+ *
+ * Threads, per function below:
+ *   host   - one thread (the one that created the world), e.g. a game's main thread;
+ *   input  - any one thread per hand (a device thread), concurrently with the rest;
+ *   any    - any thread. */
+
+/** World handle. Opaque; pass by value; zero means null. */
+typedef struct frusta_world_id {
+  int32_t index1;      /* slot + 1; 0 is null */
+  uint16_t world0;     /* always 0 */
+  uint16_t generation; /* bumped when the slot is reused */
+} frusta_world_id;
+
+/** Object handle within a world. Opaque; pass by value; zero means null. */
+typedef struct frusta_object_id {
+  int32_t index1;      /* object slot + 1; 0 is null */
+  uint16_t world0;     /* the owning world: slot + 1, and its generation's low byte */
+  uint16_t generation; /* bumped when the slot is reused */
+} frusta_object_id;
+
+/** World creation parameters; from frusta_default_world_def(). */
+typedef struct frusta_world_def {
+  int32_t struct_size;          /* sizeof(frusta_world_def) */
+  int32_t max_objects;          /* object slots, 1..65535; default 64 */
+  double rate_hz;               /* own thread's rate, and dynamic objects' time step
+                                   1/rate_hz; 1..100000; default 1000 */
+  double spin_us;               /* the own thread spins this long before each tick
+                                   instead of sleeping, for an on-time wake; 0..one
+                                   period; default 200 */
+  double gravity[3];            /* m/s^2 on dynamic objects; default 0 (off) */
+  double prediction_margin;     /* Delta_r, metres: detection margin and the most any
+                                   hand point moves per sub-step; 1e-5..0.1 and below
+                                   the smallest finger radius; default 0.002 */
+  double node_radius;           /* metres: tree nodes no larger stand in for their
+                                   leaves (0: leaves); default 0 */
+  int32_t max_iterations;       /* re-linearisations per solver stage, 1..100; default 2 */
+  int32_t max_substeps;         /* per step, 1..1024; default 64 */
+  int32_t max_contacts_per_hand;/* kept per hand per step, 0..65536; default 256 */
+  int32_t command_capacity;     /* queued object commands between steps, 1..2^20
+                                   (rounded up to a power of two); default 256 */
+  /* device limits: every output is scaled down to fit, never turned */
+  double max_fingertip_force;   /* newtons, per finger; default 10 */
+  double max_finger_resistance; /* newtons, per finger; default 10 */
+  double max_joint_torque;      /* newton-metres, per joint; default 0.5 */
+  double max_palm_force;        /* newtons; default 20 */
+  double max_palm_torque;       /* newton-metres; default 1 */
+  int32_t internal_value;       /* set by frusta_default_world_def(); do not touch */
+  int32_t reserved0;            /* explicit padding */
+} frusta_world_def;
+
+/** An object as it is added: where, what it is made of, and whether the world moves
+ *  it. Kinematic objects (dynamic = 0) stay where the host puts them; a host with its
+ *  own rigid-body engine keeps them kinematic and applies each object's reaction
+ *  wrench itself. Dynamic objects the world integrates at its rate under the hands'
+ *  reactions and gravity. From frusta_default_object_def(). */
+typedef struct frusta_object_def {
+  int32_t struct_size;          /* sizeof(frusta_object_def) */
+  int32_t dynamic;              /* 0 kinematic (default), 1 dynamic */
+  frusta_pose pose;             /* the object frame (its origin is the centre of mass) */
+  double stiffness[3];          /* G of seed eq. 12, diagonal in the object frame, N/m,
+                                   0..1e9; default 400 */
+  double friction;              /* mu of seed eq. 13, 0..100; default 0.6 */
+  double tangential_stiffness;  /* the stick spring, N/m, 0..1e9; default 1e4 */
+  double normal_damping;        /* on how fast a contact sinks in, N s/m, 0..1e9;
+                                   default 0 (eq. 12 exactly); 2 sqrt(k m) settles a
+                                   held object of mass m */
+  double tangential_damping;    /* on how fast a sticking contact slides, N s/m, 0..1e9;
+                                   default 0; 2 sqrt(tangential_stiffness m) keeps a
+                                   held object of mass m from being kicked by the
+                                   hand's jitter */
+  double mass;                  /* kg, > 0; default 0.1 */
+  double inertia[3];            /* principal moments in the object frame, kg m^2, > 0;
+                                   default 4e-5 */
+  double linear_velocity[3];    /* m/s, world; |each| <= 100; default 0 */
+  double angular_velocity[3];   /* rad/s, world; |each| <= 1000; default 0 */
+  double linear_damping;        /* 1/s, 0..1000; default 0 */
+  double angular_damping;       /* 1/s, 0..1000; default 0 */
+  int32_t internal_value;       /* set by frusta_default_object_def(); do not touch */
+  int32_t reserved0;            /* explicit padding */
+} frusta_object_def;
+
+/** What frusta_world_read latches: the newest step's summary. */
+typedef struct frusta_world_state {
+  int32_t struct_size;          /* sizeof(frusta_world_state); set it before the call */
+  int32_t hand_count;
+  uint64_t step;                /* steps so far; 0 before the first */
+  double time;                  /* seconds: steps times 1/rate_hz */
+  double step_us;               /* this step's time, microseconds */
+  double step_us_p50, step_us_p99, step_us_max; /* over every step so far */
+  double wake_late_us_p50, wake_late_us_p99, wake_late_us_max; /* own thread's jitter */
+  double achieved_rate_hz;      /* own thread: steps per second since start; 0 if none */
+  int64_t overruns;             /* ticks the own thread lost to late steps */
+  int64_t rejected_inputs;      /* haptic inputs the solver refused */
+  int32_t object_count;         /* objects present at the step */
+  int32_t reserved0;            /* explicit padding */
+} frusta_world_state;
+
+/** One hand as the latched step left it. World frame. */
+typedef struct frusta_world_hand {
+  int32_t struct_size;          /* sizeof(frusta_world_hand); set it before the call */
+  int32_t solved;               /* 0 until the hand's first valid input */
+  frusta_pose graphic_palm;     /* the displayed hand: palm pose */
+  double graphic_angles[FRUSTA_HAND_JOINT_COUNT]; /* and joint angles, radians */
+  frusta_pose haptic_palm;      /* the input the step used */
+  double haptic_angles[FRUSTA_HAND_JOINT_COUNT];
+  int32_t contact_count;        /* all contacts, even beyond max_contacts_per_hand */
+  int32_t pressing;             /* contacts whose haptic point lies inside */
+  int32_t slipping;             /* pressing contacts sliding (friction at mu |F|) */
+  int32_t substeps;             /* solver sub-steps this step */
+  int32_t lagging;              /* 1: the sub-step cap stopped the hand short */
+  int32_t reserved0;            /* explicit padding */
+  /* device outputs, each clamped to the world's limits; pick what the device renders */
+  double fingertip_force[FRUSTA_FINGER_COUNT][3]; /* on each distal segment, newtons */
+  double finger_resistance[FRUSTA_FINGER_COUNT];  /* |force| on each finger, newtons */
+  double joint_torque[FRUSTA_HAND_JOINT_COUNT];   /* J^T F per joint, newton-metres */
+  double palm_force[3];         /* newtons */
+  double palm_torque[3];        /* newton-metres, about the haptic palm origin */
+} frusta_world_hand;
+
+/** One contact of a hand and the force on the hand there. World frame. */
+typedef struct frusta_world_contact {
+  frusta_object_id object;
+  int32_t body;                 /* finger * 3 + segment, or 15 for the palm */
+  int32_t leaf;                 /* the object's leaf, or -1 for an inner node */
+  int32_t slipping;             /* 1: friction at mu |F| */
+  int32_t reserved0;            /* explicit padding */
+  double distance;              /* metres, exact gap (>= -tolerance) */
+  double graphic_point[3];      /* P_ig, metres */
+  double haptic_point[3];       /* P_ih: the same material point on the haptic hand */
+  double normal[3];             /* unit, from the object towards the hand */
+  double normal_force[3];       /* on the hand, newtons */
+  double friction[3];           /* on the hand, newtons */
+} frusta_world_contact;
+
+/** One object as the latched step left it. */
+typedef struct frusta_object_state {
+  int32_t struct_size;          /* sizeof(frusta_object_state); set it before the call */
+  int32_t dynamic;
+  frusta_pose pose;             /* where the hands met it this step */
+  double linear_velocity[3];    /* m/s */
+  double angular_velocity[3];   /* rad/s */
+  double reaction_force[3];     /* from every hand, newtons: what a host engine applies */
+  double reaction_torque[3];    /* about the pose position, newton-metres */
+} frusta_object_state;
+
+/** Defaults for frusta_create_world. Thread: any. */
+FRUSTA_API frusta_world_def frusta_default_world_def(void);
+/** Defaults for frusta_world_add_object. Thread: any. */
+FRUSTA_API frusta_object_def frusta_default_object_def(void);
+
+/** Create a world (no thread yet; see frusta_world_start). Thread: host. */
+FRUSTA_API frusta_result frusta_create_world(const frusta_world_def* def, frusta_world_id* out_world);
+/** Stop the world's thread if running, then destroy it with its objects (the trees
+ *  they used stay the caller's). Its id and object ids turn stale. No other thread
+ *  may be calling into the world meanwhile. Thread: host. */
+FRUSTA_API frusta_result frusta_destroy_world(frusta_world_id world);
+/** 1 if the id names a live world, else 0. Thread: any. */
+FRUSTA_API int32_t frusta_world_is_valid(frusta_world_id world);
+
+/** Add a hand built from def; its index (0, 1, ...) names it in this world. Only
+ *  before the first step: FRUSTA_ERROR_WRONG_STATE afterwards. The world's solver
+ *  settings are checked against the hand here. Thread: host. */
+FRUSTA_API frusta_result frusta_world_add_hand(frusta_world_id world, const frusta_hand_def* def,
+                                               int32_t* out_hand);
+/** Set a hand's haptic input (the glove): palm pose and FRUSTA_HAND_JOINT_COUNT joint
+ *  angles (radians, finger-major). The newest input wins; the next step uses it.
+ *  Positions within 1e6 m, quaternion norm in [0.5, 2], |angle| <= 100 (beyond the
+ *  limits is clamped). Lock-free and allocation-free. Thread: input. */
+FRUSTA_API frusta_result frusta_world_set_haptic(frusta_world_id world, int32_t hand,
+                                                 const frusta_pose* palm, const double* angles,
+                                                 int32_t count);
+
+/** Add an object with the tree's shape; queued, present from the next step. The world
+ *  keeps the tree alive while it uses it, even if the tree's id is destroyed.
+ *  FRUSTA_ERROR_CAPACITY when max_objects are present or the command queue is full
+ *  (step the world). Thread: host. */
+FRUSTA_API frusta_result frusta_world_add_object(frusta_world_id world, frusta_tree_id tree,
+                                                 const frusta_object_def* def,
+                                                 frusta_object_id* out_object);
+/** Remove an object (queued). Its id is refused by the calls that change the world at
+ *  once; frusta_world_get_object reports the latched step, in which the object is
+ *  present until a step has applied the removal. Thread: host. */
+FRUSTA_API frusta_result frusta_world_remove_object(frusta_world_id world, frusta_object_id object);
+/** Put an object at a pose, at rest (queued). Thread: host. */
+FRUSTA_API frusta_result frusta_world_set_object_pose(frusta_world_id world,
+                                                      frusta_object_id object,
+                                                      const frusta_pose* pose);
+/** Hand an object to the world's dynamics (1) or take it back, at rest (0); queued.
+ *  Thread: host. */
+FRUSTA_API frusta_result frusta_world_set_object_dynamic(frusta_world_id world,
+                                                         frusta_object_id object, int32_t dynamic);
+
+/** One step at 1/rate_hz: apply queued commands, solve every hand, publish. Not
+ *  while the world's own thread runs (FRUSTA_ERROR_WRONG_STATE). Thread: host. */
+FRUSTA_API frusta_result frusta_world_step(frusta_world_id world);
+/** Run the world on its own thread at def.rate_hz on absolute deadlines (sleep, then
+ *  spin def.spin_us) until frusta_world_stop. FRUSTA_ERROR_WRONG_STATE if running.
+ *  Thread: host. */
+FRUSTA_API frusta_result frusta_world_start(frusta_world_id world);
+/** Stop the world's thread (returns once its current step is done); no effect if
+ *  none runs. Thread: host. */
+FRUSTA_API frusta_result frusta_world_stop(frusta_world_id world);
+
+/** Latch the newest published step (lock-free; never a torn one) and fill state.
+ *  The frusta_world_get_* functions below read the latched step until the next
+ *  call. Thread: host. */
+FRUSTA_API frusta_result frusta_world_read(frusta_world_id world, frusta_world_state* state);
+/** One hand of the latched step. Thread: host. */
+FRUSTA_API frusta_result frusta_world_get_hand(frusta_world_id world, int32_t hand,
+                                               frusta_world_hand* out);
+/** The contacts of one hand in the latched step (at most max_contacts_per_hand).
+ *  Pass out null and capacity 0 to learn the count. A failed call writes nothing.
+ *  Thread: host. */
+FRUSTA_API frusta_result frusta_world_get_contacts(frusta_world_id world, int32_t hand,
+                                                   frusta_world_contact* out, int32_t capacity,
+                                                   int32_t* out_count);
+/** One object of the latched step. FRUSTA_ERROR_STALE_ID for an object removed, or
+ *  added after the latched step. Thread: host. */
+FRUSTA_API frusta_result frusta_world_get_object(frusta_world_id world, frusta_object_id object,
+                                                 frusta_object_state* out);
 
 #endif /* FRUSTA_FRUSTA_H */

@@ -1,0 +1,406 @@
+// SPDX-License-Identifier: MIT
+// C ABI: worlds. Each function checks every input before it changes anything; the
+// calls a device thread makes (frusta_world_set_haptic) take no lock and allocate
+// nothing.
+#include <cstring>
+#include <glm/gtc/quaternion.hpp>
+
+#include "capi/convert.h"
+#include "capi/tree_registry.h"
+#include "capi/world_registry.h"
+#include "core/error.h"
+#include "core/validate.h"
+#include "frusta/frusta.h"
+#include "hand/hand_model.h"
+
+using namespace frusta;
+
+namespace {
+
+vec3 vec3_of(const double v[3]) { return vec3(v[0], v[1], v[2]); }
+
+frusta_result read_world_def(const frusta_world_def& in, WorldDef* out) {
+  WorldDef def;
+  def.max_objects = in.max_objects;
+  def.rate_hz = in.rate_hz;
+  def.spin_us = in.spin_us;
+  def.gravity = vec3_of(in.gravity);
+  def.max_contacts_per_hand = in.max_contacts_per_hand;
+  def.command_capacity = in.command_capacity;
+  def.solver.prediction_margin = in.prediction_margin;
+  def.solver.node_radius = in.node_radius;
+  def.solver.max_iterations = in.max_iterations;
+  def.solver.max_substeps = in.max_substeps;
+  def.device_limits = {in.max_fingertip_force, in.max_finger_resistance, in.max_joint_torque,
+                       in.max_palm_force, in.max_palm_torque};
+  if (frusta_result r = check_world_def(def)) return r;
+  // the solver's own knobs; the hand-dependent ones are checked when a hand is added
+  // above the solver's penetration tolerance (1e-6 m), below any hand's finger radius
+  if (frusta_result r = check_range(in.prediction_margin, 1e-5, 0.1, false, "prediction_margin"))
+    return r;
+  if (frusta_result r = check_range(in.node_radius, 0.0, 1.0, false, "node_radius")) return r;
+  if (in.max_iterations < 1 || in.max_iterations > 100)
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "max_iterations is %d, must be 1..100", in.max_iterations);
+  if (in.max_substeps < 1 || in.max_substeps > 1024)
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "max_substeps is %d, must be 1..1024", in.max_substeps);
+  *out = def;
+  return FRUSTA_OK;
+}
+
+frusta_result read_object_def(const frusta_object_def& in, ObjectDef* out) {
+  if (in.dynamic != 0 && in.dynamic != 1)
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "dynamic is %d, must be 0 or 1", in.dynamic);
+  Pose pose;
+  if (frusta_result r = read_pose(&in.pose, "pose", &pose)) return r;
+  ObjectDef def;
+  def.pose = {pose.position, glm::mat3_cast(pose.rotation)};
+  def.dynamic = in.dynamic == 1;
+  def.material.normal_stiffness = vec3_of(in.stiffness);
+  def.material.friction = in.friction;
+  def.material.tangential_stiffness = in.tangential_stiffness;
+  def.material.normal_damping = in.normal_damping;
+  def.material.tangential_damping = in.tangential_damping;
+  def.mass = in.mass;
+  def.inertia = vec3_of(in.inertia);
+  def.linear_velocity = vec3_of(in.linear_velocity);
+  def.angular_velocity = vec3_of(in.angular_velocity);
+  def.linear_damping = in.linear_damping;
+  def.angular_damping = in.angular_damping;
+  if (frusta_result r = check_object_def(def)) return r;
+  *out = def;
+  return FRUSTA_OK;
+}
+
+// An object id's world0: the world's slot in the low byte and its generation's low byte
+// above, so the ids of a destroyed world stay stale in the world that reuses its slot
+// (until 256 worlds have come and gone in that slot)
+uint16_t world_tag(frusta_world_id world) {
+  return static_cast<uint16_t>((world.index1 & 0xFF) | ((world.generation & 0xFF) << 8));
+}
+
+// The object slot of id in this world (checked against the host's view: live now).
+frusta_result object_handle(frusta_world_id world, frusta_object_id id, ObjectHandle* out) {
+  if (id.index1 == 0) return fail(FRUSTA_ERROR_NULL_ID, "object id is null (zero-initialised)");
+  if (id.world0 != world_tag(world))
+    return fail(FRUSTA_ERROR_STALE_ID,
+                "object id {index1=%d, world0=%u} belongs to another world, or to a destroyed one",
+                id.index1, id.world0);
+  if (id.index1 < 0)  // never issued; and index1 - 1 would overflow for INT32_MIN
+    return fail(FRUSTA_ERROR_STALE_ID, "object id {index1=%d, generation=%u} names no object",
+                id.index1, id.generation);
+  *out = {id.index1 - 1, id.generation};
+  return FRUSTA_OK;
+}
+
+frusta_result latched(WorldObject* w, const WorldSnapshot** out) {
+  if (!w->latched)
+    return fail(FRUSTA_ERROR_WRONG_STATE, "no step latched yet: call frusta_world_read first");
+  *out = w->latched;
+  return FRUSTA_OK;
+}
+
+frusta_result hand_of(const WorldSnapshot& snap, int32_t hand, const HandSnapshot** out) {
+  if (hand < 0 || hand >= static_cast<int32_t>(snap.hands.size()))
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "hand is %d, the world has %zu", hand, snap.hands.size());
+  *out = &snap.hands[static_cast<size_t>(hand)];
+  return FRUSTA_OK;
+}
+
+void store_state(const HandState& state, frusta_pose* palm, double* angles) {
+  store(Pose{state.palm_position, state.palm_rotation}, palm);
+  std::memcpy(angles, state.angles.data(), sizeof(double) * FRUSTA_HAND_JOINT_COUNT);
+}
+
+}  // namespace
+
+FRUSTA_API frusta_world_def frusta_default_world_def(void) {
+  const WorldDef d;
+  frusta_world_def def;
+  std::memset(&def, 0, sizeof def);
+  def.struct_size = sizeof(frusta_world_def);
+  def.max_objects = d.max_objects;
+  def.rate_hz = d.rate_hz;
+  def.spin_us = d.spin_us;
+  store(d.gravity, def.gravity);
+  def.prediction_margin = d.solver.prediction_margin;
+  def.node_radius = d.solver.node_radius;
+  def.max_iterations = d.solver.max_iterations;
+  def.max_substeps = d.solver.max_substeps;
+  def.max_contacts_per_hand = d.max_contacts_per_hand;
+  def.command_capacity = d.command_capacity;
+  def.max_fingertip_force = d.device_limits.max_fingertip_force;
+  def.max_finger_resistance = d.device_limits.max_finger_resistance;
+  def.max_joint_torque = d.device_limits.max_joint_torque;
+  def.max_palm_force = d.device_limits.max_palm_force;
+  def.max_palm_torque = d.device_limits.max_palm_torque;
+  def.internal_value = kDefCookie;
+  return def;
+}
+
+FRUSTA_API frusta_object_def frusta_default_object_def(void) {
+  const ObjectDef d;
+  frusta_object_def def;
+  std::memset(&def, 0, sizeof def);
+  def.struct_size = sizeof(frusta_object_def);
+  def.dynamic = d.dynamic ? 1 : 0;
+  store(to_pose(d.pose.position, d.pose.rotation), &def.pose);
+  store(d.material.normal_stiffness, def.stiffness);
+  def.friction = d.material.friction;
+  def.tangential_stiffness = d.material.tangential_stiffness;
+  def.normal_damping = d.material.normal_damping;
+  def.tangential_damping = d.material.tangential_damping;
+  def.mass = d.mass;
+  store(d.inertia, def.inertia);
+  store(d.linear_velocity, def.linear_velocity);
+  store(d.angular_velocity, def.angular_velocity);
+  def.linear_damping = d.linear_damping;
+  def.angular_damping = d.angular_damping;
+  def.internal_value = kDefCookie;
+  return def;
+}
+
+FRUSTA_API frusta_result frusta_create_world(const frusta_world_def* def, frusta_world_id* out_world) {
+  if (frusta_result r = check_def_input(def, "frusta_world_def")) return r;
+  if (frusta_result r = check_pointer(out_world, "out_world")) return r;
+  WorldDef d;
+  if (frusta_result r = read_world_def(*def, &d)) return r;
+  return guarded("frusta_create_world", [&] { return world_registry().create(d, out_world); });
+}
+
+FRUSTA_API frusta_result frusta_destroy_world(frusta_world_id world) {
+  return guarded("frusta_destroy_world", [&] { return world_registry().destroy(world); });
+}
+
+FRUSTA_API int32_t frusta_world_is_valid(frusta_world_id world) {
+  return world_registry().is_valid(world) ? 1 : 0;
+}
+
+FRUSTA_API frusta_result frusta_world_add_hand(frusta_world_id world, const frusta_hand_def* def,
+                                               int32_t* out_hand) {
+  WorldObject* w = nullptr;
+  if (frusta_result r = world_registry().find(world, &w)) return r;
+  if (frusta_result r = check_def_input(def, "frusta_hand_def")) return r;
+  if (frusta_result r = check_pointer(out_hand, "out_hand")) return r;
+  if (frusta_result r = check_hand_def(*def)) return r;
+  return guarded("frusta_world_add_hand", [&] {
+    const frusta_result r = w->world.add_hand(make_hand_model(*def), out_hand);
+    if (r == FRUSTA_OK) w->latched = nullptr;  // the snapshots were rebuilt for the new hand
+    return r;
+  });
+}
+
+FRUSTA_API frusta_result frusta_world_set_haptic(frusta_world_id world, int32_t hand,
+                                                 const frusta_pose* palm, const double* angles,
+                                                 int32_t count) {
+  WorldObject* w = nullptr;
+  if (frusta_result r = world_registry().find(world, &w)) return r;
+  Pose pose;
+  if (frusta_result r = read_pose(palm, "palm", &pose)) return r;
+  HandState state;
+  if (frusta_result r = read_joint_angles(angles, count, "angles", &state.angles)) return r;
+  state.palm_position = pose.position;
+  state.palm_rotation = pose.rotation;
+  return w->world.set_haptic(hand, state);
+}
+
+FRUSTA_API frusta_result frusta_world_add_object(frusta_world_id world, frusta_tree_id tree,
+                                                 const frusta_object_def* def,
+                                                 frusta_object_id* out_object) {
+  WorldObject* w = nullptr;
+  if (frusta_result r = world_registry().find(world, &w)) return r;
+  std::shared_ptr<TreeObject> shape;
+  if (frusta_result r = tree_registry().find_shared(tree, &shape)) return r;
+  if (frusta_result r = check_def_input(def, "frusta_object_def")) return r;
+  if (frusta_result r = check_pointer(out_object, "out_object")) return r;
+  ObjectDef d;
+  if (frusta_result r = read_object_def(*def, &d)) return r;
+  return guarded("frusta_world_add_object", [&] {
+    // the world shares the tree object, and sees only its file
+    std::shared_ptr<const TreeFile> file(shape, &shape->file);
+    ObjectHandle handle;
+    if (frusta_result r = w->world.add_object(std::move(file), d, &handle)) return r;
+    *out_object = {handle.slot + 1, world_tag(world),
+                   static_cast<uint16_t>(handle.generation)};
+    return FRUSTA_OK;
+  });
+}
+
+FRUSTA_API frusta_result frusta_world_remove_object(frusta_world_id world, frusta_object_id object) {
+  WorldObject* w = nullptr;
+  if (frusta_result r = world_registry().find(world, &w)) return r;
+  ObjectHandle handle;
+  if (frusta_result r = object_handle(world, object, &handle)) return r;
+  return guarded("frusta_world_remove_object", [&] { return w->world.remove_object(handle); });
+}
+
+FRUSTA_API frusta_result frusta_world_set_object_pose(frusta_world_id world,
+                                                      frusta_object_id object,
+                                                      const frusta_pose* pose) {
+  WorldObject* w = nullptr;
+  if (frusta_result r = world_registry().find(world, &w)) return r;
+  ObjectHandle handle;
+  if (frusta_result r = object_handle(world, object, &handle)) return r;
+  Pose p;
+  if (frusta_result r = read_pose(pose, "pose", &p)) return r;
+  return w->world.set_object_pose(handle, {p.position, glm::mat3_cast(p.rotation)});
+}
+
+FRUSTA_API frusta_result frusta_world_set_object_dynamic(frusta_world_id world,
+                                                         frusta_object_id object, int32_t dynamic) {
+  WorldObject* w = nullptr;
+  if (frusta_result r = world_registry().find(world, &w)) return r;
+  ObjectHandle handle;
+  if (frusta_result r = object_handle(world, object, &handle)) return r;
+  if (dynamic != 0 && dynamic != 1)
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "dynamic is %d, must be 0 or 1", dynamic);
+  return w->world.set_object_dynamic(handle, dynamic == 1);
+}
+
+FRUSTA_API frusta_result frusta_world_step(frusta_world_id world) {
+  WorldObject* w = nullptr;
+  if (frusta_result r = world_registry().find(world, &w)) return r;
+  return w->world.step();
+}
+
+FRUSTA_API frusta_result frusta_world_start(frusta_world_id world) {
+  WorldObject* w = nullptr;
+  if (frusta_result r = world_registry().find(world, &w)) return r;
+  return guarded("frusta_world_start", [&] { return w->world.start(); });
+}
+
+FRUSTA_API frusta_result frusta_world_stop(frusta_world_id world) {
+  WorldObject* w = nullptr;
+  if (frusta_result r = world_registry().find(world, &w)) return r;
+  w->world.stop();
+  return FRUSTA_OK;
+}
+
+FRUSTA_API frusta_result frusta_world_read(frusta_world_id world, frusta_world_state* state) {
+  WorldObject* w = nullptr;
+  if (frusta_result r = world_registry().find(world, &w)) return r;
+  if (frusta_result r = check_pointer(state, "state")) return r;
+  if (frusta_result r = check_struct_size(state->struct_size, sizeof(frusta_world_state),
+                                          "frusta_world_state"))
+    return r;
+  const WorldSnapshot& snap = w->world.read();
+  w->latched = &snap;
+  state->hand_count = static_cast<int32_t>(snap.hands.size());
+  state->step = snap.step;
+  state->time = snap.time;
+  state->step_us = snap.step_us;
+  state->step_us_p50 = snap.step_us_p50;
+  state->step_us_p99 = snap.step_us_p99;
+  state->step_us_max = snap.step_us_max;
+  state->wake_late_us_p50 = snap.wake_late_us_p50;
+  state->wake_late_us_p99 = snap.wake_late_us_p99;
+  state->wake_late_us_max = snap.wake_late_us_max;
+  state->achieved_rate_hz = snap.achieved_rate_hz;
+  state->overruns = snap.overruns;
+  state->rejected_inputs = snap.rejected_inputs;
+  int32_t present = 0;
+  for (const ObjectSnapshot& o : snap.objects) present += o.present ? 1 : 0;
+  state->object_count = present;
+  state->reserved0 = 0;
+  return FRUSTA_OK;
+}
+
+FRUSTA_API frusta_result frusta_world_get_hand(frusta_world_id world, int32_t hand,
+                                               frusta_world_hand* out) {
+  WorldObject* w = nullptr;
+  if (frusta_result r = world_registry().find(world, &w)) return r;
+  if (frusta_result r = check_pointer(out, "out")) return r;
+  if (frusta_result r = check_struct_size(out->struct_size, sizeof(frusta_world_hand),
+                                          "frusta_world_hand"))
+    return r;
+  const WorldSnapshot* snap = nullptr;
+  if (frusta_result r = latched(w, &snap)) return r;
+  const HandSnapshot* h = nullptr;
+  if (frusta_result r = hand_of(*snap, hand, &h)) return r;
+  out->solved = h->solved ? 1 : 0;
+  store_state(h->graphic, &out->graphic_palm, out->graphic_angles);
+  store_state(h->haptic, &out->haptic_palm, out->haptic_angles);
+  out->contact_count = h->contact_count;
+  out->pressing = h->force_stats.pressing;
+  out->slipping = h->force_stats.slipping;
+  out->substeps = h->stats.substeps;
+  out->lagging = h->stats.lagging ? 1 : 0;
+  out->reserved0 = 0;
+  for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
+    store(h->device.fingertip_force[static_cast<size_t>(f)], out->fingertip_force[f]);
+    out->finger_resistance[f] = h->device.finger_resistance[static_cast<size_t>(f)];
+  }
+  std::memcpy(out->joint_torque, h->device.joint_torque.data(), sizeof out->joint_torque);
+  store(h->device.palm_force, out->palm_force);
+  store(h->device.palm_torque, out->palm_torque);
+  return FRUSTA_OK;
+}
+
+FRUSTA_API frusta_result frusta_world_get_contacts(frusta_world_id world, int32_t hand,
+                                                   frusta_world_contact* out, int32_t capacity,
+                                                   int32_t* out_count) {
+  WorldObject* w = nullptr;
+  if (frusta_result r = world_registry().find(world, &w)) return r;
+  if (frusta_result r = check_pointer(out_count, "out_count")) return r;
+  const WorldSnapshot* snap = nullptr;
+  if (frusta_result r = latched(w, &snap)) return r;
+  const HandSnapshot* h = nullptr;
+  if (frusta_result r = hand_of(*snap, hand, &h)) return r;
+  const int32_t kept = std::min(h->contact_count, static_cast<int32_t>(h->contacts.size()));
+  if (capacity < 0) return fail(FRUSTA_ERROR_OUT_OF_RANGE, "capacity is %d, must be >= 0", capacity);
+  if (capacity != 0 || out) {
+    if (frusta_result r = check_pointer(out, "out")) return r;
+    if (capacity < kept)
+      return fail(FRUSTA_ERROR_CAPACITY, "capacity is %d but the hand has %d contacts", capacity,
+                  kept);
+  }
+  if (out) {
+    for (int32_t i = 0; i < kept; ++i) {
+      const SolverContact& c = h->contacts[static_cast<size_t>(i)];
+      const ContactForce& f = h->forces[static_cast<size_t>(i)];
+      frusta_world_contact& o = out[i];
+      const ObjectSnapshot& object = snap->objects[static_cast<size_t>(c.object)];
+      o.object = {c.object + 1, world_tag(world),
+                  static_cast<uint16_t>(object.generation)};
+      o.body = c.body;
+      o.leaf = c.leaf;
+      o.slipping = f.slipping ? 1 : 0;
+      o.reserved0 = 0;
+      o.distance = c.distance;
+      store(f.graphic_point, o.graphic_point);
+      store(f.haptic_point, o.haptic_point);
+      store(c.normal, o.normal);
+      store(f.normal_force, o.normal_force);
+      store(f.friction, o.friction);
+    }
+  }
+  *out_count = kept;
+  return FRUSTA_OK;
+}
+
+FRUSTA_API frusta_result frusta_world_get_object(frusta_world_id world, frusta_object_id object,
+                                                 frusta_object_state* out) {
+  WorldObject* w = nullptr;
+  if (frusta_result r = world_registry().find(world, &w)) return r;
+  ObjectHandle handle;
+  if (frusta_result r = object_handle(world, object, &handle)) return r;
+  if (frusta_result r = check_pointer(out, "out")) return r;
+  if (frusta_result r = check_struct_size(out->struct_size, sizeof(frusta_object_state),
+                                          "frusta_object_state"))
+    return r;
+  const WorldSnapshot* snap = nullptr;
+  if (frusta_result r = latched(w, &snap)) return r;
+  if (handle.slot < 0 || handle.slot >= static_cast<int32_t>(snap->objects.size()) ||
+      !snap->objects[static_cast<size_t>(handle.slot)].present ||
+      snap->objects[static_cast<size_t>(handle.slot)].generation != handle.generation)
+    return fail(FRUSTA_ERROR_STALE_ID,
+                "object id {index1=%d, generation=%u} names no object in the latched step",
+                object.index1, object.generation);
+  const ObjectSnapshot& o = snap->objects[static_cast<size_t>(handle.slot)];
+  out->dynamic = o.dynamic ? 1 : 0;
+  store(to_pose(o.pose.position, o.pose.rotation), &out->pose);
+  store(o.linear_velocity, out->linear_velocity);
+  store(o.angular_velocity, out->angular_velocity);
+  store(o.reaction.force, out->reaction_force);
+  store(o.reaction.torque, out->reaction_torque);
+  return FRUSTA_OK;
+}

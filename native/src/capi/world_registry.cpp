@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: MIT
+#include "capi/world_registry.h"
+
+#include <memory>
+
+#include "core/error.h"
+
+namespace frusta {
+
+WorldRegistry& world_registry() {
+  static WorldRegistry registry;
+  return registry;
+}
+
+frusta_result WorldRegistry::create(const WorldDef& def, frusta_world_id* out) {
+  std::lock_guard<std::mutex> lock(create_mutex_);
+  for (int32_t i = 0; i < kMaxWorlds; ++i) {
+    Slot& slot = slots_[static_cast<size_t>(i)];
+    if (slot.world.load(std::memory_order_relaxed)) continue;
+    auto world = std::make_unique<WorldObject>(def);
+    const uint16_t generation = slot.generation.load(std::memory_order_relaxed);
+    slot.world.store(world.release(), std::memory_order_release);
+    *out = frusta_world_id{i + 1, 0, generation};
+    return FRUSTA_OK;
+  }
+  return fail(FRUSTA_ERROR_CAPACITY, "too many worlds alive (%d)", kMaxWorlds);
+}
+
+frusta_result WorldRegistry::destroy(frusta_world_id id) {
+  std::unique_ptr<WorldObject> doomed;
+  {
+    std::lock_guard<std::mutex> lock(create_mutex_);
+    WorldObject* world = nullptr;
+    if (frusta_result r = find(id, true, &world)) return r;
+    Slot& slot = slots_[static_cast<size_t>(id.index1 - 1)];
+    // the generation first: a lookup racing this sees a stale id, not a dying world
+    const uint16_t g = slot.generation.load(std::memory_order_relaxed);
+    slot.generation.store(static_cast<uint16_t>(g == UINT16_MAX ? 1 : g + 1),
+                          std::memory_order_release);
+    slot.world.store(nullptr, std::memory_order_release);
+    doomed.reset(world);
+  }
+  return FRUSTA_OK;  // the world's thread is stopped and joined as it is freed, unlocked
+}
+
+frusta_result WorldRegistry::find(frusta_world_id id, bool report, WorldObject** out) const {
+  if (id.index1 == 0)
+    return report ? fail(FRUSTA_ERROR_NULL_ID, "world id is null (zero-initialised)")
+                  : FRUSTA_ERROR_NULL_ID;
+  WorldObject* world = nullptr;
+  if (id.index1 > 0 && id.index1 <= kMaxWorlds && id.world0 == 0) {
+    const Slot& slot = slots_[static_cast<size_t>(id.index1 - 1)];
+    if (slot.generation.load(std::memory_order_acquire) == id.generation)
+      world = slot.world.load(std::memory_order_acquire);
+  }
+  if (!world)
+    return report ? fail(FRUSTA_ERROR_STALE_ID,
+                         "world id {index1=%d, world0=%u, generation=%u} names no live world: it "
+                         "was destroyed or never created",
+                         id.index1, id.world0, id.generation)
+                  : FRUSTA_ERROR_STALE_ID;
+  *out = world;
+  return FRUSTA_OK;
+}
+
+frusta_result WorldRegistry::find(frusta_world_id id, WorldObject** out) const {
+  return find(id, true, out);
+}
+
+bool WorldRegistry::is_valid(frusta_world_id id) const {
+  WorldObject* world = nullptr;
+  return find(id, false, &world) == FRUSTA_OK;
+}
+
+}  // namespace frusta

@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: MIT
+// Worlds behind frusta_world_id. Unlike the other registries, finding a world takes no
+// lock: frusta_world_set_haptic is called from device threads at the glove's rate, and
+// must never wait for a host thread creating or destroying another world.
+#pragma once
+
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <mutex>
+
+#include "frusta/frusta.h"
+#include "runtime/world.h"
+
+namespace frusta {
+
+struct WorldObject {
+  explicit WorldObject(const WorldDef& def) : world(def) {}
+  World world;
+  const WorldSnapshot* latched = nullptr;  // by frusta_world_read; host thread only
+};
+
+class WorldRegistry {
+ public:
+  static constexpr int32_t kMaxWorlds = 255;  // a slot + 1 fits an object id's byte
+
+  frusta_result create(const WorldDef& def, frusta_world_id* out);
+  // No other thread may use the world meanwhile (documented in the header).
+  frusta_result destroy(frusta_world_id id);
+  // Lock-free: the world of id in *out, or an error (null or stale id).
+  frusta_result find(frusta_world_id id, WorldObject** out) const;
+  bool is_valid(frusta_world_id id) const;
+
+ private:
+  struct Slot {
+    std::atomic<WorldObject*> world{nullptr};
+    std::atomic<uint16_t> generation{1};  // ids with generation 0 are never issued
+  };
+  frusta_result find(frusta_world_id id, bool report, WorldObject** out) const;
+
+  std::mutex create_mutex_;  // serialises create/destroy (host calls) only
+  std::array<Slot, kMaxWorlds> slots_;
+};
+
+WorldRegistry& world_registry();
+
+}  // namespace frusta
