@@ -86,6 +86,7 @@ int main(int argc, char** argv) {
       {"marble", s::make_sphere(s::kMarbleRadius, 24)},   // to pinch and carry
       {"box", s::make_box(vec3(0.10, 0.06, 0.04), 2)},    // flat faces, right angles
       {"plate", s::make_box(vec3(0.12, 0.08, 0.004), 1)}, // thin: pinch it
+      {"tile", s::make_box(vec3(0.03, 0.03, 0.004), 1)},  // the plate of the pinch scenarios
       {"bowl", s::make_bowl(0.06, 0.006, 24)},            // concave
       {"mug", s::make_mug(0.04, 0.09, 0.006, 48)},        // a handle through the wall
       {"octahedron", s::make_octahedron(0.05)},           // sharp edges
