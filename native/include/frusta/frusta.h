@@ -39,7 +39,7 @@
 /* ---------------------------------------------------------------- version */
 
 #define FRUSTA_VERSION_MAJOR 0
-#define FRUSTA_VERSION_MINOR 1
+#define FRUSTA_VERSION_MINOR 2
 #define FRUSTA_VERSION_PATCH 0
 /** major*1000000 + minor*1000 + patch; frusta_version() returns the library's. */
 #define FRUSTA_VERSION \
