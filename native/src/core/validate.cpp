@@ -27,6 +27,18 @@ frusta_result check_struct_size(int32_t given, int32_t expected, const char* str
               struct_name, given, struct_name, expected);
 }
 
+bool all_finite(const double* values, int count) {
+  for (int i = 0; i < count; ++i)
+    if (!std::isfinite(values[i])) return false;
+  return true;
+}
+
+bool all_bounded(const double* values, int count, double limit) {
+  for (int i = 0; i < count; ++i)
+    if (!(std::fabs(values[i]) <= limit)) return false;  // NaN fails too
+  return true;
+}
+
 frusta_result check_finite(const double* values, int count, const char* field) {
   for (int i = 0; i < count; ++i) {
     if (!std::isfinite(values[i])) {

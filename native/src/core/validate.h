@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <cstdio>
 
 #include "frusta/frusta.h"
 
@@ -24,5 +25,38 @@ frusta_result check_finite(const double* values, int count, const char* field);
 frusta_result check_bounded(const double* values, int count, double limit, const char* field);
 // finite and min <= value (strict when strict_min), value <= max
 frusta_result check_range(double value, double min, double max, bool strict_min, const char* field);
+
+// The same checks with the field's name given as a printf format and its arguments,
+// formatted only when the check fails: checks on the 1 kHz path then cost a pass over
+// the values, not a snprintf per field (measured: 75 % of the forces' time was naming
+// fields that were fine).
+bool all_finite(const double* values, int count);
+bool all_bounded(const double* values, int count, double limit);
+
+template <class... Args>
+frusta_result check_finite_named(const double* values, int count, const char* format, Args... args) {
+  if (all_finite(values, count)) return FRUSTA_OK;
+  char field[128];
+  std::snprintf(field, sizeof field, format, args...);
+  return check_finite(values, count, field);
+}
+
+template <class... Args>
+frusta_result check_bounded_named(const double* values, int count, double limit, const char* format,
+                                  Args... args) {
+  if (all_bounded(values, count, limit)) return FRUSTA_OK;
+  char field[128];
+  std::snprintf(field, sizeof field, format, args...);
+  return check_bounded(values, count, limit, field);
+}
+
+template <class... Args>
+frusta_result check_range_named(double value, double min, double max, bool strict_min,
+                                const char* format, Args... args) {
+  if (strict_min ? value > min && value <= max : value >= min && value <= max) return FRUSTA_OK;
+  char field[128];
+  std::snprintf(field, sizeof field, format, args...);
+  return check_range(value, min, max, strict_min, field);
+}
 
 }  // namespace frusta

@@ -21,18 +21,6 @@ const ForceMaterial kDefaultMaterial{};
 // a normal further than this from unit length was not made by the solver
 constexpr double kUnitTolerance = 1e-6;
 
-frusta_result check_vector(const vec3& v, double limit, const char* format, int32_t index) {
-  char field[96];
-  std::snprintf(field, sizeof field, format, index);
-  return check_bounded(glm::value_ptr(v), 3, limit, field);
-}
-
-frusta_result check_rotation(const glm::dmat3& m, const char* format, int32_t index) {
-  char field[96];
-  std::snprintf(field, sizeof field, format, index);
-  return check_finite(glm::value_ptr(m), 9, field);
-}
-
 frusta_result check_contact(const SolverContact& c, int32_t i, int32_t object_count) {
   if (c.object < 0 || c.object >= object_count)
     return fail(FRUSTA_ERROR_OUT_OF_RANGE, "contacts[%d].object is %d, must be in [0, %d)", i,
@@ -46,12 +34,12 @@ frusta_result check_contact(const SolverContact& c, int32_t i, int32_t object_co
                 c.part);
   if (!std::isfinite(c.distance))
     return fail(FRUSTA_ERROR_NOT_FINITE, "contacts[%d].distance is %g", i, c.distance);
-  if (frusta_result r = check_vector(c.hand_point, kMaxCoordinate, "contacts[%d].hand_point", i))
+  if (frusta_result r = check_bounded_named(glm::value_ptr(c.hand_point), 3, kMaxCoordinate, "contacts[%d].hand_point", i))
     return r;
   if (frusta_result r =
-          check_vector(c.object_point, kMaxCoordinate, "contacts[%d].object_point", i))
+          check_bounded_named(glm::value_ptr(c.object_point), 3, kMaxCoordinate, "contacts[%d].object_point", i))
     return r;
-  if (frusta_result r = check_vector(c.normal, 2.0, "contacts[%d].normal", i)) return r;
+  if (frusta_result r = check_bounded_named(glm::value_ptr(c.normal), 3, 2.0, "contacts[%d].normal", i)) return r;
   const double length = glm::length(c.normal);
   if (std::fabs(length - 1.0) > kUnitTolerance)
     return fail(FRUSTA_ERROR_OUT_OF_RANGE, "contacts[%d].normal has length %g, must be unit", i,
@@ -60,6 +48,8 @@ frusta_result check_contact(const SolverContact& c, int32_t i, int32_t object_co
 }
 
 frusta_result check_material(const ForceMaterial& m, int32_t i) {
+  // named only to report a fault: the check itself formats nothing when all is well
+  if (check_force_material(m, "") == FRUSTA_OK) return FRUSTA_OK;
   char name[32];
   std::snprintf(name, sizeof name, "materials[%d]", i);
   return check_force_material(m, name);
@@ -69,9 +59,9 @@ frusta_result check_objects(const SolverObject* objects, int32_t object_count,
                             const ForceMaterial* materials) {
   for (int32_t o = 0; o < object_count; ++o) {
     if (frusta_result r =
-            check_vector(objects[o].pose.position, kMaxCoordinate, "objects[%d].pose.position", o))
+            check_bounded_named(glm::value_ptr(objects[o].pose.position), 3, kMaxCoordinate, "objects[%d].pose.position", o))
       return r;
-    if (frusta_result r = check_rotation(objects[o].pose.rotation, "objects[%d].pose.rotation", o))
+    if (frusta_result r = check_finite_named(glm::value_ptr(objects[o].pose.rotation), 9, "objects[%d].pose.rotation", o))
       return r;
     if (materials)
       if (frusta_result r = check_material(materials[o], o)) return r;
@@ -107,26 +97,21 @@ RigidPose haptic_body_frame(const HandPose& haptic, int32_t body) {
 }  // namespace
 
 frusta_result check_force_material(const ForceMaterial& m, const char* name) {
-  char field[96];
-  for (int k = 0; k < 3; ++k) {
-    std::snprintf(field, sizeof field, "%s.normal_stiffness[%d]", name, k);
-    if (frusta_result r =
-            check_range(m.normal_stiffness[k], 0.0, kMaxContactStiffness, false, field))
+  for (int k = 0; k < 3; ++k)
+    if (frusta_result r = check_range_named(m.normal_stiffness[k], 0.0, kMaxContactStiffness, false,
+                                            "%s.normal_stiffness[%d]", name, k))
       return r;
-  }
-  std::snprintf(field, sizeof field, "%s.tangential_stiffness", name);
-  if (frusta_result r =
-          check_range(m.tangential_stiffness, 0.0, kMaxContactStiffness, false, field))
+  if (frusta_result r = check_range_named(m.tangential_stiffness, 0.0, kMaxContactStiffness, false,
+                                          "%s.tangential_stiffness", name))
     return r;
-  std::snprintf(field, sizeof field, "%s.normal_damping", name);
-  if (frusta_result r = check_range(m.normal_damping, 0.0, kMaxContactStiffness, false, field))
+  if (frusta_result r = check_range_named(m.normal_damping, 0.0, kMaxContactStiffness, false,
+                                          "%s.normal_damping", name))
     return r;
-  std::snprintf(field, sizeof field, "%s.tangential_damping", name);
-  if (frusta_result r = check_range(m.tangential_damping, 0.0, kMaxContactStiffness, false, field))
+  if (frusta_result r = check_range_named(m.tangential_damping, 0.0, kMaxContactStiffness, false,
+                                          "%s.tangential_damping", name))
     return r;
   // a friction coefficient above a few is not a material but a typo; 100 leaves room
-  std::snprintf(field, sizeof field, "%s.friction", name);
-  return check_range(m.friction, 0.0, 100.0, false, field);
+  return check_range_named(m.friction, 0.0, 100.0, false, "%s.friction", name);
 }
 
 void haptic_hand_pose(const HandModel& model, const HandState& haptic, HandPose& pose) {
@@ -137,28 +122,28 @@ void haptic_hand_pose(const HandModel& model, const HandState& haptic, HandPose&
 }
 
 frusta_result check_hand_pose(const HandPose& pose, const char* which) {
-  char field[96];
-  std::snprintf(field, sizeof field, "%s pose palm_position", which);
-  if (frusta_result r = check_bounded(glm::value_ptr(pose.palm_position), 3, kMaxCoordinate, field))
+  if (frusta_result r = check_bounded_named(glm::value_ptr(pose.palm_position), 3, kMaxCoordinate,
+                                            "%s pose palm_position", which))
     return r;
-  std::snprintf(field, sizeof field, "%s pose palm_rotation", which);
-  if (frusta_result r = check_finite(glm::value_ptr(pose.palm_rotation), 9, field)) return r;
+  if (frusta_result r = check_finite_named(glm::value_ptr(pose.palm_rotation), 9,
+                                           "%s pose palm_rotation", which))
+    return r;
   for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
     const FingerPose& finger = pose.fingers[f];
-    for (size_t j = 0; j < finger.joint.size(); ++j) {
-      std::snprintf(field, sizeof field, "%s pose finger %d joint %zu", which, f, j);
-      if (frusta_result r =
-              check_bounded(glm::value_ptr(finger.joint[j]), 3, kMaxCoordinate, field))
+    for (size_t j = 0; j < finger.joint.size(); ++j)
+      if (frusta_result r = check_bounded_named(glm::value_ptr(finger.joint[j]), 3, kMaxCoordinate,
+                                                "%s pose finger %d joint %zu", which, f, j))
         return r;
-    }
-    for (size_t s = 0; s < finger.segment_rotation.size(); ++s) {
-      std::snprintf(field, sizeof field, "%s pose finger %d segment_rotation %zu", which, f, s);
-      if (frusta_result r = check_finite(glm::value_ptr(finger.segment_rotation[s]), 9, field))
+    for (size_t s = 0; s < finger.segment_rotation.size(); ++s)
+      if (frusta_result r = check_finite_named(glm::value_ptr(finger.segment_rotation[s]), 9,
+                                               "%s pose finger %d segment_rotation %zu", which, f, s))
         return r;
-    }
-    std::snprintf(field, sizeof field, "%s pose finger %d axes", which, f);
-    if (frusta_result r = check_finite(glm::value_ptr(finger.abduction_axis), 3, field)) return r;
-    if (frusta_result r = check_finite(glm::value_ptr(finger.flexion_axis), 3, field)) return r;
+    if (frusta_result r = check_finite_named(glm::value_ptr(finger.abduction_axis), 3,
+                                             "%s pose finger %d abduction axis", which, f))
+      return r;
+    if (frusta_result r = check_finite_named(glm::value_ptr(finger.flexion_axis), 3,
+                                             "%s pose finger %d flexion axis", which, f))
+      return r;
   }
   return FRUSTA_OK;
 }

@@ -33,9 +33,7 @@ frusta_result check_limits(const DeviceLimits& l) {
 }
 
 frusta_result check_vector(const vec3& v, double limit, const char* name, int32_t index) {
-  char field[96];
-  std::snprintf(field, sizeof field, "forces[%d].%s", index, name);
-  return check_bounded(glm::value_ptr(v), 3, limit, field);
+  return check_bounded_named(glm::value_ptr(v), 3, limit, "forces[%d].%s", index, name);
 }
 
 frusta_result check_force(const ContactForce& c, int32_t i, int32_t object_count) {
@@ -76,13 +74,10 @@ frusta_result compute_device_outputs(const HandPose& haptic, const ContactForce*
   }
   if (frusta_result r = check_limits(limits)) return r;
   if (frusta_result r = check_hand_pose(haptic, "haptic")) return r;
-  for (int32_t o = 0; o < object_count; ++o) {
-    char field[64];
-    std::snprintf(field, sizeof field, "objects[%d].pose.position", o);
-    if (frusta_result r =
-            check_bounded(glm::value_ptr(objects[o].pose.position), 3, kMaxCoordinate, field))
+  for (int32_t o = 0; o < object_count; ++o)
+    if (frusta_result r = check_bounded_named(glm::value_ptr(objects[o].pose.position), 3,
+                                              kMaxCoordinate, "objects[%d].pose.position", o))
       return r;
-  }
   for (int32_t i = 0; i < force_count; ++i)
     if (frusta_result r = check_force(forces[i], i, object_count)) return r;
 
