@@ -25,6 +25,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "c_check.h"
 #include "frusta/frusta.h"
 
 /* The C compiler must lay the structs out as the C++ library does; the full
@@ -41,53 +42,6 @@ _Static_assert(sizeof(frusta_world_hand) == 832, "frusta_world_hand layout chang
 _Static_assert(sizeof(frusta_world_contact) == 152, "frusta_world_contact layout changed");
 _Static_assert(sizeof(frusta_object_state) == 160, "frusta_object_state layout changed");
 
-/* ------------------------------------------------------------------ reporting */
-
-static int g_passed;
-static int g_failed;
-
-/* One check: prints "ok   <what>" or "FAIL <what>" and counts it; returns ok. */
-static int check(int ok, const char* format, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 2, 3)))
-#endif
-    ;
-
-static int check(int ok, const char* format, ...) {
-  va_list args;
-  va_start(args, format);
-  fputs(ok ? "ok   " : "FAIL ", stdout);
-  vprintf(format, args);
-  fputc('\n', stdout);
-  va_end(args);
-  if (ok)
-    ++g_passed;
-  else
-    ++g_failed;
-  return ok;
-}
-
-static int contains(const char* haystack, const char* needle) {
-  return haystack && needle && strstr(haystack, needle) != NULL;
-}
-
-/* One check: the call returned `want`, and frusta_last_error() names `field` and
- * (unless null) `value`, the text %g or %d prints for the offending number. */
-static int expect_error(const char* what, frusta_result got, frusta_result want, const char* field,
-                        const char* value) {
-  const char* message = frusta_last_error();
-  const int ok = got == want && contains(message, field) && (!value || contains(message, value));
-  return check(ok, "%s -> %s (want %s naming '%s'%s%s): \"%s\"", what, frusta_result_name(got),
-               frusta_result_name(want), field, value ? " and " : "", value ? value : "",
-               message ? message : "(null)");
-}
-
-static int expect_ok(const char* what, frusta_result got) {
-  return check(got == FRUSTA_OK, "%s -> %s%s%s", what, frusta_result_name(got),
-               got == FRUSTA_OK ? "" : ": ", got == FRUSTA_OK ? "" : frusta_last_error());
-}
-
-static int near(double a, double b, double tolerance) { return fabs(a - b) <= tolerance; }
 
 static double dot3(const double a[3], const double b[3]) {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];

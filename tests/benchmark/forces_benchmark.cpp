@@ -26,6 +26,7 @@
 #include "hand/hand_model.h"
 #include "runtime/step_histogram.h"
 #include "runtime/world.h"
+#include "bench_sections.h"
 #include "scenes/hand_scenarios.h"
 
 namespace frusta {
@@ -254,12 +255,8 @@ void press_and_slide(std::shared_ptr<const TreeFile> box, double bake_error, dou
 
 int main(int argc, char** argv) {
   using namespace frusta;
-  std::vector<std::string> sections;
-  for (int i = 1; i < argc; ++i)
-    if (argv[i][0] != '-') sections.push_back(argv[i]);
-  auto wanted = [&](const char* section) {
-    return sections.empty() || std::find(sections.begin(), sections.end(), section) != sections.end();
-  };
+  const bench::Sections sections(argc, argv);
+  auto wanted = [&](const char* section) { return sections.wanted(section); };
   std::printf("{\n\"suite\": \"forces\",\n\"hardware_threads\": %u,\n", std::thread::hardware_concurrency());
   std::printf("\"material\": {\"normal_stiffness_n_per_m\": %g, \"friction\": %g, \"tangential_stiffness_n_per_m\": %g},\n",
               kDefaultContactStiffness, ForceMaterial{}.friction, ForceMaterial{}.tangential_stiffness);

@@ -24,6 +24,7 @@
 #include "geometry/contact_test.h"
 #include "geometry/exact_distance.h"
 #include "hand/hand_model.h"
+#include "bench_sections.h"
 #include "scenes/hand_scenarios.h"
 #include "solver/hand_solver.h"
 #ifdef FRUSTA_WITH_MUJOCO
@@ -174,12 +175,8 @@ double sleep_round_trip_us() {
 
 int main(int argc, char** argv) {
   using namespace frusta;
-  std::vector<std::string> sections;
-  for (int i = 1; i < argc; ++i)
-    if (argv[i][0] != '-') sections.push_back(argv[i]);
-  auto wanted = [&](const char* section) {
-    return sections.empty() || std::find(sections.begin(), sections.end(), section) != sections.end();
-  };
+  const bench::Sections sections(argc, argv);
+  auto wanted = [&](const char* section) { return sections.wanted(section); };
   const SolverParams defaults;
   const std::vector<std::string> names = scenes::hand_scenario_names();
   std::printf("{\n\"suite\": \"solver\",\n\"hardware_threads\": %u,\n", std::thread::hardware_concurrency());

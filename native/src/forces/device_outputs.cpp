@@ -6,7 +6,6 @@
 #include <cstdio>
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
-#include <limits>
 
 #include "core/error.h"
 #include "core/validate.h"
@@ -19,18 +18,6 @@ namespace {
 // below 100: under 1e18 N); it keeps every sum and torque here finite.
 constexpr double kMaxContactForce = 1e20;  // newtons
 
-frusta_result check_limits(const DeviceLimits& l) {
-  const double any = std::numeric_limits<double>::max();
-  if (frusta_result r = check_range(l.max_fingertip_force, 0.0, any, false, "max_fingertip_force"))
-    return r;
-  if (frusta_result r =
-          check_range(l.max_finger_resistance, 0.0, any, false, "max_finger_resistance"))
-    return r;
-  if (frusta_result r = check_range(l.max_joint_torque, 0.0, any, false, "max_joint_torque"))
-    return r;
-  if (frusta_result r = check_range(l.max_palm_force, 0.0, any, false, "max_palm_force")) return r;
-  return check_range(l.max_palm_torque, 0.0, any, false, "max_palm_torque");
-}
 
 frusta_result check_vector(const vec3& v, double limit, const char* name, int32_t index) {
   return check_bounded_named(glm::value_ptr(v), 3, limit, "forces[%d].%s", index, name);
@@ -57,6 +44,19 @@ vec3 clamp_length(const vec3& v, double limit) {
 
 }  // namespace
 
+frusta_result check_device_limits(const DeviceLimits& l) {
+  const double any = kMaxDeviceLimit;
+  if (frusta_result r = check_range(l.max_fingertip_force, 0.0, any, false, "max_fingertip_force"))
+    return r;
+  if (frusta_result r =
+          check_range(l.max_finger_resistance, 0.0, any, false, "max_finger_resistance"))
+    return r;
+  if (frusta_result r = check_range(l.max_joint_torque, 0.0, any, false, "max_joint_torque"))
+    return r;
+  if (frusta_result r = check_range(l.max_palm_force, 0.0, any, false, "max_palm_force")) return r;
+  return check_range(l.max_palm_torque, 0.0, any, false, "max_palm_torque");
+}
+
 frusta_result compute_device_outputs(const HandPose& haptic, const ContactForce* forces,
                                      int32_t force_count, const SolverObject* objects,
                                      int32_t object_count, const DeviceLimits& limits,
@@ -72,7 +72,7 @@ frusta_result compute_device_outputs(const HandPose& haptic, const ContactForce*
     if (frusta_result r = check_pointer(objects, "objects")) return r;
     if (frusta_result r = check_pointer(reactions, "reactions")) return r;
   }
-  if (frusta_result r = check_limits(limits)) return r;
+  if (frusta_result r = check_device_limits(limits)) return r;
   if (frusta_result r = check_hand_pose(haptic, "haptic")) return r;
   for (int32_t o = 0; o < object_count; ++o)
     if (frusta_result r = check_bounded_named(glm::value_ptr(objects[o].pose.position), 3,

@@ -40,6 +40,12 @@ struct ObjectWrench {
   vec3 torque{0.0};
 };
 
+// Far above any device, and low enough that every output product stays finite.
+constexpr double kMaxDeviceLimit = 1e9;
+
+// Each limit in [0, kMaxDeviceLimit]; the thread's error names the field.
+frusta_result check_device_limits(const DeviceLimits& limits);
+
 // From `forces` (a ContactForces' forces() after a successful update) and the haptic
 // pose that update used: fill `out`, and `reactions` (object_count entries, one per
 // object of `objects`; every one is written, untouched objects with zero). Bad input

@@ -79,17 +79,7 @@ frusta_result check_world_def(const WorldDef& def) {
   if (def.command_capacity < 1 || def.command_capacity > 1 << 20)
     return fail(FRUSTA_ERROR_OUT_OF_RANGE, "command_capacity is %d, must be 1..2^20",
                 def.command_capacity);
-  const DeviceLimits& l = def.device_limits;
-  const double any = 1e9;
-  if (frusta_result r = check_range(l.max_fingertip_force, 0.0, any, false, "max_fingertip_force"))
-    return r;
-  if (frusta_result r =
-          check_range(l.max_finger_resistance, 0.0, any, false, "max_finger_resistance"))
-    return r;
-  if (frusta_result r = check_range(l.max_joint_torque, 0.0, any, false, "max_joint_torque"))
-    return r;
-  if (frusta_result r = check_range(l.max_palm_force, 0.0, any, false, "max_palm_force")) return r;
-  return check_range(l.max_palm_torque, 0.0, any, false, "max_palm_torque");
+  return check_device_limits(def.device_limits);
 }
 
 World::World(const WorldDef& def)
