@@ -125,7 +125,7 @@ int main() {
               read_ns(false), read_ns(true), sizeof(Snapshot));
   std::printf("\"world_step\": [\n");
   for (int hands : {1, 2})
-    for (int objects : {2, 5, 20}) world_steps(hands, objects, hands == 2 && objects == 20);
+    for (int objects : {hands, 5, 20}) world_steps(hands, objects, hands == 2 && objects == 20);  // each hand holds one
   std::printf("]\n}\n");
   return 0;
 }
