@@ -23,6 +23,9 @@ constexpr double kOrthonormalTolerance = 1e-6;
 // so that it stays a finite pose the solver can meet
 constexpr double kMaxLinearSpeed = 100.0;   // m/s
 constexpr double kMaxAngularSpeed = 1000.0; // rad/s
+// the share of a period the hands' solves may take on the own thread; the rest is for
+// the forces, the objects and the snapshot
+constexpr double kStepBudget = 0.7;
 
 vec3 clamp_length(const vec3& v, double limit) {
   const double length = glm::length(v);
@@ -309,7 +312,8 @@ void World::run(double rate_hz, double spin_us) {
   }
 }
 
-void World::step_hand(HandSlot& hand, HandSnapshot& snap, double dt, bool paced, int64_t tick_ns) {
+void World::step_hand(HandSlot& hand, HandSnapshot& snap, double dt, bool paced, int64_t tick_ns,
+                      HandSolver::Clock::time_point deadline) {
   if (hand.input.fresh()) {
     hand.previous = hand.has_input ? hand.newest : hand.input.read();
     hand.newest = hand.input.read();
@@ -327,7 +331,7 @@ void World::step_hand(HandSlot& hand, HandSnapshot& snap, double dt, bool paced,
   }
   const int32_t object_count = static_cast<int32_t>(active_.size());
   StepStats stats;
-  if (hand.solver.step(haptic, active_.data(), object_count, &stats) == FRUSTA_OK) {
+  if (hand.solver.step(haptic, active_.data(), object_count, &stats, deadline) == FRUSTA_OK) {
     hand.accepted = haptic;
   } else {
     ++rejected_;  // the graphic hand stays as it was, the forces follow the last good input
@@ -413,7 +417,15 @@ void World::step_once(double dt, bool paced, int64_t tick_ns) {
   apply_commands();
   for (ObjectSlot& slot : slots_) slot.reaction = ObjectWrench{};
   WorldSnapshot& out = output_.write_slot();
-  for (size_t h = 0; h < hands_.size(); ++h) step_hand(*hands_[h], out.hands[h], dt, paced, tick_ns);
+  for (size_t h = 0; h < hands_.size(); ++h) {
+    // on the own thread each hand may take its share of most of a period, so a hand
+    // caught in a tangle of contacts lags for a step instead of stalling the thread
+    const auto deadline =
+        paced ? start + std::chrono::duration_cast<HandSolver::Clock::duration>(std::chrono::duration<double>(
+                            kStepBudget * dt * static_cast<double>(h + 1) / static_cast<double>(hands_.size())))
+              : HandSolver::Clock::time_point::max();
+    step_hand(*hands_[h], out.hands[h], dt, paced, tick_ns, deadline);
+  }
   for (size_t s = 0; s < slots_.size(); ++s) {
     const ObjectSlot& slot = slots_[s];
     ObjectSnapshot& o = out.objects[s];

@@ -202,7 +202,8 @@ class World {
   // clock, ns), interpolated by the times they were set, so a device's jitter does not
   // jerk the hand
   void step_once(double dt, bool paced, int64_t tick_ns);
-  void step_hand(HandSlot& hand, HandSnapshot& snap, double dt, bool paced, int64_t tick_ns);
+  void step_hand(HandSlot& hand, HandSnapshot& snap, double dt, bool paced, int64_t tick_ns,
+                 HandSolver::Clock::time_point deadline);
   void move_dynamic_objects(double dt);
   void apply_commands();
   void rebuild_active();

@@ -116,7 +116,8 @@ frusta_result HandSolver::check_params(const SolverParams& p, const HandModel& m
 }
 
 frusta_result HandSolver::step(const HandState& haptic, const SolverObject* objects,
-                               int32_t object_count, StepStats* stats_out) {
+                               int32_t object_count, StepStats* stats_out,
+                               Clock::time_point deadline) {
   if (frusta_result r = check_haptic(haptic)) return r;
   StepStats stats;
   HandState target = haptic;
@@ -140,7 +141,10 @@ frusta_result HandSolver::step(const HandState& haptic, const SolverObject* obje
     const bool reached = substep(target, objects, object_count, stats, moved);
     ++stats.substeps;
     if (reached || !moved) break;
-    if (sub + 1 == params_.max_substeps) stats.lagging = true;
+    if (sub + 1 == params_.max_substeps || Clock::now() > deadline) {
+      stats.lagging = true;
+      break;
+    }
   }
   report_contacts();
   if (stats_out) *stats_out = stats;

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <array>
+#include <chrono>
 #include <cstdint>
 #include <vector>
 
@@ -43,7 +44,7 @@ struct StepStats {
   int32_t finger_solves = 0;     // finger stages run (fingers with candidates), summed
   int32_t palm_solves = 0;
   bool depenetrated = false;     // this step placed a hand that started inside
-  bool lagging = false;          // the sub-step cap stopped the hand short of its target
+  bool lagging = false;          // the sub-step cap or the deadline stopped the hand short
   bool infeasible = false;       // some QP could not meet every row; the hand stayed safe
 };
 
@@ -54,10 +55,14 @@ class HandSolver {
   // Check a parameter set against a hand; the thread's error names the field.
   static frusta_result check_params(const SolverParams& params, const HandModel& model);
 
+  using Clock = std::chrono::steady_clock;
+
   // One step towards `haptic`. Bad input (non-finite, absurd) returns an error and
-  // leaves the graphic hand as it was. Objects stay put during a step.
+  // leaves the graphic hand as it was. Objects stay put during a step. No sub-step
+  // starts after `deadline` (at least one always runs): a hand caught in a tangle of
+  // contacts then lags (stats->lagging) instead of stalling a real-time thread.
   frusta_result step(const HandState& haptic, const SolverObject* objects, int32_t object_count,
-                     StepStats* stats);
+                     StepStats* stats, Clock::time_point deadline = Clock::time_point::max());
 
   // Forget the graphic hand: the next step starts it afresh from the haptic hand.
   void reset() { started_ = false; }

@@ -164,6 +164,27 @@ TEST(HandSolver, HapticHandTeleportingThroughAPlateLeavesTheGraphicHandOnTop) {
   expect_holds_and_rejects_bad_input(solver, s, log);
 }
 
+TEST(HandSolver, APassedDeadlineStopsAfterOneSubStepAndTheHandLagsSafely) {
+  // the teleport needs 32 sub-steps; with its deadline gone each step takes one, the
+  // hand lags (and says so) but never sinks, and catches up over the next steps
+  const HandScenario s = make_hand_scenario("plate_teleport");
+  HandSolver solver(make_hand_model(frusta_default_hand_def()), SolverParams{});
+  const HandSolver::Clock::time_point gone = HandSolver::Clock::now();
+  int lagged = 0;
+  for (int32_t t = 0; t < s.steps + 200; ++t) {
+    StepStats stats;
+    ASSERT_EQ(solver.step(t < s.steps ? s.haptic(t) : s.held, s.objects.data(),
+                          static_cast<int32_t>(s.objects.size()), &stats, gone),
+              FRUSTA_OK);
+    EXPECT_EQ(stats.substeps, 1) << "step " << t;
+    lagged += stats.lagging ? 1 : 0;
+    ASSERT_LE(scenes::deepest_penetration(solver.model(), solver.graphic_pose(), s.objects), 1e-5)
+        << "step " << t;
+  }
+  EXPECT_GT(lagged, 10) << "the jump took several steps to follow";
+  EXPECT_FALSE(solver.contacts().empty()) << "and the hand ends resting on the plate";
+}
+
 TEST(HandSolver, HapticHandStartingInsideAnObjectIsPlacedOutside) {
   const HandScenario s = make_hand_scenario("start_inside");
   HandSolver solver(default_model(), SolverParams{});
