@@ -96,6 +96,7 @@ World::World(const WorldDef& def)
   active_slot_.reserve(static_cast<size_t>(def.max_objects));
   active_material_.reserve(static_cast<size_t>(def.max_objects));
   hand_reactions_.resize(static_cast<size_t>(def.max_objects));
+  placed_.assign(static_cast<size_t>(def.max_objects), 0);
   WorldSnapshot prototype;
   prototype.objects.resize(static_cast<size_t>(def.max_objects));
   output_.reset(prototype);
@@ -106,6 +107,11 @@ frusta_result World::add_hand(const HandModel& model, int32_t* out_hand) {
     return fail(FRUSTA_ERROR_WRONG_STATE, "hands are added before the world's first step");
   if (frusta_result r = HandSolver::check_params(def_.solver, model)) return r;
   hands_.push_back(std::make_unique<HandSlot>(model, def_.solver, def_.max_contacts_per_hand));
+  HandSlot& added = *hands_.back();
+  added.ignored.assign(static_cast<size_t>(def_.max_objects), 0);
+  added.objects.reserve(static_cast<size_t>(def_.max_objects));
+  added.object_slot.reserve(static_cast<size_t>(def_.max_objects));
+  added.materials.reserve(static_cast<size_t>(def_.max_objects));
   WorldSnapshot prototype;
   prototype.hands.resize(hands_.size());
   for (HandSnapshot& h : prototype.hands) {
@@ -227,14 +233,20 @@ void World::apply_commands() {
     ObjectSlot& slot = slots_[static_cast<size_t>(c.slot)];
     switch (c.kind) {
       case CommandKind::kAdd:
+        placed_[static_cast<size_t>(c.slot)] = 1;
         slot.tree = c.tree;
         slot.generation = c.generation;
         slot.def = c.def;
         break;
       case CommandKind::kRemove:
         slot.tree = nullptr;
+        for (auto& hand : hands_) {  // a removed object is nobody's to ignore any more
+          hand->ignored_count -= hand->ignored[static_cast<size_t>(c.slot)];
+          hand->ignored[static_cast<size_t>(c.slot)] = 0;
+        }
         break;
       case CommandKind::kPose:
+        placed_[static_cast<size_t>(c.slot)] = 1;
         slot.def.pose = c.def.pose;
         slot.def.linear_velocity = slot.def.angular_velocity = vec3(0.0);
         break;
@@ -252,6 +264,7 @@ void World::apply_commands() {
 }
 
 void World::rebuild_active() {
+  objects_moved_ = true;
   active_.clear();  // within the capacity reserved up front: no allocation
   active_slot_.clear();
   active_material_.clear();
@@ -329,9 +342,15 @@ void World::step_hand(HandSlot& hand, HandSnapshot& snap, double dt, bool paced,
     const double t = std::clamp(late / static_cast<double>(span), 0.0, 1.0);
     haptic = interpolate(hand.previous.state, hand.newest.state, t);
   }
-  const int32_t object_count = static_cast<int32_t>(active_.size());
+  update_ignored(hand);
+  const bool own_list = hand.ignored_count > 0;
+  const SolverObject* objects = own_list ? hand.objects.data() : active_.data();
+  const int32_t* object_slot = own_list ? hand.object_slot.data() : active_slot_.data();
+  const ForceMaterial* materials = own_list ? hand.materials.data() : active_material_.data();
+  const int32_t object_count =
+      static_cast<int32_t>(own_list ? hand.objects.size() : active_.size());
   StepStats stats;
-  if (hand.solver.step(haptic, active_.data(), object_count, &stats, deadline) == FRUSTA_OK) {
+  if (hand.solver.step(haptic, objects, object_count, &stats, deadline) == FRUSTA_OK) {
     hand.accepted = haptic;
   } else {
     ++rejected_;  // the graphic hand stays as it was, the forces follow the last good input
@@ -351,9 +370,8 @@ void World::step_hand(HandSlot& hand, HandSnapshot& snap, double dt, bool paced,
   hand.forces.set_time_step(dt);  // in range: the rate was checked
   const int32_t kept = std::min(snap.contact_count, def_.max_contacts_per_hand);
   if (hand.forces.update(hand.solver.graphic_pose(), hand.haptic_pose, contacts.data(), kept,
-                         active_.data(), object_count, active_material_.data(),
-                         &snap.force_stats) != FRUSTA_OK ||
-      compute_device_outputs(hand.haptic_pose, hand.forces.forces().data(), kept, active_.data(),
+                         objects, object_count, materials, &snap.force_stats) != FRUSTA_OK ||
+      compute_device_outputs(hand.haptic_pose, hand.forces.forces().data(), kept, objects,
                              object_count, def_.device_limits, &snap.device,
                              hand_reactions_.data()) != FRUSTA_OK) {
     // the solver's own output was refused: a bug, kept visible rather than hidden
@@ -364,16 +382,40 @@ void World::step_hand(HandSlot& hand, HandSnapshot& snap, double dt, bool paced,
   snap.force_stats.dropped = snap.contact_count - kept;
   for (int32_t i = 0; i < kept; ++i) {
     const size_t k = static_cast<size_t>(i);
-    const int32_t slot = active_slot_[static_cast<size_t>(contacts[k].object)];
+    const int32_t slot = object_slot[contacts[k].object];
     snap.contacts[k] = contacts[k];
     snap.contacts[k].object = slot;
     snap.forces[k] = hand.forces.forces()[k];
     snap.forces[k].object = slot;
   }
   for (int32_t a = 0; a < object_count; ++a) {
-    ObjectWrench& total = slots_[static_cast<size_t>(active_slot_[static_cast<size_t>(a)])].reaction;
+    ObjectWrench& total = slots_[static_cast<size_t>(object_slot[a])].reaction;
     total.force += hand_reactions_[static_cast<size_t>(a)].force;
     total.torque += hand_reactions_[static_cast<size_t>(a)].torque;
+  }
+}
+
+void World::update_ignored(HandSlot& hand) {
+  bool changed = false;
+  for (size_t a = 0; a < active_.size(); ++a) {
+    const size_t slot = static_cast<size_t>(active_slot_[a]);
+    uint8_t& ignored = hand.ignored[slot];
+    if (!placed_[slot] && !ignored) continue;  // the common case: nothing to look at
+    const uint8_t now = hand.solver.overlaps(active_[a]) ? 1 : 0;
+    if (now == ignored) continue;
+    hand.ignored_count += now ? 1 : -1;
+    ignored = now;
+    changed = true;
+  }
+  if (hand.ignored_count == 0 || (!changed && !objects_moved_)) return;
+  hand.objects.clear();  // within the capacity reserved at add_hand
+  hand.object_slot.clear();
+  hand.materials.clear();
+  for (size_t a = 0; a < active_.size(); ++a) {
+    if (hand.ignored[static_cast<size_t>(active_slot_[a])]) continue;
+    hand.objects.push_back(active_[a]);
+    hand.object_slot.push_back(active_slot_[a]);
+    hand.materials.push_back(active_material_[a]);
   }
 }
 
@@ -426,6 +468,8 @@ void World::step_once(double dt, bool paced, int64_t tick_ns) {
               : HandSolver::Clock::time_point::max();
     step_hand(*hands_[h], out.hands[h], dt, paced, tick_ns, deadline);
   }
+  std::fill(placed_.begin(), placed_.end(), 0);
+  objects_moved_ = false;
   for (size_t s = 0; s < slots_.size(); ++s) {
     const ObjectSlot& slot = slots_[s];
     ObjectSnapshot& o = out.objects[s];

@@ -195,6 +195,14 @@ class World {
     HandState accepted;  // the last haptic input the solver took
     HandPose haptic_pose;
     ContactForces forces;
+    // objects that appeared inside this hand (added or put there by the host) are
+    // ignored by it until they no longer overlap, so the hand is not trapped in them;
+    // while any is, the hand sees its own object list (all sized up front)
+    std::vector<uint8_t> ignored;  // per slot
+    int32_t ignored_count = 0;
+    std::vector<SolverObject> objects;
+    std::vector<int32_t> object_slot;
+    std::vector<ForceMaterial> materials;
   };
 
   void run(double rate_hz, double spin_us);
@@ -205,6 +213,9 @@ class World {
   void step_hand(HandSlot& hand, HandSnapshot& snap, double dt, bool paced, int64_t tick_ns,
                  HandSolver::Clock::time_point deadline);
   void move_dynamic_objects(double dt);
+  // which placed objects this hand now sinks into, which ignored ones it has left, and
+  // the hand's object list without the ignored ones
+  void update_ignored(HandSlot& hand);
   void apply_commands();
   void rebuild_active();
   frusta_result check_handle(ObjectHandle object) const;
@@ -226,6 +237,8 @@ class World {
   std::vector<SolverObject> active_;  // rebuilt when commands change the slots
   std::vector<int32_t> active_slot_;  // the slot behind each active object
   std::vector<ForceMaterial> active_material_;
+  std::vector<uint8_t> placed_;  // per slot: added or moved by the host this step
+  bool objects_moved_ = false;   // active_ was rebuilt this step (poses, or which)
   std::vector<ObjectWrench> hand_reactions_;  // one hand's, per active object
   StepHistogram histogram_;
   uint64_t step_ = 0;

@@ -151,6 +151,11 @@ frusta_result HandSolver::step(const HandState& haptic, const SolverObject* obje
   return FRUSTA_OK;
 }
 
+bool HandSolver::overlaps(const SolverObject& object) {
+  return started_ &&
+         !hand_is_free(model_, reach_, pose_, &object, 1, params_.penetration_tolerance, candidates_);
+}
+
 bool HandSolver::substep(const HandState& target, const SolverObject* objects,
                          int32_t object_count, StepStats& stats, bool& moved) {
   const HandState start = graphic_;

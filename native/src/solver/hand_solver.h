@@ -64,6 +64,10 @@ class HandSolver {
   frusta_result step(const HandState& haptic, const SolverObject* objects, int32_t object_count,
                      StepStats* stats, Clock::time_point deadline = Clock::time_point::max());
 
+  // Whether the graphic hand now sinks into `object` (past the penetration tolerance).
+  // False before the first step.
+  bool overlaps(const SolverObject& object);
+
   // Forget the graphic hand: the next step starts it afresh from the haptic hand.
   void reset() { started_ = false; }
 

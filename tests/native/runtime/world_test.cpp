@@ -121,6 +121,48 @@ TEST(World, HoldsATreeUntilAStepHasLetGoOfIt) {
   EXPECT_TRUE(watch.expired());
 }
 
+TEST(World, AnObjectPutInsideAHandIsIgnoredByItUntilTheyPart) {
+  // a ball put where the hand's fingers already are: the hand is not trapped or shoved,
+  // it goes on as if the ball were not there; once the hand has left the ball, the ball
+  // is solid to it again
+  World world(WorldDef{});
+  const int32_t hand = add_hand(world, right_hand());
+  const HandState open = scenes::open_hand();
+  world.set_haptic(hand, open);
+  world.step();
+  const HandState before = world.read().hands[0].graphic;
+  ObjectHandle ball;
+  const RigidPose through_fingers{vec3(0.15, 0.0, 0.0), glm::dmat3(1.0)};  // the fingers run through it
+  ASSERT_EQ(world.add_object(ball_tree(), through_fingers, &ball), FRUSTA_OK);
+  for (int t = 0; t < 20; ++t) {
+    world.set_haptic(hand, open);
+    world.step();
+  }
+  const HandSnapshot& inside = world.read().hands[0];
+  EXPECT_EQ(inside.contact_count, 0);
+  EXPECT_EQ(inside.graphic.palm_position, before.palm_position) << "not shoved out";
+  EXPECT_EQ(world.read().objects[static_cast<size_t>(ball.slot)].reaction.force, vec3(0.0));
+
+  // the hand backs off 20 cm, then comes back: now the ball stops it
+  HandState away = open;
+  away.palm_position.x = -0.2;
+  for (int t = 0; t < 200; ++t) {
+    world.set_haptic(hand, scenes::mix(open, away, t / 100.0));
+    world.step();
+  }
+  for (int t = 0; t < 300; ++t) {
+    world.set_haptic(hand, scenes::mix(away, open, t / 200.0));
+    world.step();
+  }
+  const HandSnapshot& back = world.read().hands[0];
+  EXPECT_GT(back.contact_count, 0) << "the ball is solid again";
+  HandPose pose;
+  forward_kinematics(right_hand(), back.graphic, pose);
+  const SolverObject placed{&ball_tree()->tree, through_fingers};
+  EXPECT_LE(scenes::deepest_penetration(right_hand(), pose, {placed}), 1e-5)
+      << "the hand stays out of it (the fingers bend around it)";
+}
+
 TEST(World, BadHapticInputIsCountedAndLeavesTheGraphicHand) {
   World world(WorldDef{});
   const int32_t hand = add_hand(world, right_hand());
