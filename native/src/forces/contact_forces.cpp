@@ -22,12 +22,7 @@ const ForceMaterial kDefaultMaterial{};
 constexpr double kUnitTolerance = 1e-6;
 
 frusta_result check_contact(const SolverContact& c, int32_t i, int32_t object_count) {
-  if (c.object < 0 || c.object >= object_count)
-    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "contacts[%d].object is %d, must be in [0, %d)", i,
-                c.object, object_count);
-  if (c.body < 0 || c.body >= kBodyCount)
-    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "contacts[%d].body is %d, must be in [0, %d]", i, c.body,
-                kPalmBody);
+  if (frusta_result r = check_contact_ids(c.object, c.body, object_count, "contacts", i)) return r;
   if (c.leaf < -1 || c.part < 0)
     return fail(FRUSTA_ERROR_OUT_OF_RANGE,
                 "contacts[%d] has leaf %d and part %d; a leaf is >= -1, a part >= 0", i, c.leaf,
@@ -112,6 +107,17 @@ frusta_result check_force_material(const ForceMaterial& m, const char* name) {
     return r;
   // a friction coefficient above a few is not a material but a typo; 100 leaves room
   return check_range_named(m.friction, 0.0, 100.0, false, "%s.friction", name);
+}
+
+frusta_result check_contact_ids(int32_t object, int32_t body, int32_t object_count,
+                                const char* what, int32_t index) {
+  if (object < 0 || object >= object_count)
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "%s[%d].object is %d, must be in [0, %d)", what, index,
+                object, object_count);
+  if (body < 0 || body >= kBodyCount)
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "%s[%d].body is %d, must be in [0, %d]", what, index,
+                body, kPalmBody);
+  return FRUSTA_OK;
 }
 
 void haptic_hand_pose(const HandModel& model, const HandState& haptic, HandPose& pose) {

@@ -66,6 +66,11 @@ frusta_result check_force_material(const ForceMaterial& material, const char* na
 // the thread's error names `which` and the field. Shared with the device outputs.
 frusta_result check_hand_pose(const HandPose& pose, const char* which);
 
+// A contact's object and body in range: what[index].object in [0, object_count), .body a
+// hand body. Shared with the device outputs.
+frusta_result check_contact_ids(int32_t object, int32_t body, int32_t object_count,
+                                const char* what, int32_t index);
+
 class ContactForces {
  public:
   // Reserves room for `capacity` contacts (a negative count is 0); nothing is allocated

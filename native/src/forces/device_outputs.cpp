@@ -24,12 +24,7 @@ frusta_result check_vector(const vec3& v, double limit, const char* name, int32_
 }
 
 frusta_result check_force(const ContactForce& c, int32_t i, int32_t object_count) {
-  if (c.object < 0 || c.object >= object_count)
-    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "forces[%d].object is %d, must be in [0, %d)", i,
-                c.object, object_count);
-  if (c.body < 0 || c.body >= kBodyCount)
-    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "forces[%d].body is %d, must be in [0, %d]", i, c.body,
-                kPalmBody);
+  if (frusta_result r = check_contact_ids(c.object, c.body, object_count, "forces", i)) return r;
   if (frusta_result r = check_vector(c.graphic_point, kMaxCoordinate, "graphic_point", i)) return r;
   if (frusta_result r = check_vector(c.haptic_point, kMaxCoordinate, "haptic_point", i)) return r;
   if (frusta_result r = check_vector(c.normal_force, kMaxContactForce, "normal_force", i)) return r;
