@@ -8,6 +8,9 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <fstream>
+#include <regex>
+#include <set>
 #include <string>
 #include <type_traits>
 
@@ -254,6 +257,7 @@ FRUSTA_CHECK_SIGNATURE(frusta_abi_version, int32_t (*)())
 FRUSTA_CHECK_SIGNATURE(frusta_last_error, const char* (*)())
 FRUSTA_CHECK_SIGNATURE(frusta_result_name, const char* (*)(int32_t))
 FRUSTA_CHECK_SIGNATURE(frusta_check_abi, frusta_result (*)(int32_t))
+FRUSTA_CHECK_SIGNATURE(frusta_struct_size, int32_t (*)(const char*))
 FRUSTA_CHECK_SIGNATURE(frusta_default_hand_def, frusta_hand_def (*)())
 FRUSTA_CHECK_SIGNATURE(frusta_hand_def_set_size,
                        frusta_result (*)(frusta_hand_def*, double, double))
@@ -382,6 +386,35 @@ TEST(abiLayout, DefaultDefCarriesItsSize) {
   EXPECT_EQ(frusta_default_bake_def().struct_size, 56);
   EXPECT_EQ(frusta_default_world_def().struct_size, 128);
   EXPECT_EQ(frusta_default_object_def().struct_size, 224);
+}
+
+// Bindings learn the native sizes at load from frusta_struct_size; it must know every
+// struct the header declares, with the size the table freezes.
+TEST(abiLayout, StructSizeReportsEveryStructOfTheHeader) {
+  std::ifstream header(FRUSTA_HEADER_PATH);
+  ASSERT_TRUE(header) << FRUSTA_HEADER_PATH;
+  const std::string text((std::istreambuf_iterator<char>(header)), {});
+  const std::regex declaration(R"(\}\s*(frusta_[a-z_0-9]+)\s*;)");
+  std::set<std::string> declared;
+  for (std::sregex_iterator it(text.begin(), text.end(), declaration), end; it != end; ++it) {
+    declared.insert((*it)[1]);
+  }
+  std::set<std::string> tabled;
+  for (const Struct& s : kStructs) {
+    tabled.insert(s.type);
+    EXPECT_EQ(frusta_struct_size(s.type), static_cast<int32_t>(s.size)) << s.type;
+  }
+  for (const std::string& name : declared) {
+    if (frusta_struct_size(name.c_str()) == 0) {
+      // enums are the only other `} frusta_x;` declarations
+      EXPECT_NE(text.find("typedef enum " + name), std::string::npos) << name << " is not reported";
+    } else {
+      EXPECT_TRUE(tabled.count(name)) << name << " is missing from the layout table";
+    }
+  }
+  EXPECT_EQ(frusta_struct_size("frusta_no_such_struct"), 0);
+  EXPECT_EQ(frusta_struct_size(""), 0);
+  EXPECT_EQ(frusta_struct_size(nullptr), 0);
 }
 
 }  // namespace

@@ -85,6 +85,11 @@ FRUSTA_API const char* frusta_result_name(int32_t result);
 FRUSTA_API frusta_result frusta_check_abi(int32_t header_abi_version);
 #define FRUSTA_CHECK_ABI() frusta_check_abi(FRUSTA_ABI_VERSION)
 
+/** sizeof the public struct named `name` (e.g. "frusta_world_def") in this library, or
+ *  0 for a name this library does not have. Bindings compare their mirrored layouts
+ *  with it once at load. Thread: any. */
+FRUSTA_API int32_t frusta_struct_size(const char* name);
+
 /* ---------------------------------------------------------------- ids */
 
 /** Hand handle. Opaque; pass by value. Zero-initialised means null. */
