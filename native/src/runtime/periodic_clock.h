@@ -16,6 +16,13 @@
 
 namespace frusta {
 
+// Now on the steady clock, in nanoseconds: how threads stamp what they hand each other.
+inline int64_t steady_ns() {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(
+             std::chrono::steady_clock::now().time_since_epoch())
+      .count();
+}
+
 class PeriodicClock {
  public:
   using Clock = std::chrono::steady_clock;

@@ -218,9 +218,7 @@ frusta_result World::set_haptic(int32_t hand, const HandState& haptic) {
   HandSlot& h = *hands_[static_cast<size_t>(hand)];
   TimedInput& slot = h.input.write_slot();
   slot.state = haptic;
-  slot.set_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(
-                    std::chrono::steady_clock::now().time_since_epoch())
-                    .count();
+  slot.set_ns = steady_ns();
   h.input.publish();
   return FRUSTA_OK;
 }
@@ -467,6 +465,7 @@ void World::step_once(double dt, bool paced, int64_t tick_ns) {
                             kStepBudget * dt * static_cast<double>(h + 1) / static_cast<double>(hands_.size())))
               : HandSolver::Clock::time_point::max();
     step_hand(*hands_[h], out.hands[h], dt, paced, tick_ns, deadline);
+    publish_device_feed(*hands_[h], out.hands[h]);
   }
   std::fill(placed_.begin(), placed_.end(), 0);
   objects_moved_ = false;
@@ -498,7 +497,19 @@ void World::step_once(double dt, bool paced, int64_t tick_ns) {
   output_.publish();
 }
 
+void World::publish_device_feed(HandSlot& hand, const HandSnapshot& snap) {
+  DeviceFeed& feed = hand.feed.write_slot();
+  feed.step = step_ + 1;  // the step being taken
+  feed.published_ns = steady_ns();
+  feed.host_read_ns = host_read_ns_.load(std::memory_order_relaxed);
+  feed.solved = snap.solved;
+  feed.device = snap.device;
+  feed.haptic_palm_rotation = hand.accepted.palm_rotation;
+  hand.feed.publish();
+}
+
 const WorldSnapshot& World::read() {
+  host_read_ns_.store(steady_ns(), std::memory_order_relaxed);
   release_retired();
   return output_.read();
 }

@@ -109,6 +109,17 @@ struct WorldSnapshot {
   int64_t rejected_inputs = 0;  // haptic inputs the solver refused (NaN, absurd)
 };
 
+// What a device thread reads at its own rate: one hand's device outputs and whether
+// the world and its host are alive, apart from the host's snapshot.
+struct DeviceFeed {
+  uint64_t step = 0;          // 0 until the first step
+  int64_t published_ns = 0;   // steady clock, when the step published it
+  int64_t host_read_ns = 0;   // steady clock, the host's last read() (0: never)
+  bool solved = false;        // false until the hand's first valid haptic input
+  DeviceOutputs device;       // clamped to WorldDef::device_limits; world frame
+  glm::dquat haptic_palm_rotation{1.0, 0.0, 0.0, 0.0};  // of the input the step used
+};
+
 // Every field finite, the rotation orthonormal, the position within kMaxCoordinate;
 // the thread's error names `name` and the field.
 frusta_result check_rigid_pose(const RigidPose& pose, const char* name);
@@ -163,6 +174,13 @@ class World {
   const WorldSnapshot& read();
 
   int32_t hand_count() const { return static_cast<int32_t>(hands_.size()); }
+  double rate_hz() const { return def_.rate_hz; }
+
+  // One device thread per hand: the newest feed of `hand` (< hand_count()), unchanged
+  // until its next call.
+  const DeviceFeed& read_device_feed(int32_t hand) {
+    return hands_[static_cast<size_t>(hand)]->feed.read();
+  }
 
  private:
   enum class CommandKind : int32_t { kAdd, kRemove, kPose, kDynamic };
@@ -203,6 +221,7 @@ class World {
     std::vector<SolverObject> objects;
     std::vector<int32_t> object_slot;
     std::vector<ForceMaterial> materials;
+    TripleBuffer<DeviceFeed> feed;
   };
 
   void run(double rate_hz, double spin_us);
@@ -213,6 +232,7 @@ class World {
   void step_hand(HandSlot& hand, HandSnapshot& snap, double dt, bool paced, int64_t tick_ns,
                  HandSolver::Clock::time_point deadline);
   void move_dynamic_objects(double dt);
+  void publish_device_feed(HandSlot& hand, const HandSnapshot& snap);
   // which placed objects this hand now sinks into, which ignored ones it has left, and
   // the hand's object list without the ignored ones
   void update_ignored(HandSlot& hand);
@@ -248,6 +268,7 @@ class World {
   StepHistogram lateness_;
   int64_t overruns_ = 0;
   double achieved_rate_hz_ = 0.0;
+  std::atomic<int64_t> host_read_ns_{0};
   std::atomic<bool> running_{false};
   std::thread thread_;
 };

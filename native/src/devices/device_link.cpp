@@ -1,0 +1,259 @@
+// SPDX-License-Identifier: MIT
+#include "devices/device_link.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "runtime/periodic_clock.h"
+
+namespace frusta {
+
+namespace {
+
+constexpr int64_t kNsPerSecond = 1000000000;
+constexpr int64_t kHeartbeatNs = 500000000;  // handshake retries and keep-alives
+constexpr int64_t kIdleSliceNs = 10000000;   // how often a disconnected thread looks up
+// a joint beyond half a turn is no hand's: a glove sending one is broken
+constexpr double kMaxDeviceAngle = 3.14159265358979323846;
+constexpr double kMaxPalmCoordinate = 1e3;  // metres from the tracking origin
+
+int64_t to_ns(double seconds) { return static_cast<int64_t>(seconds * 1e9); }
+
+bool is_valid_sample(const DeviceSample& s) {
+  for (double a : s.angles)
+    if (!(std::fabs(a) <= kMaxDeviceAngle)) return false;
+  if (!s.has_palm_pose) return true;
+  for (int i = 0; i < 3; ++i)
+    if (!(std::fabs(s.palm_position[i]) <= kMaxPalmCoordinate)) return false;
+  const double norm = glm::length(s.palm_rotation);
+  return norm >= 0.5 && norm <= 2.0;  // also false for NaN
+}
+
+}  // namespace
+
+DeviceLink::DeviceLink(World& world, const DeviceLinkDef& def, std::unique_ptr<ByteStream> stream,
+                       std::unique_ptr<GloveProtocol> protocol)
+    : world_(world),
+      def_(def),
+      stream_(std::move(stream)),
+      protocol_(std::move(protocol)),
+      guard_(protocol_->default_capabilities(), def.rates) {
+  out_.reserve(512);
+  apply_capabilities(protocol_->default_capabilities());
+}
+
+DeviceLink::~DeviceLink() { close(); }
+
+frusta_result DeviceLink::open() {
+  if (!def_.record_path.empty()) {
+    if (frusta_result r = recorder_.open(def_.record_path, def_.protocol_name)) return r;
+    recording_ = true;
+  }
+  if (frusta_result r = stream_->open()) return r;
+  const int64_t now = steady_ns();
+  record_start_ns_ = now;
+  on_connected(now);
+  publish_status(now);
+  thread_ = std::thread([this] { run(); });
+  return FRUSTA_OK;
+}
+
+void DeviceLink::close() {
+  if (!thread_.joinable()) return;
+  stop_.store(true, std::memory_order_release);
+  thread_.join();
+}
+
+void DeviceLink::set_palm_pose(const vec3& position, const glm::dquat& rotation) {
+  PalmPose& slot = palm_.write_slot();
+  slot.position = position;
+  slot.rotation = rotation;
+  palm_.publish();
+}
+
+const DeviceLinkStatus& DeviceLink::status() { return status_.read(); }
+
+void DeviceLink::apply_capabilities(const DeviceCapabilities& announced) {
+  DeviceCapabilities c = announced;
+  c.fingers = std::clamp(c.fingers, 0, FRUSTA_FINGER_COUNT);
+  c.max_finger_resistance = std::min(c.max_finger_resistance, def_.max_finger_resistance);
+  c.max_fingertip_force = std::min(c.max_fingertip_force, def_.max_fingertip_force);
+  c.max_joint_torque = std::min(c.max_joint_torque, def_.max_joint_torque);
+  working_.capabilities = c;
+  guard_.set_capabilities(c);
+  const double wanted = def_.output_rate_hz > 0.0 ? def_.output_rate_hz : world_.rate_hz();
+  working_.output_rate_hz = c.output_rate_hz > 0.0 ? std::min(wanted, c.output_rate_hz) : wanted;
+  output_period_ns_ = static_cast<int64_t>(1e9 / working_.output_rate_hz);
+}
+
+void DeviceLink::run() {
+  uint8_t buffer[512];
+  int64_t next_output = steady_ns();
+  int64_t next_reconnect = 0;
+  while (!stop_.load(std::memory_order_acquire)) {
+    now_ns_ = steady_ns();
+    if (!stream_->is_open()) {
+      if (now_ns_ >= next_reconnect) {
+        if (stream_->open() == FRUSTA_OK) {
+          on_connected(now_ns_);
+          next_output = now_ns_;
+          continue;
+        }
+        next_reconnect = now_ns_ + to_ns(def_.reconnect_interval_s);
+      }
+      publish_status(now_ns_);
+      std::this_thread::sleep_for(std::chrono::nanoseconds(
+          std::clamp<int64_t>(next_reconnect - now_ns_, 0, kIdleSliceNs)));
+      continue;
+    }
+    size_t received = 0;
+    const int64_t wait_us = std::max<int64_t>(0, next_output - now_ns_) / 1000;
+    if (stream_->read(buffer, sizeof buffer, wait_us, &received) == IoStatus::kDisconnected) {
+      on_disconnected(steady_ns());
+      next_reconnect = now_ns_ + to_ns(def_.reconnect_interval_s);
+      continue;
+    }
+    now_ns_ = steady_ns();
+    if (received > 0) {
+      if (recording_) recorder_.write(now_ns_ - record_start_ns_, buffer, received);
+      protocol_->feed(buffer, received, this);
+    }
+    if (now_ns_ >= next_heartbeat_ns_ && stream_->is_open()) {
+      out_.clear();
+      protocol_->encode_heartbeat(&out_);
+      write_bytes(false);
+      next_heartbeat_ns_ = now_ns_ + kHeartbeatNs;
+    }
+    if (now_ns_ >= next_output && stream_->is_open()) {
+      send_command(now_ns_);
+      next_output += output_period_ns_;
+      if (next_output <= now_ns_) next_output = now_ns_ + output_period_ns_;  // fell behind
+      publish_status(now_ns_);
+    }
+  }
+  // leaving: the glove's last command releases it
+  if (stream_->is_open()) {
+    out_.clear();
+    protocol_->encode(guard_.zero(), working_.capabilities, &out_);
+    write_bytes(true);
+    stream_->close();
+  }
+  working_.state = LinkState::kClosed;
+  publish_status(steady_ns());
+}
+
+void DeviceLink::on_connected(int64_t now) {
+  if (ever_connected_) ++working_.reconnects;
+  ever_connected_ = true;
+  working_.state = LinkState::kConnected;
+  last_sample_ns_ = 0;  // zeros until the glove speaks again
+  last_command_ns_ = now;
+  guard_.zero();
+  out_.clear();
+  protocol_->start(&out_);
+  write_bytes(false);
+  next_heartbeat_ns_ = now + kHeartbeatNs;
+}
+
+void DeviceLink::on_disconnected(int64_t now) {
+  stream_->close();
+  if (working_.watchdog == WatchdogReason::kNone) ++working_.watchdog_trips;
+  working_.watchdog = WatchdogReason::kDisconnected;
+  working_.state = LinkState::kDisconnected;
+  ++working_.disconnects;
+  guard_.zero();
+  publish_status(now);
+}
+
+WatchdogReason DeviceLink::check_watchdog(int64_t now, const DeviceFeed& feed) const {
+  if (last_sample_ns_ == 0 || now - last_sample_ns_ > to_ns(def_.watchdog_s))
+    return WatchdogReason::kInputStalled;
+  if (feed.step == 0 || now - feed.published_ns > to_ns(def_.engine_timeout_s))
+    return WatchdogReason::kEngineStalled;
+  if (def_.host_timeout_s > 0.0 &&
+      (feed.host_read_ns == 0 || now - feed.host_read_ns > to_ns(def_.host_timeout_s)))
+    return WatchdogReason::kHostStalled;
+  return WatchdogReason::kNone;
+}
+
+void DeviceLink::send_command(int64_t now) {
+  const DeviceFeed& feed = world_.read_device_feed(def_.hand);
+  const WatchdogReason reason = check_watchdog(now, feed);
+  if (reason != WatchdogReason::kNone) {
+    if (working_.watchdog == WatchdogReason::kNone) ++working_.watchdog_trips;
+    guard_.zero();
+  } else {
+    const double dt = std::min(static_cast<double>(now - last_command_ns_) / 1e9, 0.1);
+    guard_.shape(feed.device, feed.haptic_palm_rotation, dt);
+  }
+  working_.watchdog = reason;
+  last_command_ns_ = now;
+  out_.clear();
+  protocol_->encode(guard_.last(), working_.capabilities, &out_);
+  write_bytes(true);
+}
+
+void DeviceLink::write_bytes(bool command) {
+  if (out_.empty()) return;
+  bool dropped = false;
+  if (stream_->write(out_.data(), out_.size(), &dropped) == IoStatus::kDisconnected) {
+    on_disconnected(steady_ns());
+    return;
+  }
+  if (!command) return;
+  if (dropped)
+    ++working_.commands_dropped;
+  else
+    ++working_.commands_sent;
+}
+
+void DeviceLink::publish_status(int64_t now) {
+  working_.last_sample_age_s =
+      last_sample_ns_ == 0 ? -1.0 : static_cast<double>(now - last_sample_ns_) / 1e9;
+  working_.last_command = guard_.last();
+  working_.recording_failed = recorder_.failed();
+  status_.write_slot() = working_;
+  status_.publish();
+}
+
+void DeviceLink::on_sample(const DeviceSample& sample) {
+  if (!is_valid_sample(sample)) {
+    ++working_.samples_rejected;
+    return;
+  }
+  haptic_.angles = sample.angles;
+  if (sample.has_palm_pose) {
+    haptic_.palm_position = sample.palm_position;
+    haptic_.palm_rotation = glm::normalize(sample.palm_rotation);
+  } else {
+    const PalmPose& palm = palm_.read();
+    haptic_.palm_position = palm.position;
+    haptic_.palm_rotation = palm.rotation;
+  }
+  world_.set_haptic(def_.hand, haptic_);  // the hand index was checked at open
+  ++working_.frames_ok;
+  if (last_sample_ns_ != 0) {
+    // a running mean over about 16 samples: steady enough to read, quick to follow
+    const double rate = 1e9 / static_cast<double>(std::max<int64_t>(now_ns_ - last_sample_ns_, 1));
+    working_.input_rate_hz =
+        working_.input_rate_hz == 0.0 ? rate : working_.input_rate_hz + (rate - working_.input_rate_hz) / 16.0;
+  }
+  last_sample_ns_ = now_ns_;
+}
+
+void DeviceLink::on_capabilities(const DeviceCapabilities& capabilities) {
+  apply_capabilities(capabilities);
+}
+
+void DeviceLink::on_fault(FrameFault fault) {
+  switch (fault) {
+    case FrameFault::kCorrupt: ++working_.frames_corrupt; break;
+    case FrameFault::kTruncated: ++working_.frames_truncated; break;
+    case FrameFault::kOutOfRange: ++working_.frames_out_of_range; break;
+  }
+}
+
+void DeviceLink::on_heartbeat() {}
+
+}  // namespace frusta

@@ -1,0 +1,138 @@
+// SPDX-License-Identifier: MIT
+// One glove driving one hand of a world, on a thread of its own that exists only while
+// the glove is open. Each turn of the thread reads what the glove sent (samples go to
+// the world through its lock-free haptic input, as a host's would) and, at the output
+// rate, sends the glove its command from the world's device feed, through the output
+// guard. It never waits on the world or the host.
+//
+// Safety: the command drops to zero, at once, when no valid sample came for the
+// watchdog period, when the world has published no step for the engine timeout, when
+// the host has read no snapshot for the host timeout, or when the glove disconnects.
+// The glove is reopened every reconnect interval; after a reconnect the glove gets
+// zeros until its first valid sample, so it resumes from where the hand is now.
+#pragma once
+
+#include <atomic>
+#include <memory>
+#include <string>
+#include <thread>
+
+#include "devices/byte_stream.h"
+#include "devices/device_types.h"
+#include "devices/glove_protocol.h"
+#include "devices/output_guard.h"
+#include "devices/recording.h"
+#include "runtime/triple_buffer.h"
+#include "runtime/world.h"
+
+namespace frusta {
+
+struct DeviceLinkDef {
+  int32_t hand = 0;
+  double output_rate_hz = 0.0;  // 0: the world's rate; never above the glove's
+  double watchdog_s = 0.05;
+  double engine_timeout_s = 0.05;
+  double host_timeout_s = 0.25;  // 0: the host's reading is not watched
+  double reconnect_interval_s = 0.2;
+  OutputRates rates;
+  // the glove's limits, under which its announced ones are taken (the lower wins)
+  double max_finger_resistance = 10.0;
+  double max_fingertip_force = 10.0;
+  double max_joint_torque = 0.5;
+  std::string record_path;  // empty: no recording
+  std::string protocol_name;  // written into the recording
+};
+
+enum class LinkState : int32_t { kConnected = 1, kDisconnected = 2, kClosed = 3 };
+enum class WatchdogReason : int32_t {
+  kNone = 0,
+  kInputStalled = 1,
+  kDisconnected = 2,
+  kEngineStalled = 3,
+  kHostStalled = 4,
+};
+
+struct DeviceLinkStatus {
+  LinkState state = LinkState::kDisconnected;
+  WatchdogReason watchdog = WatchdogReason::kNone;
+  int64_t frames_ok = 0, frames_corrupt = 0, frames_truncated = 0, frames_out_of_range = 0;
+  int64_t samples_rejected = 0;  // decoded, but NaN or beyond any joint's range
+  int64_t commands_sent = 0, commands_dropped = 0;
+  int64_t reconnects = 0, disconnects = 0, watchdog_trips = 0;
+  double input_rate_hz = 0.0;       // measured over the last samples
+  double last_sample_age_s = -1.0;  // -1: no sample yet
+  double output_rate_hz = 0.0;
+  DeviceCapabilities capabilities;  // as announced, under the def's limits
+  DeviceCommand last_command;
+  bool recording_failed = false;
+};
+
+class DeviceLink final : private ProtocolSink {
+ public:
+  DeviceLink(World& world, const DeviceLinkDef& def, std::unique_ptr<ByteStream> stream,
+             std::unique_ptr<GloveProtocol> protocol);
+  ~DeviceLink() override;
+  DeviceLink(const DeviceLink&) = delete;
+  DeviceLink& operator=(const DeviceLink&) = delete;
+
+  // Host: open the glove (a failure is returned: a glove absent at open is an error,
+  // not a reconnect) and start the thread.
+  frusta_result open();
+  // Host: zero the glove's output, stop the thread, close. Idempotent.
+  void close();
+
+  // Any one thread: the palm pose for gloves without a tracker (ignored when the glove
+  // reports its own).
+  void set_palm_pose(const vec3& position, const glm::dquat& rotation);
+
+  // One host thread: the newest status, valid until the next call.
+  const DeviceLinkStatus& status();
+
+ private:
+  struct PalmPose {
+    vec3 position{0.0};
+    glm::dquat rotation{1.0, 0.0, 0.0, 0.0};
+  };
+
+  void run();
+  void on_connected(int64_t now);
+  void on_disconnected(int64_t now);
+  void send_command(int64_t now);
+  WatchdogReason check_watchdog(int64_t now, const DeviceFeed& feed) const;
+  void apply_capabilities(const DeviceCapabilities& announced);
+  void publish_status(int64_t now);
+  void write_bytes(bool command);  // commands are counted; handshakes are not
+
+  // ProtocolSink, on the device thread
+  void on_sample(const DeviceSample& sample) override;
+  void on_capabilities(const DeviceCapabilities& capabilities) override;
+  void on_fault(FrameFault fault) override;
+  void on_heartbeat() override;
+
+  World& world_;
+  DeviceLinkDef def_;
+  std::unique_ptr<ByteStream> stream_;
+  std::unique_ptr<GloveProtocol> protocol_;
+  Recorder recorder_;
+  bool recording_ = false;
+
+  // the device thread's
+  DeviceLinkStatus working_;
+  OutputGuard guard_;
+  std::vector<uint8_t> out_;
+  int64_t now_ns_ = 0;         // of the current turn
+  int64_t last_sample_ns_ = 0;  // 0: none since (re)connect
+  int64_t last_command_ns_ = 0;
+  int64_t next_heartbeat_ns_ = 0;
+  int64_t record_start_ns_ = 0;
+  int64_t output_period_ns_ = 1000000;
+  bool ever_connected_ = false;
+  HandState haptic_;
+
+  TripleBuffer<PalmPose> palm_;
+  TripleBuffer<DeviceLinkStatus> status_;
+  std::atomic<bool> stop_{false};
+  std::thread thread_;
+};
+
+}  // namespace frusta
