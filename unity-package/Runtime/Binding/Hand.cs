@@ -1,0 +1,162 @@
+// SPDX-License-Identifier: MIT
+using System;
+
+namespace Frusta.Binding
+{
+    /// <summary>
+    /// A standalone hand: its geometry at a pose and joint angles, for queries, previews and
+    /// gizmos outside a world (a world builds its own hands from defs: <see cref="World.AddHand"/>).
+    /// Thread: main (the native side serialises creation and destruction).
+    /// </summary>
+    public sealed unsafe class Hand : IDisposable
+    {
+        readonly HandHandle handle;
+
+        /// <summary>A right hand of the default size at the identity pose, joints at zero.</summary>
+        public Hand() : this(FrustaHandDef.Default) { }
+
+        /// <summary>A hand built from <paramref name="def"/> at the identity pose with all joint angles
+        /// zero (clamped into the limits) (<c>frusta_create_hand</c>).</summary>
+        /// <param name="def">From <see cref="FrustaHandDef.Default"/>, then edited.</param>
+        /// <exception cref="FrustaException">A def value out of range, with the native message.</exception>
+        public Hand(in FrustaHandDef def)
+        {
+            FrustaLibrary.EnsureCompatible();
+            handle = new HandHandle();
+            FrustaHandId id;
+            FrustaResult r;
+            fixed (FrustaHandDef* d = &def) r = Native.frusta_create_hand(d, &id);
+            Errors.Check(r, "frusta_create_hand");
+            handle.Own(id);
+        }
+
+        /// <summary>The native id (a value; stale once disposed).</summary>
+        public FrustaHandId Id => handle.Id;
+
+        /// <summary>false once disposed (<c>frusta_hand_is_valid</c>).</summary>
+        public bool IsValid => !handle.IsClosed && Native.frusta_hand_is_valid(handle.Id) == 1;
+
+        /// <summary>Set the palm pose, the hand frame in the world (<c>frusta_hand_set_palm_pose</c>).
+        /// The quaternion is normalised; its norm must lie in [0.5, 2].</summary>
+        /// <param name="pose">Metres, world frame.</param>
+        public void SetPalmPose(in FrustaPose pose)
+        {
+            using (new HandleUse(handle))
+            fixed (FrustaPose* p = &pose)
+                Errors.Check(Native.frusta_hand_set_palm_pose(handle.Id, p), "frusta_hand_set_palm_pose");
+        }
+
+        /// <summary>Set all 20 joint angles, radians, finger-major (abduction, flexion 1, 2, 3); values
+        /// beyond the limits are clamped (<c>frusta_hand_set_joint_angles</c>).</summary>
+        /// <param name="angles">Exactly <see cref="FrustaConstants.HandJointCount"/> radians.</param>
+        public void SetJointAngles(ReadOnlySpan<double> angles)
+        {
+            using (new HandleUse(handle))
+            fixed (double* a = angles)
+                Errors.Check(Native.frusta_hand_set_joint_angles(handle.Id, a, angles.Length), "frusta_hand_set_joint_angles");
+        }
+
+        /// <summary>Copy the (clamped) joint angles, radians (<c>frusta_hand_get_joint_angles</c>).</summary>
+        /// <param name="destination">At least 20 doubles.</param>
+        public void GetJointAngles(Span<double> destination)
+        {
+            using (new HandleUse(handle))
+            fixed (double* a = destination)
+                Errors.Check(Native.frusta_hand_get_joint_angles(handle.Id, a, destination.Length), "frusta_hand_get_joint_angles");
+        }
+
+        /// <summary>Copy every finger segment in world coordinates, finger-major (thumb first),
+        /// proximal to distal (<c>frusta_hand_get_segments</c>).</summary>
+        /// <param name="destination">At least <see cref="FrustaConstants.HandSegmentCount"/> segments.</param>
+        /// <returns>The number copied (15).</returns>
+        public int GetSegments(Span<FrustaSegment> destination)
+        {
+            int count;
+            using (new HandleUse(handle))
+            fixed (FrustaSegment* s = destination)
+                Errors.Check(Native.frusta_hand_get_segments(handle.Id, s, destination.Length, &count), "frusta_hand_get_segments");
+            return count;
+        }
+
+        /// <summary>The number of palm spheres.</summary>
+        public int PalmSphereCount
+        {
+            get
+            {
+                int count;
+                using (new HandleUse(handle))
+                    Errors.Check(Native.frusta_hand_get_palm_spheres(handle.Id, null, 0, &count), "frusta_hand_get_palm_spheres");
+                return count;
+            }
+        }
+
+        /// <summary>Copy the palm's spheres in world coordinates (<c>frusta_hand_get_palm_spheres</c>).</summary>
+        /// <param name="destination">At least <see cref="PalmSphereCount"/> spheres.</param>
+        /// <returns>The number copied.</returns>
+        public int GetPalmSpheres(Span<FrustaSphere> destination)
+        {
+            int count;
+            using (new HandleUse(handle))
+            fixed (FrustaSphere* s = destination)
+                Errors.Check(Native.frusta_hand_get_palm_spheres(handle.Id, s, destination.Length, &count),
+                             "frusta_hand_get_palm_spheres");
+            return count;
+        }
+
+        /// <summary>
+        /// The Jacobian of a material point of one segment with respect to the finger's four joint
+        /// angles followed by the palm's 6 DOF, row-major 3 x 10 (<c>frusta_hand_point_jacobian</c>).
+        /// </summary>
+        /// <param name="finger">The finger.</param>
+        /// <param name="segment">0..2, proximal to distal.</param>
+        /// <param name="localPoint">Metres in the segment frame: origin at the proximal joint, +x along the segment.</param>
+        /// <param name="jacobian">At least <see cref="FrustaConstants.PointJacobianLength"/> doubles.</param>
+        /// <returns>The point's world position, metres.</returns>
+        public Vector3d GetPointJacobian(FrustaFinger finger, int segment, Vector3d localPoint, Span<double> jacobian)
+        {
+            Vector3d point = default;
+            using (new HandleUse(handle))
+            fixed (double* j = jacobian)
+                Errors.Check(Native.frusta_hand_point_jacobian(handle.Id, (int)finger, segment, &localPoint.X, &point.X, j,
+                                                               jacobian.Length), "frusta_hand_point_jacobian");
+            return point;
+        }
+
+        /// <summary>Destroy the native hand (<c>frusta_destroy_hand</c>). Safe to call twice.</summary>
+        public void Dispose() => handle.Dispose();
+    }
+
+    /// <summary>Sphere/segment queries of the contact geometry (<c>frusta_query_contact</c>,
+    /// <c>frusta_constraint_eval</c>). Thread: any; allocation-free.</summary>
+    public static unsafe class Geometry
+    {
+        /// <summary>Query one sphere against one segment solid.</summary>
+        /// <param name="segment">Radii &gt;= 0, values within 1e6 m.</param>
+        /// <param name="sphere">Radius &gt;= 0.</param>
+        /// <returns>The nearest feature, signed distance, points and normal.</returns>
+        public static FrustaContactQuery QueryContact(in FrustaSegment segment, in FrustaSphere sphere)
+        {
+            FrustaLibrary.EnsureCompatible();
+            var q = new FrustaContactQuery { StructSize = sizeof(FrustaContactQuery) };
+            fixed (FrustaSegment* s = &segment)
+            fixed (FrustaSphere* o = &sphere)
+                Errors.Check(Native.frusta_query_contact(s, o, &q), "frusta_query_contact");
+            return q;
+        }
+
+        /// <summary>The constraint (g &lt; 0 exactly when the sphere overlaps the solid) with its gradient.</summary>
+        /// <param name="segment">Radii &gt;= 0, values within 1e6 m.</param>
+        /// <param name="sphere">Radius &gt;= 0.</param>
+        /// <param name="form">Squared or distance form.</param>
+        /// <returns>The value and its gradient with respect to D, E and the sphere's centre.</returns>
+        public static FrustaConstraint EvaluateConstraint(in FrustaSegment segment, in FrustaSphere sphere, FrustaConstraintForm form)
+        {
+            FrustaLibrary.EnsureCompatible();
+            var c = new FrustaConstraint { StructSize = sizeof(FrustaConstraint) };
+            fixed (FrustaSegment* s = &segment)
+            fixed (FrustaSphere* o = &sphere)
+                Errors.Check(Native.frusta_constraint_eval(s, o, (int)form, &c), "frusta_constraint_eval");
+            return c;
+        }
+    }
+}

@@ -1,0 +1,391 @@
+// SPDX-License-Identifier: MIT
+using System;
+
+namespace Frusta.Binding
+{
+    /// <summary>
+    /// A world: hands and objects stepped together. Each step turns every hand's haptic input
+    /// (the glove) into a graphic hand that never sinks into an object, the contact forces, the
+    /// device outputs and each object's reaction. Run it on its own 1 kHz thread
+    /// (<see cref="Start"/>) or step it yourself (<see cref="Step()"/>); the host never waits for
+    /// the stepping thread: object commands are queued for the next step and results are
+    /// published as snapshots that <see cref="Read"/> latches.
+    /// <para>Threads: the creating thread is the host (Unity's main thread) for every member
+    /// unless its documentation says otherwise; <see cref="SetHaptic"/> may come from one input
+    /// thread per hand; <see cref="ReadSnapshot"/> from any thread. Dispose is safe twice and
+    /// from any thread; it waits for calls in flight, then stops the own thread and destroys
+    /// the world.</para>
+    /// </summary>
+    public sealed unsafe class World : IDisposable
+    {
+        readonly WorldHandle handle;
+        // frusta_world_read latches one step per world: reads from several threads take turns
+        readonly object readGate = new object();
+        readonly int maxContactsPerHand;
+        volatile bool running;
+        int handCount;
+
+        /// <summary>A world with the library's default parameters (1 kHz, no gravity).</summary>
+        public World() : this(FrustaWorldDef.Default) { }
+
+        /// <summary>A world, without a thread yet (<c>frusta_create_world</c>).</summary>
+        /// <param name="def">From <see cref="FrustaWorldDef.Default"/>, then edited.</param>
+        /// <exception cref="FrustaException">A def value out of range (e.g. <see cref="FrustaResult.OutOfRange"/>
+        /// naming "rate_hz"), or a def not from the defaults (<see cref="FrustaResult.DefNotDefaulted"/>).</exception>
+        public World(in FrustaWorldDef def)
+        {
+            FrustaLibrary.EnsureCompatible();
+            handle = new WorldHandle();
+            FrustaWorldId id;
+            FrustaResult r;
+            fixed (FrustaWorldDef* d = &def) r = Native.frusta_create_world(d, &id);
+            Errors.Check(r, "frusta_create_world");
+            handle.Own(id);
+            maxContactsPerHand = def.MaxContactsPerHand;
+            RateHz = def.RateHz;
+        }
+
+        /// <summary>The native id (a value; stale once disposed).</summary>
+        public FrustaWorldId Id => handle.Id;
+
+        /// <summary>false once disposed (<c>frusta_world_is_valid</c>). Thread: any.</summary>
+        public bool IsValid => !handle.IsClosed && Native.frusta_world_is_valid(handle.Id) == 1;
+
+        /// <summary>true between <see cref="Start"/> and <see cref="Stop"/>.</summary>
+        public bool IsRunning => running;
+
+        /// <summary>The stepping rate from the def, Hz; a step advances time by 1/RateHz seconds.</summary>
+        public double RateHz { get; }
+
+        /// <summary>Hands added so far.</summary>
+        public int HandCount => handCount;
+
+        /// <summary>The most contacts a hand reports per step (the def's MaxContactsPerHand): a
+        /// contact buffer this long is never too small.</summary>
+        public int MaxContactsPerHand => maxContactsPerHand;
+
+        /// <summary>Add a hand built from <paramref name="def"/> (<c>frusta_world_add_hand</c>).
+        /// Only before the first step.</summary>
+        /// <param name="def">From <see cref="FrustaHandDef.Default"/>, then edited.</param>
+        /// <returns>The hand's index in this world: 0, 1, ...</returns>
+        /// <exception cref="FrustaException"><see cref="FrustaResult.WrongState"/> after the first step;
+        /// a def value out of range.</exception>
+        public int AddHand(in FrustaHandDef def)
+        {
+            int hand;
+            using (new HandleUse(handle))
+            fixed (FrustaHandDef* d = &def)
+                Errors.Check(Native.frusta_world_add_hand(handle.Id, d, &hand), "frusta_world_add_hand");
+            handCount = hand + 1;
+            return hand;
+        }
+
+        /// <summary>
+        /// Set a hand's haptic input: palm pose and 20 joint angles (radians, finger-major); the
+        /// newest input wins and the next step uses it (<c>frusta_world_set_haptic</c>).
+        /// Lock-free and allocation-free. Thread: one input thread per hand (or the host).
+        /// </summary>
+        /// <param name="hand">The index from <see cref="AddHand"/>.</param>
+        /// <param name="palm">Metres, world frame; quaternion norm in [0.5, 2].</param>
+        /// <param name="angles">Exactly 20 radians, |angle| &lt;= 100 (beyond the limits is clamped).</param>
+        public void SetHaptic(int hand, in FrustaPose palm, ReadOnlySpan<double> angles)
+        {
+            using (new HandleUse(handle))
+            fixed (FrustaPose* p = &palm)
+            fixed (double* a = angles)
+                Errors.Check(Native.frusta_world_set_haptic(handle.Id, hand, p, a, angles.Length), "frusta_world_set_haptic");
+        }
+
+        /// <summary>Add an object with a tree's shape; queued, present from the next step
+        /// (<c>frusta_world_add_object</c>). The world keeps the tree alive while it uses it.</summary>
+        /// <param name="tree">The object's shape.</param>
+        /// <param name="def">From <see cref="FrustaObjectDef.Default"/>, then edited.</param>
+        /// <returns>The object's id in this world.</returns>
+        /// <exception cref="FrustaException"><see cref="FrustaResult.Capacity"/> when MaxObjects are present or the
+        /// command queue is full (step the world); a def value out of range.</exception>
+        public FrustaObjectId AddObject(SphereTree tree, in FrustaObjectDef def)
+        {
+            if (tree == null) throw new ArgumentNullException(nameof(tree));
+            FrustaObjectId id;
+            using (new HandleUse(handle))
+            using (new HandleUse(tree.Handle))
+            fixed (FrustaObjectDef* d = &def)
+                Errors.Check(Native.frusta_world_add_object(handle.Id, tree.Id, d, &id), "frusta_world_add_object");
+            return id;
+        }
+
+        /// <summary>Remove an object (queued; <c>frusta_world_remove_object</c>). Its id is refused at once
+        /// by the calls that change the world; <see cref="GetObject"/> still reports it until a step
+        /// has applied the removal.</summary>
+        /// <param name="id">The object.</param>
+        public void RemoveObject(FrustaObjectId id)
+        {
+            using (new HandleUse(handle))
+                Errors.Check(Native.frusta_world_remove_object(handle.Id, id), "frusta_world_remove_object");
+        }
+
+        /// <summary>Put an object at a pose, at rest (queued; <c>frusta_world_set_object_pose</c>).</summary>
+        /// <param name="id">The object.</param>
+        /// <param name="pose">Metres, world frame.</param>
+        public void SetObjectPose(FrustaObjectId id, in FrustaPose pose)
+        {
+            using (new HandleUse(handle))
+            fixed (FrustaPose* p = &pose)
+                Errors.Check(Native.frusta_world_set_object_pose(handle.Id, id, p), "frusta_world_set_object_pose");
+        }
+
+        /// <summary>Hand an object to the world's dynamics (true) or take it back, at rest (false);
+        /// queued (<c>frusta_world_set_object_dynamic</c>).</summary>
+        /// <param name="id">The object.</param>
+        /// <param name="dynamic">true: the world integrates it.</param>
+        public void SetObjectDynamic(FrustaObjectId id, bool dynamic)
+        {
+            using (new HandleUse(handle))
+                Errors.Check(Native.frusta_world_set_object_dynamic(handle.Id, id, dynamic ? 1 : 0),
+                             "frusta_world_set_object_dynamic");
+        }
+
+        /// <summary>One step of 1/RateHz: apply queued commands, solve every hand, publish
+        /// (<c>frusta_world_step</c>).</summary>
+        /// <exception cref="FrustaException"><see cref="FrustaResult.WrongState"/> while the own thread runs.</exception>
+        public void Step()
+        {
+            using (new HandleUse(handle))
+                Errors.Check(Native.frusta_world_step(handle.Id), "frusta_world_step");
+        }
+
+        /// <summary>Several steps in a row.</summary>
+        /// <param name="count">Steps, &gt;= 0.</param>
+        public void Step(int count)
+        {
+            if (count < 0) throw new ArgumentOutOfRangeException(nameof(count));
+            using (new HandleUse(handle))
+                for (int i = 0; i < count; ++i)
+                    Errors.Check(Native.frusta_world_step(handle.Id), "frusta_world_step");
+        }
+
+        /// <summary>Run the world on its own thread at RateHz on absolute deadlines until
+        /// <see cref="Stop"/> (<c>frusta_world_start</c>). No C# runs on that thread.</summary>
+        /// <exception cref="FrustaException"><see cref="FrustaResult.WrongState"/> when already running.</exception>
+        public void Start()
+        {
+            using (new HandleUse(handle))
+                Errors.Check(Native.frusta_world_start(handle.Id), "frusta_world_start");
+            running = true;
+        }
+
+        /// <summary>Stop the own thread; returns once its current step is done; no effect if none
+        /// runs (<c>frusta_world_stop</c>).</summary>
+        public void Stop()
+        {
+            using (new HandleUse(handle))
+                Errors.Check(Native.frusta_world_stop(handle.Id), "frusta_world_stop");
+            running = false;
+        }
+
+        /// <summary>
+        /// Latch the newest published step (never a torn one) and fill <paramref name="state"/>
+        /// (<c>frusta_world_read</c>). <see cref="GetHand"/>, <see cref="GetContacts(int, Span{FrustaWorldContact})"/>
+        /// and <see cref="GetObject"/> then read the latched step. Allocation-free: reuse one state.
+        /// Thread: host; for one consistent step from any thread use <see cref="ReadSnapshot"/>.
+        /// </summary>
+        /// <param name="state">Filled; its previous contents do not matter.</param>
+        public void Read(ref FrustaWorldState state)
+        {
+            state.StructSize = sizeof(FrustaWorldState);
+            using (new HandleUse(handle))
+            lock (readGate)
+            fixed (FrustaWorldState* s = &state)
+                Errors.Check(Native.frusta_world_read(handle.Id, s), "frusta_world_read");
+        }
+
+        /// <summary>One hand of the latched step (<c>frusta_world_get_hand</c>). Allocation-free.</summary>
+        /// <param name="hand">The index from <see cref="AddHand"/>.</param>
+        /// <param name="output">Filled; reuse one per hand.</param>
+        /// <exception cref="FrustaException"><see cref="FrustaResult.WrongState"/> before any <see cref="Read"/>;
+        /// <see cref="FrustaResult.OutOfRange"/> for a hand the world does not have.</exception>
+        public void GetHand(int hand, ref FrustaWorldHand output)
+        {
+            output.StructSize = sizeof(FrustaWorldHand);
+            using (new HandleUse(handle))
+            lock (readGate)
+            fixed (FrustaWorldHand* h = &output)
+                Errors.Check(Native.frusta_world_get_hand(handle.Id, hand, h), "frusta_world_get_hand");
+        }
+
+        /// <summary>How many contacts one hand has in the latched step (at most <see cref="MaxContactsPerHand"/>).</summary>
+        /// <param name="hand">The index from <see cref="AddHand"/>.</param>
+        /// <returns>The count.</returns>
+        public int GetContactCount(int hand)
+        {
+            int count;
+            using (new HandleUse(handle))
+            lock (readGate)
+                Errors.Check(Native.frusta_world_get_contacts(handle.Id, hand, null, 0, &count), "frusta_world_get_contacts");
+            return count;
+        }
+
+        /// <summary>Copy one hand's contacts of the latched step (<c>frusta_world_get_contacts</c>).
+        /// Allocation-free: reuse a buffer of <see cref="MaxContactsPerHand"/>.</summary>
+        /// <param name="hand">The index from <see cref="AddHand"/>.</param>
+        /// <param name="destination">Receives the contacts.</param>
+        /// <returns>The number copied.</returns>
+        /// <exception cref="FrustaException"><see cref="FrustaResult.Capacity"/> when destination is shorter than
+        /// the count (nothing is written then).</exception>
+        public int GetContacts(int hand, Span<FrustaWorldContact> destination)
+        {
+            int count;
+            using (new HandleUse(handle))
+            lock (readGate)
+            {
+                fixed (FrustaWorldContact* c = destination)
+                    Errors.Check(Native.frusta_world_get_contacts(handle.Id, hand, c, destination.Length, &count),
+                                 "frusta_world_get_contacts");
+            }
+            // an empty buffer is the native size query: it copied nothing
+            if (destination.Length == 0 && count > 0)
+                throw new FrustaException(FrustaResult.Capacity, $"capacity is 0, the hand has {count} contacts",
+                                          "frusta_world_get_contacts");
+            return count;
+        }
+
+        /// <summary>Copy one hand's contacts of the latched step into an array (see
+        /// <see cref="GetContacts(int, Span{FrustaWorldContact})"/>).</summary>
+        /// <param name="hand">The index from <see cref="AddHand"/>.</param>
+        /// <param name="destination">Receives the contacts.</param>
+        /// <param name="count">The number copied.</param>
+        public void GetContacts(int hand, FrustaWorldContact[] destination, out int count)
+        {
+            if (destination == null) throw new ArgumentNullException(nameof(destination));
+            count = GetContacts(hand, destination.AsSpan());
+        }
+
+        /// <summary>One object of the latched step (<c>frusta_world_get_object</c>). Allocation-free.</summary>
+        /// <param name="id">The object.</param>
+        /// <param name="output">Filled.</param>
+        /// <exception cref="FrustaException"><see cref="FrustaResult.StaleId"/> for an object removed, or added after
+        /// the latched step.</exception>
+        public void GetObject(FrustaObjectId id, ref FrustaObjectState output)
+        {
+            output.StructSize = sizeof(FrustaObjectState);
+            using (new HandleUse(handle))
+            lock (readGate)
+            fixed (FrustaObjectState* o = &output)
+                Errors.Check(Native.frusta_world_get_object(handle.Id, id, o), "frusta_world_get_object");
+        }
+
+        /// <summary>A snapshot buffer sized for this world's hands and contacts, for
+        /// <see cref="ReadSnapshot"/>. Allocates: make one per reader and reuse it.</summary>
+        /// <returns>An empty snapshot.</returns>
+        public WorldSnapshot CreateSnapshot() => new WorldSnapshot(handCount, maxContactsPerHand);
+
+        /// <summary>
+        /// Latch the newest step and copy its state, every hand and every hand's contacts into
+        /// <paramref name="snapshot"/>, all from that one step. Thread: any; readers on several
+        /// threads take turns on the world's read lock. Allocation-free once the snapshot has
+        /// room for the world's hands.
+        /// </summary>
+        /// <param name="snapshot">From <see cref="CreateSnapshot"/>; reused.</param>
+        public void ReadSnapshot(WorldSnapshot snapshot)
+        {
+            if (snapshot == null) throw new ArgumentNullException(nameof(snapshot));
+            using (new HandleUse(handle))
+            lock (readGate)
+            {
+                FrustaWorldId id = handle.Id;
+                snapshot.state.StructSize = sizeof(FrustaWorldState);
+                fixed (FrustaWorldState* s = &snapshot.state)
+                    Errors.Check(Native.frusta_world_read(id, s), "frusta_world_read");
+                int hands = snapshot.state.HandCount;
+                snapshot.EnsureHands(hands);
+                for (int h = 0; h < hands; ++h)
+                {
+                    snapshot.hands[h].StructSize = sizeof(FrustaWorldHand);
+                    fixed (FrustaWorldHand* p = &snapshot.hands[h])
+                        Errors.Check(Native.frusta_world_get_hand(id, h, p), "frusta_world_get_hand");
+                    int count;
+                    Errors.Check(Native.frusta_world_get_contacts(id, h, null, 0, &count), "frusta_world_get_contacts");
+                    snapshot.EnsureContacts(h, count);
+                    fixed (FrustaWorldContact* c = snapshot.contacts[h])
+                        Errors.Check(Native.frusta_world_get_contacts(id, h, c, snapshot.contacts[h].Length, &count),
+                                     "frusta_world_get_contacts");
+                    snapshot.contactCounts[h] = count;
+                }
+            }
+        }
+
+        /// <summary>Stop the own thread and destroy the world with its objects
+        /// (<c>frusta_destroy_world</c>); waits for calls in flight on other threads. Safe to call twice.</summary>
+        public void Dispose()
+        {
+            handle.Dispose();
+            running = false;
+        }
+    }
+
+    /// <summary>
+    /// One step of a world copied out by <see cref="World.ReadSnapshot"/>: its state, every hand
+    /// and every hand's contacts. Caller-owned and reused; not thread-safe itself (one per reader).
+    /// </summary>
+    public sealed class WorldSnapshot
+    {
+        internal FrustaWorldState state;
+        internal FrustaWorldHand[] hands;
+        internal FrustaWorldContact[][] contacts;
+        internal int[] contactCounts;
+
+        /// <summary>An empty snapshot with room for <paramref name="handCapacity"/> hands of
+        /// <paramref name="contactCapacity"/> contacts each; it grows if a step needs more.</summary>
+        /// <param name="handCapacity">Hands, &gt;= 0.</param>
+        /// <param name="contactCapacity">Contacts per hand, &gt;= 0.</param>
+        public WorldSnapshot(int handCapacity, int contactCapacity)
+        {
+            if (handCapacity < 0) throw new ArgumentOutOfRangeException(nameof(handCapacity));
+            if (contactCapacity < 0) throw new ArgumentOutOfRangeException(nameof(contactCapacity));
+            hands = new FrustaWorldHand[handCapacity];
+            contacts = new FrustaWorldContact[handCapacity][];
+            contactCounts = new int[handCapacity];
+            for (int h = 0; h < handCapacity; ++h) contacts[h] = new FrustaWorldContact[contactCapacity];
+        }
+
+        /// <summary>The step's state (step count, time, timings).</summary>
+        public ref readonly FrustaWorldState State => ref state;
+
+        /// <summary>Hands in the step.</summary>
+        public int HandCount => state.HandCount;
+
+        /// <summary>One hand of the step.</summary>
+        /// <param name="hand">0..HandCount-1.</param>
+        /// <returns>A read-only reference into the snapshot, valid until the next ReadSnapshot into it.</returns>
+        public ref readonly FrustaWorldHand GetHand(int hand)
+        {
+            if ((uint)hand >= (uint)state.HandCount) throw new ArgumentOutOfRangeException(nameof(hand));
+            return ref hands[hand];
+        }
+
+        /// <summary>One hand's contacts in the step.</summary>
+        /// <param name="hand">0..HandCount-1.</param>
+        /// <returns>A read-only view into the snapshot, valid until the next ReadSnapshot into it.</returns>
+        public ReadOnlySpan<FrustaWorldContact> GetContacts(int hand)
+        {
+            if ((uint)hand >= (uint)state.HandCount) throw new ArgumentOutOfRangeException(nameof(hand));
+            return new ReadOnlySpan<FrustaWorldContact>(contacts[hand], 0, contactCounts[hand]);
+        }
+
+        internal void EnsureHands(int count)
+        {
+            if (count <= hands.Length) return;
+            int old = hands.Length;
+            int capacity = old > 0 ? contacts[0].Length : 0;
+            Array.Resize(ref hands, count);
+            Array.Resize(ref contacts, count);
+            Array.Resize(ref contactCounts, count);
+            for (int h = old; h < count; ++h) contacts[h] = new FrustaWorldContact[capacity];
+        }
+
+        internal void EnsureContacts(int hand, int count)
+        {
+            if (count > contacts[hand].Length) contacts[hand] = new FrustaWorldContact[count];
+        }
+    }
+}
