@@ -43,7 +43,7 @@ namespace Frusta.Binding
         /// <returns>a . b</returns>
         public static double Dot(Vector3d a, Vector3d b) => a.X * b.X + a.Y * b.Y + a.Z * b.Z;
 
-        /// <summary>The cross product of two vectors (right-handed, as Frusta's frames are).</summary>
+        /// <summary>The cross product of two vectors, by the usual component formula (as Unity's Vector3.Cross).</summary>
         /// <param name="a">The first vector.</param>
         /// <param name="b">The second vector.</param>
         /// <returns>a x b</returns>

@@ -1,0 +1,128 @@
+// SPDX-License-Identifier: MIT
+// Several threads read snapshots while the world runs on its own 1 kHz thread and the
+// host feeds input.
+using System;
+using System.Collections.Generic;
+using System.Diagnostics;
+using System.Linq;
+using System.Threading;
+using Frusta.Binding;
+using Xunit;
+
+namespace Frusta.Binding.Tests
+{
+    public class ThreadTests
+    {
+        [Fact]
+        public void ReadersOnSeveralThreadsSeeConsistentMonotonicSnapshots()
+        {
+            using var tree = SphereTree.Load(TestEnv.SampleObject("ball"));
+            using var world = new World();
+            int right = world.AddHand(FrustaHandDef.Default);
+            FrustaHandDef leftDef = FrustaHandDef.Default;
+            leftDef.Side = FrustaHandSide.Left;
+            int left = world.AddHand(leftDef);
+            FrustaObjectDef ball = FrustaObjectDef.Default;
+            ball.Pose.Position = new Vector3d(0.15, 0.0, -0.04);
+            world.AddObject(tree, ball);
+            var angles = new double[20];
+            var palm = FrustaPose.Identity;
+            world.SetHaptic(right, palm, angles);
+            world.SetHaptic(left, palm, angles);
+
+            const int readers = 3;
+            var stop = new ManualResetEventSlim();
+            var failures = new List<string>();
+            var reads = new long[readers];
+            var lastSteps = new ulong[readers];
+            double period = 1.0 / world.RateHz;
+            var threads = Enumerable.Range(0, readers).Select(r => new Thread(() =>
+            {
+                WorldSnapshot snapshot = world.CreateSnapshot();
+                ulong previous = 0;
+                try
+                {
+                    while (!stop.IsSet)
+                    {
+                        world.ReadSnapshot(snapshot);
+                        ref readonly FrustaWorldState s = ref snapshot.State;
+                        if (s.Step < previous) throw new Exception($"step went back from {previous} to {s.Step}");
+                        // one step: the time, the hands and their contacts belong together
+                        if (Math.Abs(s.Time - s.Step * period) > 1e-9) throw new Exception($"time {s.Time} at step {s.Step}");
+                        if (s.HandCount != 2 || s.ObjectCount != (s.Step == 0 ? 0 : 1))
+                            throw new Exception($"{s.HandCount} hands, {s.ObjectCount} objects at step {s.Step}");
+                        for (int h = 0; h < 2; ++h)
+                        {
+                            ref readonly FrustaWorldHand hand = ref snapshot.GetHand(h);
+                            if (hand.ContactCount != snapshot.GetContacts(h).Length)
+                                throw new Exception($"hand {h}: {hand.ContactCount} contacts, {snapshot.GetContacts(h).Length} copied");
+                            foreach (var c in snapshot.GetContacts(h))
+                                if (!double.IsFinite(c.Distance) || Math.Abs(c.Normal.Length - 1) > 1e-9)
+                                    throw new Exception($"hand {h}: a torn contact");
+                        }
+                        previous = s.Step;
+                        ++reads[r];
+                    }
+                }
+                catch (Exception e)
+                {
+                    lock (failures) failures.Add($"reader {r}: {e}");
+                }
+                lastSteps[r] = previous;
+            })).ToArray();
+
+            world.Start();
+            foreach (var t in threads) t.Start();
+            // the host moves the hands into the ball and back for half a second
+            var clock = Stopwatch.StartNew();
+            while (clock.Elapsed.TotalSeconds < 0.5)
+            {
+                double z = -0.02 * (0.5 + 0.5 * Math.Sin(clock.Elapsed.TotalSeconds * 20));
+                palm.Position = new Vector3d(0, 0, z);
+                world.SetHaptic(right, palm, angles);
+                world.SetHaptic(left, palm, angles);
+                Thread.Sleep(1);
+            }
+            stop.Set();
+            foreach (var t in threads) t.Join();
+            world.Stop();
+
+            Assert.Empty(failures);
+            var state = new FrustaWorldState();
+            world.Read(ref state);
+            Assert.True(state.Step > 100, $"{state.Step} steps in 0.5 s");
+            for (int r = 0; r < readers; ++r)
+            {
+                Assert.True(reads[r] > 10, $"reader {r} read {reads[r]} snapshots");
+                Assert.True(lastSteps[r] > 0 && lastSteps[r] <= state.Step, $"reader {r} ended at step {lastSteps[r]}");
+            }
+        }
+
+        [Fact]
+        public void DisposeWaitsForAReaderInFlightAndThenRefusesIt()
+        {
+            var world = new World();
+            world.AddHand(FrustaHandDef.Default);
+            world.Start();
+            var snapshot = world.CreateSnapshot();
+            Exception end = null;
+            var reader = new Thread(() =>
+            {
+                try
+                {
+                    while (true) world.ReadSnapshot(snapshot);
+                }
+                catch (Exception e)
+                {
+                    end = e;
+                }
+            });
+            reader.Start();
+            Thread.Sleep(50);
+            world.Dispose();
+            reader.Join();
+            Assert.IsType<ObjectDisposedException>(end);
+            Assert.False(world.IsValid);
+        }
+    }
+}
