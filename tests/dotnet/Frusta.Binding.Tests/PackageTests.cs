@@ -1,0 +1,143 @@
+// SPDX-License-Identifier: MIT
+// unity-package/ is a valid UPM package: manifest, assembly definitions, .meta files.
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
+using System.Text.Json;
+using System.Text.RegularExpressions;
+using Frusta.Binding;
+using Xunit;
+
+namespace Frusta.Binding.Tests
+{
+    public class PackageTests
+    {
+        // Unity's own assemblies a test assembly may reference
+        static readonly HashSet<string> UnityAssemblies = new HashSet<string> { "UnityEngine.TestRunner", "UnityEditor.TestRunner" };
+
+        static JsonElement Json(string path) => JsonDocument.Parse(File.ReadAllText(path)).RootElement;
+
+        static Dictionary<string, (string Path, JsonElement Json)> Asmdefs() =>
+            Directory.EnumerateFiles(TestEnv.Package, "*.asmdef", SearchOption.AllDirectories)
+                .Where(p => !Path.GetRelativePath(TestEnv.Package, p).Split(Path.DirectorySeparatorChar).Any(d => d.EndsWith("~")))
+                .Select(p => (p, Json(p)))
+                .ToDictionary(x => x.Item2.GetProperty("name").GetString(), x => (x.p, x.Item2));
+
+        static string[] Strings(JsonElement e, string property) =>
+            e.TryGetProperty(property, out var a) ? a.EnumerateArray().Select(x => x.GetString()).ToArray() : Array.Empty<string>();
+
+        [Fact]
+        public void TheManifestNamesThePackageItsVersionUnityAndSamples()
+        {
+            JsonElement m = Json(Path.Combine(TestEnv.Package, "package.json"));
+            string name = m.GetProperty("name").GetString();
+            Assert.Matches(@"^com(\.[a-z0-9-]+){2,}$", name);
+            Assert.Equal("com.frusta.engine", name);
+            Assert.Equal(FrustaLibrary.VersionString, m.GetProperty("version").GetString());
+            Assert.Equal("2022.3", m.GetProperty("unity").GetString());
+            Assert.False(string.IsNullOrWhiteSpace(m.GetProperty("displayName").GetString()));
+            Assert.False(string.IsNullOrWhiteSpace(m.GetProperty("description").GetString()));
+            var samples = m.GetProperty("samples").EnumerateArray().ToArray();
+            Assert.NotEmpty(samples);
+            foreach (var s in samples)
+            {
+                string path = s.GetProperty("path").GetString();
+                Assert.StartsWith("Samples~/", path);
+                Assert.True(Directory.Exists(Path.Combine(TestEnv.Package, path)), $"{path} does not exist");
+                Assert.NotEmpty(Directory.GetFiles(Path.Combine(TestEnv.Package, path), "*.cs"));
+            }
+            // the manifest's version is the library's and CMake's
+            string cmake = File.ReadAllText(Path.Combine(TestEnv.Root, "CMakeLists.txt"));
+            Assert.Matches($@"project\(frusta VERSION {Regex.Escape(FrustaLibrary.VersionString)}\b", cmake);
+        }
+
+        [Fact]
+        public void AssemblyDefinitionsAreTheOnesTheLayoutNeedsAndTheirReferencesResolve()
+        {
+            var asmdefs = Asmdefs();
+            Assert.Equal(new[] { "Frusta.Binding", "Frusta.Editor", "Frusta.Editor.Tests", "Frusta.Runtime", "Frusta.Runtime.Tests" },
+                         asmdefs.Keys.OrderBy(k => k, StringComparer.Ordinal).ToArray());
+            var all = asmdefs.Keys.ToHashSet();
+            all.Add("Frusta.Samples.HandDemo");
+            foreach (var (name, (path, json)) in asmdefs)
+            {
+                Assert.Equal(name, Path.GetFileNameWithoutExtension(path));
+                foreach (string r in Strings(json, "references"))
+                    Assert.True(asmdefs.ContainsKey(r) || UnityAssemblies.Contains(r), $"{name} references {r}, which is not in the package");
+            }
+
+            JsonElement binding = asmdefs["Frusta.Binding"].Json;
+            Assert.True(binding.GetProperty("noEngineReferences").GetBoolean());
+            Assert.True(binding.GetProperty("allowUnsafeCode").GetBoolean());
+            Assert.Empty(Strings(binding, "references"));
+            Assert.Equal(Path.Combine(TestEnv.Package, "Runtime", "Binding", "Frusta.Binding.asmdef"), asmdefs["Frusta.Binding"].Path);
+
+            Assert.Equal(new[] { "Frusta.Binding" }, Strings(asmdefs["Frusta.Runtime"].Json, "references"));
+            Assert.Equal(new[] { "Editor" }, Strings(asmdefs["Frusta.Editor"].Json, "includePlatforms"));
+
+            foreach (string test in new[] { "Frusta.Editor.Tests", "Frusta.Runtime.Tests" })
+            {
+                JsonElement t = asmdefs[test].Json;
+                Assert.Equal(new[] { "UNITY_INCLUDE_TESTS" }, Strings(t, "defineConstraints"));
+                Assert.False(t.GetProperty("autoReferenced").GetBoolean(), test);
+                Assert.Contains("nunit.framework.dll", Strings(t, "precompiledReferences"));
+                Assert.Contains("UnityEngine.TestRunner", Strings(t, "references"));
+            }
+            Assert.Equal(new[] { "Editor" }, Strings(asmdefs["Frusta.Editor.Tests"].Json, "includePlatforms"));
+        }
+
+        [Fact]
+        public void TheBindingFolderHoldsNoUnityEngineCode()
+        {
+            foreach (string file in Directory.EnumerateFiles(Path.Combine(TestEnv.Package, "Runtime", "Binding"), "*.cs"))
+                Assert.DoesNotMatch(@"using\s+UnityEngine|UnityEngine\.[A-Z]\w*\s*[.(]", File.ReadAllText(file));
+        }
+
+        [Fact]
+        public void EveryImportedFileAndFolderHasAMetaWithAUniqueGuid()
+        {
+            var guids = new Dictionary<string, string>();
+            void Check(string path)
+            {
+                string meta = path + ".meta";
+                Assert.True(File.Exists(meta), $"{Path.GetRelativePath(TestEnv.Package, path)} has no .meta (run tests/dotnet/unity_meta.py)");
+                Match m = Regex.Match(File.ReadAllText(meta), @"^guid: ([0-9a-f]{32})$", RegexOptions.Multiline);
+                Assert.True(m.Success, $"{meta} has no guid");
+                Assert.False(guids.TryGetValue(m.Groups[1].Value, out string other), $"{meta} repeats the guid of {other}");
+                guids[m.Groups[1].Value] = meta;
+                if (Directory.Exists(path)) Assert.Contains("folderAsset: yes", File.ReadAllText(meta));
+            }
+            void Walk(string dir)
+            {
+                foreach (string d in Directory.GetDirectories(dir).Where(d => !Path.GetFileName(d).EndsWith("~") && !Path.GetFileName(d).StartsWith(".")))
+                {
+                    Check(d);
+                    Walk(d);
+                }
+                foreach (string f in Directory.GetFiles(dir).Where(f => !f.EndsWith(".meta") && !Path.GetFileName(f).StartsWith(".")))
+                    Check(f);
+                // and no .meta without its asset (a deleted file's leftover); the plugin's binary is built
+                foreach (string meta in Directory.GetFiles(dir, "*.meta"))
+                {
+                    string asset = meta.Substring(0, meta.Length - 5);
+                    Assert.True(File.Exists(asset) || Directory.Exists(asset) || asset.EndsWith(".so"), $"{meta} has no asset");
+                }
+            }
+            Walk(TestEnv.Package);
+            string plugin = Path.Combine(TestEnv.Package, "Runtime", "Plugins", "Linux", "x86_64", "libfrusta.so.meta");
+            string text = File.ReadAllText(plugin);
+            Assert.Contains("PluginImporter:", text);
+            Assert.Matches(@"Editor: Editor\n    second:\n      enabled: 1\n      settings:\n        CPU: x86_64\n        DefaultValueInitialized: true\n        OS: Linux", text);
+            Assert.Matches(@"Standalone: Linux64\n    second:\n      enabled: 1\n      settings:\n        CPU: x86_64", text);
+            Assert.Matches(@"Standalone: Win64\n    second:\n      enabled: 0", text);
+        }
+
+        [Fact]
+        public void NoBuildOutputLivesInThePackage()
+        {
+            foreach (string d in Directory.EnumerateDirectories(TestEnv.Package, "*", SearchOption.AllDirectories))
+                Assert.False(Path.GetFileName(d) is "bin" or "obj", $"{d} is build output inside the package");
+        }
+    }
+}

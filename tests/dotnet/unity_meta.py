@@ -1,0 +1,54 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+"""Write the .meta file Unity needs beside every file and folder of unity-package/ that
+lacks one (folders ending in ~ and their contents are not imported, so they get none).
+GUIDs are the md5 of the package-relative path: stable across machines and unique.
+Existing .meta files are kept (Unity keeps them too). Run it after adding a file;
+PackageTests checks that none is missing. Usage: python3 tests/dotnet/unity_meta.py"""
+import hashlib
+import os
+import sys
+
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "unity-package")
+TAIL = "  userData: \n  assetBundleName: \n  assetBundleVariant: \n"
+# built binaries are ignored by git; only their hand-written .meta is committed
+SKIP = {".so", ".dll", ".dylib", ".bundle", ".meta"}
+
+
+def meta(rel, is_dir):
+    guid = hashlib.md5(("com.frusta.engine/" + rel).encode()).hexdigest()
+    head = f"fileFormatVersion: 2\nguid: {guid}\n"
+    if is_dir:
+        return head + "folderAsset: yes\nDefaultImporter:\n  externalObjects: {}\n" + TAIL
+    ext = os.path.splitext(rel)[1]
+    if ext == ".cs":
+        return head + ("MonoImporter:\n  externalObjects: {}\n  serializedVersion: 2\n  defaultReferences: []\n"
+                       "  executionOrder: 0\n  icon: {instanceID: 0}\n") + TAIL
+    if ext == ".asmdef":
+        return head + "AssemblyDefinitionImporter:\n  externalObjects: {}\n" + TAIL
+    if rel == "package.json":
+        return head + "PackageManifestImporter:\n  externalObjects: {}\n" + TAIL
+    return head + "TextScriptImporter:\n  externalObjects: {}\n" + TAIL
+
+
+def main():
+    written = 0
+    for base, dirs, files in os.walk(ROOT):
+        dirs[:] = sorted(d for d in dirs if not d.endswith("~") and not d.startswith("."))
+        for name in sorted(dirs) + sorted(files):
+            path = os.path.join(base, name)
+            rel = os.path.relpath(path, ROOT).replace(os.sep, "/")
+            if os.path.splitext(name)[1] in SKIP or name.startswith("."):
+                continue
+            target = path + ".meta"
+            if os.path.exists(target):
+                continue
+            with open(target, "w") as f:
+                f.write(meta(rel, os.path.isdir(path)))
+            written += 1
+            print("wrote", os.path.relpath(target, ROOT))
+    print(f"{written} .meta files written", file=sys.stderr)
+
+
+if __name__ == "__main__":
+    main()

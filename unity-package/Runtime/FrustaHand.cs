@@ -1,0 +1,185 @@
+// SPDX-License-Identifier: MIT
+using System;
+using Frusta.Binding;
+using UnityEngine;
+
+namespace Frusta.Unity
+{
+    /// <summary>
+    /// A hand of a <see cref="FrustaWorldBehaviour"/>. The haptic input (the tracked wrist and the
+    /// glove's joint angles) goes in through <see cref="hapticSource"/> and <see cref="SetJointAngles"/>;
+    /// the graphic hand (the one that never sinks into objects) comes out each frame and drives the
+    /// mapped bones of a skinned rig. Scene-view gizmos show its segments, joint balls and contacts.
+    /// </summary>
+    [AddComponentMenu("Frusta/Frusta Hand")]
+    public sealed class FrustaHand : MonoBehaviour
+    {
+        /// <summary>One bone of a rig driven by one finger segment's joint angles.</summary>
+        [Serializable]
+        public struct BoneMapping
+        {
+            /// <summary>The rig's bone.</summary>
+            public Transform bone;
+            /// <summary>The finger.</summary>
+            public FrustaFinger finger;
+            /// <summary>Segment 0..2, proximal to distal.</summary>
+            [Range(0, 2)] public int segment;
+            /// <summary>The bone's local axis the flexion turns about (towards the palm positive).</summary>
+            public Vector3 flexionAxis;
+            /// <summary>The bone's local axis the abduction turns about (first segment only).</summary>
+            public Vector3 abductionAxis;
+            [NonSerialized] internal Quaternion rest;
+        }
+
+        /// <summary>A single segment's length and tip radius overriding the proportions.</summary>
+        [Serializable]
+        public struct SegmentOverride
+        {
+            /// <summary>The finger.</summary>
+            public FrustaFinger finger;
+            /// <summary>Segment 0..2.</summary>
+            [Range(0, 2)] public int segment;
+            /// <summary>Metres; 0 keeps the proportional length.</summary>
+            public float length;
+            /// <summary>Metres, the ball at the segment's distal end; 0 keeps it.</summary>
+            public float distalRadius;
+        }
+
+        [SerializeField] FrustaWorldBehaviour world;
+        [SerializeField] FrustaHandSide handedness = FrustaHandSide.Right;
+        [Tooltip("Metres, wrist crease to middle fingertip.")]
+        [SerializeField, Range(0.12f, 0.26f)] float handLength = 0.19f;
+        [Tooltip("Metres, across the metacarpal heads.")]
+        [SerializeField, Range(0.06f, 0.12f)] float handBreadth = 0.085f;
+        [SerializeField] SegmentOverride[] segmentOverrides = Array.Empty<SegmentOverride>();
+        [Tooltip("The tracked wrist: its world pose is the haptic palm pose. Empty: this transform.")]
+        [SerializeField] Transform hapticSource;
+        [Tooltip("Moved to the graphic palm each frame (the rig's wrist bone). Empty: nothing moves.")]
+        [SerializeField] Transform graphicWrist;
+        [SerializeField] BoneMapping[] bones = Array.Empty<BoneMapping>();
+        [SerializeField] bool drawContacts = true;
+
+        FrustaHandDef def;
+        int index = -1;
+        Hand preview;                       // the graphic hand's geometry, for gizmos
+        readonly double[] angles = new double[FrustaConstants.HandJointCount];
+        FrustaWorldHand latest;
+        FrustaWorldContact[] contacts = Array.Empty<FrustaWorldContact>();
+        int contactCount;
+        readonly FrustaSegment[] segments = new FrustaSegment[FrustaConstants.HandSegmentCount];
+
+        /// <summary>The hand's index in the world; -1 before it registered.</summary>
+        public int Index => index;
+
+        /// <summary>The latest graphic and haptic state (valid once <see cref="FrustaWorldHand.Solved"/>).</summary>
+        public ref readonly FrustaWorldHand State => ref latest;
+
+        /// <summary>The latest contacts of this hand (world frame, Frusta's axes).</summary>
+        public ReadOnlySpan<FrustaWorldContact> Contacts => new ReadOnlySpan<FrustaWorldContact>(contacts, 0, contactCount);
+
+        /// <summary>Set the glove's 20 joint angles (radians, finger-major) for the next steps.</summary>
+        public void SetJointAngles(ReadOnlySpan<double> radians) => radians.CopyTo(angles);
+
+        /// <summary>The hand def built from the inspector fields.</summary>
+        public FrustaHandDef BuildDef()
+        {
+            FrustaHandDef d = FrustaHandDef.Default;
+            d.Side = handedness;
+            d.SetSize(handLength, handBreadth);
+            foreach (SegmentOverride o in segmentOverrides)
+            {
+                if (o.length > 0) d.SetSegmentLength(o.finger, o.segment, o.length);
+                if (o.distalRadius > 0) d.SetJointRadius(o.finger, o.segment + 1, o.distalRadius);
+            }
+            return d;
+        }
+
+        void Awake()
+        {
+            if (world == null) world = GetComponentInParent<FrustaWorldBehaviour>();
+            if (world == null || world.World == null)
+            {
+                Debug.LogError("FrustaHand needs a FrustaWorldBehaviour (set one or put the hand under it).", this);
+                enabled = false;
+                return;
+            }
+            def = BuildDef();
+            index = world.World.AddHand(def); // before the world's first step
+            preview = new Hand(def);
+            contacts = new FrustaWorldContact[world.World.MaxContactsPerHand];
+            for (int i = 0; i < bones.Length; ++i)
+                if (bones[i].bone != null) bones[i].rest = bones[i].bone.localRotation;
+        }
+
+        void OnEnable()
+        {
+            if (world != null) world.Latched += OnLatched;
+        }
+
+        void OnDisable()
+        {
+            if (world != null) world.Latched -= OnLatched;
+        }
+
+        void Update()
+        {
+            World w = world != null ? world.World : null;
+            if (w == null || index < 0) return;
+            Transform source = hapticSource != null ? hapticSource : transform;
+            w.SetHaptic(index, source.ToFrustaPose(), angles);
+        }
+
+        void OnLatched(FrustaWorldBehaviour source)
+        {
+            World w = source.World;
+            w.GetHand(index, ref latest);
+            contactCount = w.GetContacts(index, contacts);
+            if (!latest.Solved) return;
+            if (graphicWrist != null) graphicWrist.SetFrustaPose(latest.GraphicPalm);
+            for (int i = 0; i < bones.Length; ++i)
+            {
+                BoneMapping b = bones[i];
+                if (b.bone == null) continue;
+                int joint = (int)b.finger * FrustaConstants.JointsPerFinger;
+                float flexion = (float)(latest.GetGraphicAngle(joint + 1 + b.segment) * Mathf.Rad2Deg);
+                float abduction = b.segment == 0 ? (float)(latest.GetGraphicAngle(joint) * Mathf.Rad2Deg) : 0f;
+                b.bone.localRotation = b.rest * Quaternion.AngleAxis(abduction, b.abductionAxis) *
+                                       Quaternion.AngleAxis(flexion, b.flexionAxis);
+            }
+        }
+
+        void OnDestroy()
+        {
+            preview?.Dispose();
+            preview = null;
+        }
+
+        void OnDrawGizmos()
+        {
+            if (preview == null || !preview.IsValid || !latest.Solved) return;
+            // the graphic hand's geometry through the standalone preview hand
+            Span<double> a = stackalloc double[FrustaConstants.HandJointCount];
+            latest.CopyGraphicAngles(a);
+            preview.SetPalmPose(latest.GraphicPalm);
+            preview.SetJointAngles(a);
+            int n = preview.GetSegments(segments);
+            Gizmos.color = new Color(0.9f, 0.75f, 0.6f);
+            for (int s = 0; s < n; ++s)
+            {
+                Vector3 d = segments[s].Proximal.ToUnityVector(), e = segments[s].Distal.ToUnityVector();
+                Gizmos.DrawLine(d, e);
+                Gizmos.DrawWireSphere(d, (float)segments[s].ProximalRadius);
+                Gizmos.DrawWireSphere(e, (float)segments[s].DistalRadius);
+            }
+            if (!drawContacts) return;
+            for (int i = 0; i < contactCount; ++i)
+            {
+                Vector3 p = contacts[i].GraphicPoint.ToUnityVector();
+                Gizmos.color = contacts[i].Slipping ? Color.yellow : Color.red;
+                Gizmos.DrawSphere(p, 0.001f);
+                // 1 cm per newton
+                Gizmos.DrawLine(p, p + 0.01f * (contacts[i].NormalForce + contacts[i].Friction).ToUnityVector());
+            }
+        }
+    }
+}

@@ -1,0 +1,149 @@
+// SPDX-License-Identifier: MIT
+using System.IO;
+using Frusta.Binding;
+using UnityEngine;
+
+namespace Frusta.Unity
+{
+    /// <summary>
+    /// An object of a <see cref="FrustaWorldBehaviour"/> with a baked sphere tree as its shape. Kinematic
+    /// objects follow this transform (moved in Unity, moved in Frusta); dynamic ones move this
+    /// transform. With a non-kinematic Rigidbody and a kinematic Frusta object, the hands' reaction
+    /// wrench is applied to the Rigidbody each FixedUpdate (this transform's origin is taken as the
+    /// centre of mass, as Frusta's object frame is).
+    /// </summary>
+    [AddComponentMenu("Frusta/Frusta Sphere Tree Object")]
+    public sealed class FrustaSphereTreeObject : MonoBehaviour
+    {
+        [SerializeField] FrustaWorldBehaviour world;
+        [Tooltip("An imported .frtree asset.")]
+        [SerializeField] FrustaSphereTreeAsset tree;
+        [Tooltip("Or a .frtree path: absolute, or relative to StreamingAssets.")]
+        [SerializeField] string treePath = "";
+        [Tooltip("Frusta moves the object (its dynamics); off: Unity moves it.")]
+        [SerializeField] bool dynamic;
+        [Tooltip("Contact stiffness, N/m, per object axis.")]
+        [SerializeField] Vector3 stiffness = new Vector3(400, 400, 400);
+        [SerializeField, Range(0, 2)] float friction = 0.6f;
+        [Tooltip("kg; a Rigidbody's mass wins.")]
+        [SerializeField] float mass = 0.1f;
+        [SerializeField] bool drawLeaves;
+
+        FrustaObjectId id;
+        Rigidbody body;
+        FrustaObjectState latest;
+        Vector3 sentPosition;
+        Quaternion sentRotation;
+        FrustaSphere[] leaves;
+
+        /// <summary>The object's id in the world (null before Awake).</summary>
+        public FrustaObjectId Id => id;
+
+        /// <summary>The latest state: pose, velocities and the hands' reaction wrench (Frusta frame).</summary>
+        public ref readonly FrustaObjectState State => ref latest;
+
+        void Awake()
+        {
+            if (world == null) world = FindObjectOfType<FrustaWorldBehaviour>();
+            body = GetComponent<Rigidbody>();
+            if (world == null || world.World == null)
+            {
+                Debug.LogError("FrustaSphereTreeObject needs a FrustaWorldBehaviour in the scene.", this);
+                enabled = false;
+                return;
+            }
+            SphereTree shape;
+            try
+            {
+                shape = tree != null ? tree.Load() : SphereTree.Load(ResolvePath(treePath));
+            }
+            catch (FrustaException e)
+            {
+                Debug.LogError($"Frusta could not load the sphere tree of {name}: {e.NativeMessage}", this);
+                enabled = false;
+                return;
+            }
+            using (shape)
+            {
+                FrustaObjectDef def = FrustaObjectDef.Default;
+                def.Pose = transform.ToFrustaPose();
+                def.Dynamic = dynamic;
+                // the object frame's axes: z flips, so the stiffness' components keep their axes
+                def.Stiffness = new Vector3d(stiffness.x, stiffness.y, stiffness.z);
+                def.Friction = friction;
+                def.Mass = body != null ? body.mass : mass;
+                id = world.World.AddObject(shape, def);
+                if (drawLeaves)
+                {
+                    leaves = new FrustaSphere[shape.LeafCount];
+                    shape.GetLeaves(leaves);
+                }
+            }
+            sentPosition = transform.position;
+            sentRotation = transform.rotation;
+        }
+
+        static string ResolvePath(string path) =>
+            Path.IsPathRooted(path) ? path : Path.Combine(Application.streamingAssetsPath, path);
+
+        void OnEnable()
+        {
+            if (world != null) world.Latched += OnLatched;
+        }
+
+        void OnDisable()
+        {
+            if (world != null) world.Latched -= OnLatched;
+        }
+
+        void OnLatched(FrustaWorldBehaviour source)
+        {
+            World w = source.World;
+            try
+            {
+                w.GetObject(id, ref latest);
+            }
+            catch (FrustaException e) when (e.Result == FrustaResult.StaleId)
+            {
+                return; // added after the latched step: present from the next one
+            }
+            if (dynamic)
+            {
+                transform.SetFrustaPose(latest.Pose);
+            }
+            else if (transform.position != sentPosition || transform.rotation != sentRotation)
+            {
+                // Unity moved it: tell Frusta (queued for the next step)
+                w.SetObjectPose(id, transform.ToFrustaPose());
+                sentPosition = transform.position;
+                sentRotation = transform.rotation;
+            }
+        }
+
+        void FixedUpdate()
+        {
+            if (dynamic || body == null || body.isKinematic) return;
+            body.AddForce(latest.ReactionForce.ToUnityVector(), ForceMode.Force);
+            body.AddTorque(latest.ReactionTorque.ToUnityAxial(), ForceMode.Force);
+        }
+
+        void OnDestroy()
+        {
+            World w = world != null ? world.World : null;
+            if (w != null && w.IsValid && !id.IsNull)
+            {
+                try { w.RemoveObject(id); }
+                catch (FrustaException) { /* already gone with its world */ }
+            }
+        }
+
+        void OnDrawGizmosSelected()
+        {
+            if (leaves == null) return;
+            Gizmos.color = new Color(0.3f, 0.7f, 1f, 0.5f);
+            FrustaPose pose = transform.ToFrustaPose();
+            foreach (FrustaSphere s in leaves)
+                Gizmos.DrawWireSphere(pose.TransformPoint(s.Center).ToUnityVector(), (float)s.Radius);
+        }
+    }
+}

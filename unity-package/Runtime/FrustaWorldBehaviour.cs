@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: MIT
+using System;
+using Frusta.Binding;
+using UnityEngine;
+
+namespace Frusta.Unity
+{
+    /// <summary>
+    /// Owns a Frusta <see cref="World"/>. It is created in Awake (before any hand or object of the
+    /// scene registers: this component runs early), runs on its own 1 kHz thread while enabled
+    /// (or is stepped from Update when <see cref="runOnOwnThread"/> is off), latches the newest
+    /// step once per frame for the other components, and is disposed on destroy, on quit and
+    /// before an editor domain reload.
+    /// </summary>
+    [DefaultExecutionOrder(-100)]
+    [DisallowMultipleComponent]
+    [AddComponentMenu("Frusta/Frusta World")]
+    public sealed class FrustaWorldBehaviour : MonoBehaviour
+    {
+        [Tooltip("Steps per second (Hz); a step advances time by 1/rate.")]
+        [SerializeField] double rateHz = 1000.0;
+        [Tooltip("Run the world on its own thread; off: step it from Update, catching up with the frame time.")]
+        [SerializeField] bool runOnOwnThread = true;
+        [Tooltip("Object slots.")]
+        [SerializeField] int maxObjects = 64;
+        [Tooltip("Gravity on dynamic objects, m/s², Unity frame.")]
+        [SerializeField] Vector3 gravity = Vector3.zero;
+
+        World world;
+        FrustaWorldState state;
+        double pendingSteps;
+        bool started;
+
+        /// <summary>The world; null before Awake and after destruction.</summary>
+        public World World => world;
+
+        /// <summary>The step latched this frame (by <see cref="Update"/>).</summary>
+        public ref readonly FrustaWorldState State => ref state;
+
+        /// <summary>Raised after each frame's latch; read hands and objects from here.</summary>
+        public event Action<FrustaWorldBehaviour> Latched;
+
+        void Awake()
+        {
+            FrustaWorldDef def = FrustaWorldDef.Default;
+            def.RateHz = rateHz;
+            def.MaxObjects = maxObjects;
+            def.Gravity = gravity.ToFrustaVector();
+            world = new World(def);
+#if UNITY_EDITOR
+            // a domain reload would orphan the native thread: dispose first
+            UnityEditor.AssemblyReloadEvents.beforeAssemblyReload += DisposeWorld;
+#endif
+            Application.quitting += DisposeWorld;
+        }
+
+        // every hand and object registered in its Awake/OnEnable: the world may step now
+        void Start()
+        {
+            started = true;
+            if (isActiveAndEnabled && runOnOwnThread) world.Start();
+        }
+
+        void OnEnable()
+        {
+            if (started && world != null && runOnOwnThread && !world.IsRunning) world.Start();
+        }
+
+        void OnDisable()
+        {
+            if (world != null && world.IsValid) world.Stop();
+        }
+
+        void Update()
+        {
+            if (world == null || !started) return;
+            if (!runOnOwnThread)
+            {
+                pendingSteps += Time.deltaTime * rateHz;
+                int steps = Math.Min((int)pendingSteps, (int)(0.1 * rateHz)); // at most 100 ms per frame
+                pendingSteps -= (int)pendingSteps;
+                world.Step(steps);
+            }
+            world.Read(ref state);
+            Latched?.Invoke(this);
+        }
+
+        void OnDestroy() => DisposeWorld();
+
+        void DisposeWorld()
+        {
+#if UNITY_EDITOR
+            UnityEditor.AssemblyReloadEvents.beforeAssemblyReload -= DisposeWorld;
+#endif
+            Application.quitting -= DisposeWorld;
+            world?.Dispose();
+            world = null;
+        }
+    }
+}
