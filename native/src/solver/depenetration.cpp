@@ -34,30 +34,34 @@ bool depenetrate(const HandModel& model, const HandReach& reach, const SolverObj
     forward_kinematics(model, trial, pose);
     return hand_is_free(model, reach, pose, objects, object_count, tolerance, scratch);
   };
-  double best = far;
-  vec3 best_direction(0.0);
+  vec3 directions[26];
+  int count = 0;
   for (int x = -1; x <= 1; ++x)
     for (int y = -1; y <= 1; ++y)
-      for (int z = -1; z <= 1; ++z) {
-        if (x == 0 && y == 0 && z == 0) continue;
-        const vec3 direction = glm::normalize(vec3(x, y, z));
-        // march out no further than the best so far, then bisect down to the surface
-        double inside = 0.0, outside = -1.0;
-        for (double t = stride; t < best; t += stride) {
-          if (free_at(direction, t)) {
-            outside = t;
-            break;
-          }
-          inside = t;
-        }
-        if (outside < 0.0) continue;
-        for (int i = 0; i < 40 && outside - inside > 1e-7; ++i) {
-          const double mid = 0.5 * (inside + outside);
-          (free_at(direction, mid) ? outside : inside) = mid;
-        }
+      for (int z = -1; z <= 1; ++z)
+        if (x != 0 || y != 0 || z != 0) directions[count++] = glm::normalize(vec3(x, y, z));
+
+  // march all directions out together, so the search stops at the first ring with a
+  // free placement instead of running some rays out to `far` (a hand a few millimetres
+  // in costs a few rings, not hundreds of checks); then bisect each free ray's step
+  // down to the surface and keep the nearest
+  constexpr double kPrecision = 1e-6;  // metres: far below any tolerance
+  double best = far;
+  vec3 best_direction(0.0);
+  for (double t = stride; t < far && best_direction == vec3(0.0); t += stride) {
+    for (const vec3& direction : directions) {
+      if (!free_at(direction, t)) continue;
+      double inside = t - stride, outside = t;
+      while (outside - inside > kPrecision) {
+        const double mid = 0.5 * (inside + outside);
+        (free_at(direction, mid) ? outside : inside) = mid;
+      }
+      if (outside < best) {
         best = outside;
         best_direction = direction;
       }
+    }
+  }
   if (best_direction == vec3(0.0)) return false;
   state.palm_position += best * best_direction;
   return true;
