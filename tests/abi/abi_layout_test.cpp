@@ -181,7 +181,65 @@
   X(frusta_object_state, linear_velocity, 64, 24)     \
   X(frusta_object_state, angular_velocity, 88, 24)    \
   X(frusta_object_state, reaction_force, 112, 24)     \
-  X(frusta_object_state, reaction_torque, 136, 24)
+  X(frusta_object_state, reaction_torque, 136, 24) \
+  X(frusta_device_id, index1, 0, 4) \
+  X(frusta_device_id, world0, 4, 2) \
+  X(frusta_device_id, generation, 6, 2) \
+  X(frusta_device_def, struct_size, 0, 4) \
+  X(frusta_device_def, hand, 4, 4) \
+  X(frusta_device_def, output_rate_hz, 8, 8) \
+  X(frusta_device_def, watchdog_s, 16, 8) \
+  X(frusta_device_def, engine_timeout_s, 24, 8) \
+  X(frusta_device_def, host_timeout_s, 32, 8) \
+  X(frusta_device_def, reconnect_interval_s, 40, 8) \
+  X(frusta_device_def, max_force_rate, 48, 8) \
+  X(frusta_device_def, max_torque_rate, 56, 8) \
+  X(frusta_device_def, max_finger_resistance, 64, 8) \
+  X(frusta_device_def, max_fingertip_force, 72, 8) \
+  X(frusta_device_def, max_joint_torque, 80, 8) \
+  X(frusta_device_def, curl_open, 88, 120) \
+  X(frusta_device_def, curl_closed, 208, 120) \
+  X(frusta_device_def, flexion_open, 328, 120) \
+  X(frusta_device_def, flexion_closed, 448, 120) \
+  X(frusta_device_def, splay_center, 568, 40) \
+  X(frusta_device_def, splay_span, 608, 40) \
+  X(frusta_device_def, abduction_range, 648, 40) \
+  X(frusta_device_def, brake_full_scale, 688, 8) \
+  X(frusta_device_def, brake_units, 696, 8) \
+  X(frusta_device_def, analog_max, 704, 8) \
+  X(frusta_device_def, internal_value, 712, 4) \
+  X(frusta_device_def, reserved0, 716, 4) \
+  X(frusta_device_status, struct_size, 0, 4) \
+  X(frusta_device_status, state, 4, 4) \
+  X(frusta_device_status, watchdog, 8, 4) \
+  X(frusta_device_status, outputs, 12, 4) \
+  X(frusta_device_status, fingers, 16, 4) \
+  X(frusta_device_status, has_palm_pose, 20, 4) \
+  X(frusta_device_status, protocol_version, 24, 4) \
+  X(frusta_device_status, recording_failed, 28, 4) \
+  X(frusta_device_status, frames_ok, 32, 8) \
+  X(frusta_device_status, frames_corrupt, 40, 8) \
+  X(frusta_device_status, frames_truncated, 48, 8) \
+  X(frusta_device_status, frames_out_of_range, 56, 8) \
+  X(frusta_device_status, samples_rejected, 64, 8) \
+  X(frusta_device_status, commands_sent, 72, 8) \
+  X(frusta_device_status, commands_dropped, 80, 8) \
+  X(frusta_device_status, reconnects, 88, 8) \
+  X(frusta_device_status, disconnects, 96, 8) \
+  X(frusta_device_status, watchdog_trips, 104, 8) \
+  X(frusta_device_status, input_rate_hz, 112, 8) \
+  X(frusta_device_status, output_rate_hz, 120, 8) \
+  X(frusta_device_status, last_sample_age_s, 128, 8) \
+  X(frusta_device_status, max_finger_resistance, 136, 8) \
+  X(frusta_device_status, max_fingertip_force, 144, 8) \
+  X(frusta_device_status, max_joint_torque, 152, 8) \
+  X(frusta_device_status, finger_resistance, 160, 40) \
+  X(frusta_device_status, fingertip_force, 200, 120) \
+  X(frusta_device_info, struct_size, 0, 4) \
+  X(frusta_device_info, kind, 4, 4) \
+  X(frusta_device_info, vendor_id, 8, 4) \
+  X(frusta_device_info, product_id, 12, 4) \
+  X(frusta_device_info, uri, 16, 256)
 
 // X(struct, sizeof, alignof)
 #define FRUSTA_ABI_STRUCTS(X)        \
@@ -203,7 +261,11 @@
   X(frusta_world_state, 112, 8)      \
   X(frusta_world_hand, 832, 8)       \
   X(frusta_world_contact, 152, 8)    \
-  X(frusta_object_state, 160, 8)
+  X(frusta_object_state, 160, 8) \
+  X(frusta_device_id, 8, 4) \
+  X(frusta_device_def, 720, 8) \
+  X(frusta_device_status, 320, 8) \
+  X(frusta_device_info, 272, 4)
 
 static_assert(FRUSTA_ABI_VERSION == 2,
               "the layout table below is ABI 2: update it and the C# mirror with the ABI");
@@ -225,7 +287,9 @@ FRUSTA_ABI_STRUCTS(FRUSTA_CHECK_STRUCT)
 // enums travel as int32_t (in structs) and as the return value
 static_assert(sizeof(frusta_result) == 4 && sizeof(frusta_hand_side) == 4 &&
                   sizeof(frusta_finger) == 4 && sizeof(frusta_feature) == 4 &&
-                  sizeof(frusta_constraint_form) == 4,
+                  sizeof(frusta_constraint_form) == 4 && sizeof(frusta_device_output) == 4 &&
+                  sizeof(frusta_device_state) == 4 && sizeof(frusta_watchdog_reason) == 4 &&
+                  sizeof(frusta_device_kind) == 4,
               "enums must be 32-bit");
 
 // ---------------------------------------------------------------- values
@@ -240,6 +304,15 @@ static_assert(FRUSTA_OK == 0 && FRUSTA_ERROR_NULL_POINTER == 1 && FRUSTA_ERROR_S
 static_assert(FRUSTA_HAND_RIGHT == 0 && FRUSTA_HAND_LEFT == 1);
 static_assert(FRUSTA_FINGER_THUMB == 0 && FRUSTA_FINGER_INDEX == 1 && FRUSTA_FINGER_MIDDLE == 2 &&
               FRUSTA_FINGER_RING == 3 && FRUSTA_FINGER_LITTLE == 4);
+static_assert(FRUSTA_DEVICE_OUTPUT_FINGER_RESISTANCE == 1 && FRUSTA_DEVICE_OUTPUT_FINGERTIP_FORCE == 2 &&
+              FRUSTA_DEVICE_OUTPUT_JOINT_TORQUE == 4);
+static_assert(FRUSTA_DEVICE_CONNECTED == 1 && FRUSTA_DEVICE_DISCONNECTED == 2 &&
+              FRUSTA_DEVICE_CLOSED == 3);
+static_assert(FRUSTA_WATCHDOG_NONE == 0 && FRUSTA_WATCHDOG_INPUT_STALLED == 1 &&
+              FRUSTA_WATCHDOG_DISCONNECTED == 2 && FRUSTA_WATCHDOG_ENGINE_STALLED == 3 &&
+              FRUSTA_WATCHDOG_HOST_STALLED == 4);
+static_assert(FRUSTA_DEVICE_KIND_SERIAL == 1 && FRUSTA_DEVICE_KIND_HID == 2 &&
+              FRUSTA_DEVICE_KIND_USB == 3);
 static_assert(FRUSTA_FEATURE_SIDE == 0 && FRUSTA_FEATURE_DISTAL == 1 &&
               FRUSTA_FEATURE_PROXIMAL == 2);
 static_assert(FRUSTA_CONSTRAINT_SQUARED == 0 && FRUSTA_CONSTRAINT_DISTANCE == 1);
@@ -331,6 +404,18 @@ FRUSTA_CHECK_SIGNATURE(frusta_world_get_contacts,
                                          int32_t*))
 FRUSTA_CHECK_SIGNATURE(frusta_world_get_object,
                        frusta_result (*)(frusta_world_id, frusta_object_id, frusta_object_state*))
+FRUSTA_CHECK_SIGNATURE(frusta_default_device_def, frusta_device_def (*)())
+FRUSTA_CHECK_SIGNATURE(frusta_enumerate_devices,
+                       frusta_result (*)(frusta_device_info*, int32_t, int32_t*))
+FRUSTA_CHECK_SIGNATURE(frusta_world_open_device,
+                       frusta_result (*)(frusta_world_id, const char*, const frusta_device_def*,
+                                         frusta_device_id*))
+FRUSTA_CHECK_SIGNATURE(frusta_device_close, frusta_result (*)(frusta_device_id))
+FRUSTA_CHECK_SIGNATURE(frusta_device_is_valid, int32_t (*)(frusta_device_id))
+FRUSTA_CHECK_SIGNATURE(frusta_device_get_status,
+                       frusta_result (*)(frusta_device_id, frusta_device_status*))
+FRUSTA_CHECK_SIGNATURE(frusta_device_set_palm_pose,
+                       frusta_result (*)(frusta_device_id, const frusta_pose*))
 #undef FRUSTA_CHECK_SIGNATURE
 
 namespace {
@@ -386,6 +471,7 @@ TEST(abiLayout, DefaultDefCarriesItsSize) {
   EXPECT_EQ(frusta_default_bake_def().struct_size, 56);
   EXPECT_EQ(frusta_default_world_def().struct_size, 128);
   EXPECT_EQ(frusta_default_object_def().struct_size, 224);
+  EXPECT_EQ(frusta_default_device_def().struct_size, 720);
 }
 
 // Bindings learn the native sizes at load from frusta_struct_size; it must know every

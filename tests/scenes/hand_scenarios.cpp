@@ -308,4 +308,16 @@ double deepest_penetration(const HandModel& model, const HandPose& pose,
   return deepest;
 }
 
+vec3 index_press_box_centre(const HandModel& model, double half, double gap) {
+  constexpr int kIndex = FRUSTA_FINGER_INDEX;
+  HandState curled = open_hand();
+  set_flexion(curled, kIndex, 0.01, 0.01, 0.01);  // which way the tip starts
+  HandPose open, bent;
+  forward_kinematics(model, open_hand(), open);
+  forward_kinematics(model, curled, bent);
+  const vec3 tip = open.fingers[kIndex].joint[3];
+  const vec3 toward = glm::normalize(bent.fingers[kIndex].joint[3] - tip);
+  return tip + toward * (model.fingers[kIndex].radius[3] + gap + half);
+}
+
 }  // namespace frusta::scenes

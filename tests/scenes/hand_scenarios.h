@@ -59,6 +59,11 @@ HandScenario ball_pinch(double pressed);
 // The deep grasp (all fingers closing 1.6 rad) around any ball-like tree of radius 4 cm.
 HandScenario ball_grasp(std::shared_ptr<const TreeFile> ball);
 
+// Where a box of half-size `half` (a cube) lies `gap` metres from the open index
+// fingertip of `model`, on the side a curling index moves to: a glove curling its index
+// presses into it, and the world brakes that finger alone (the device tests and bench).
+vec3 index_press_box_centre(const HandModel& model, double half, double gap);
+
 // Deepest penetration (metres, 0 when apart) of the hand at `pose` into any leaf of any
 // object: every leaf against every segment solid and palm sphere by the exact
 // distance, behind bound tests that are exact too.

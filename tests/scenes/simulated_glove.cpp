@@ -25,8 +25,12 @@ int64_t now_ns() {
 
 }  // namespace
 
-SimulatedGlove::SimulatedGlove(std::string path, double rate_hz, Firmware firmware)
-    : path_(std::move(path)), rate_hz_(rate_hz), firmware_(std::move(firmware)) {
+SimulatedGlove::SimulatedGlove(std::string path, double rate_hz, Firmware firmware,
+                               Listener listener)
+    : path_(std::move(path)),
+      rate_hz_(rate_hz),
+      firmware_(std::move(firmware)),
+      listener_(std::move(listener)) {
   plug_in();
 }
 
@@ -95,8 +99,10 @@ void SimulatedGlove::run() {
     if (ppoll(&p, 1, &wait, nullptr) <= 0) continue;
     const ssize_t n = (p.revents & POLLIN) ? read(master_, buffer, sizeof buffer) : -1;
     if (n > 0) {
+      Chunk chunk{now_ns(), std::string(buffer, static_cast<size_t>(n))};
+      if (listener_) listener_(chunk.bytes);
       std::lock_guard<std::mutex> lock(received_mutex_);
-      received_.push_back(Chunk{now_ns(), std::string(buffer, static_cast<size_t>(n))});
+      received_.push_back(std::move(chunk));
     } else {
       // nobody has the slave open (the engine closed it): nothing to read until the tick
       std::this_thread::sleep_for(std::chrono::nanoseconds(next - now));

@@ -21,9 +21,11 @@ class SimulatedGlove {
  public:
   // The next frame's bytes, from the glove thread (tick counts from 0 at each plug-in).
   using Firmware = std::function<std::string(int64_t tick)>;
+  // What the engine sent, as it arrives, on the glove thread (a firmware's input).
+  using Listener = std::function<void(const std::string& bytes)>;
 
   // Creates the pty and the symlink `path` to it (replacing what is there).
-  SimulatedGlove(std::string path, double rate_hz, Firmware firmware);
+  SimulatedGlove(std::string path, double rate_hz, Firmware firmware, Listener listener = nullptr);
   ~SimulatedGlove();
 
   const std::string& path() const { return path_; }
@@ -54,6 +56,7 @@ class SimulatedGlove {
   std::string path_;
   std::atomic<double> rate_hz_;
   Firmware firmware_;
+  Listener listener_;
   std::atomic<bool> sending_{true};
   int master_ = -1;
   std::mutex write_mutex_;  // the glove thread's frames and write_raw's bytes

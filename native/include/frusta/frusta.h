@@ -39,7 +39,7 @@
 /* ---------------------------------------------------------------- version */
 
 #define FRUSTA_VERSION_MAJOR 0
-#define FRUSTA_VERSION_MINOR 2
+#define FRUSTA_VERSION_MINOR 3
 #define FRUSTA_VERSION_PATCH 0
 /** major*1000000 + minor*1000 + patch; frusta_version() returns the library's. */
 #define FRUSTA_VERSION \
@@ -553,7 +553,8 @@ FRUSTA_API frusta_result frusta_world_add_hand(frusta_world_id world, const frus
 /** Set a hand's haptic input (the glove): palm pose and FRUSTA_HAND_JOINT_COUNT joint
  *  angles (radians, finger-major). The newest input wins; the next step uses it.
  *  Positions within 1e6 m, quaternion norm in [0.5, 2], |angle| <= 100 (beyond the
- *  limits is clamped). Lock-free and allocation-free. Thread: input. */
+ *  limits is clamped). Lock-free and allocation-free. FRUSTA_ERROR_WRONG_STATE on a
+ *  hand a glove drives (frusta_world_open_device). Thread: input. */
 FRUSTA_API frusta_result frusta_world_set_haptic(frusta_world_id world, int32_t hand,
                                                  const frusta_pose* palm, const double* angles,
                                                  int32_t count);
@@ -606,5 +607,158 @@ FRUSTA_API frusta_result frusta_world_get_contacts(frusta_world_id world, int32_
  *  added after the latched step. Thread: host. */
 FRUSTA_API frusta_result frusta_world_get_object(frusta_world_id world, frusta_object_id object,
                                                  frusta_object_state* out);
+
+/* ---------------------------------------------------------------- devices
+ * A force-feedback glove drives one hand of a world. It is opened by URI:
+ *   opengloves:PATH?baud=N       OpenGloves alpha encoding over serial (LucidGloves
+ *                                and its kin; USB serial or Bluetooth RFCOMM)
+ *   serial:PATH?baud=N           Frusta's binary profile over serial
+ *   hid:VID:PID[:SERIAL]         Frusta's binary profile over HID reports (hex ids)
+ *   replay:FILE?speed=1|max&loop=0|1   a recording, in real time or as fast as read
+ * and any of them takes &record=FILE to record its input stream for replay. baud is
+ * 115200 unless given. Each open glove has a thread of its own (none without one):
+ * it feeds the glove's samples to the hand as frusta_world_set_haptic would, and
+ * sends the glove its command at the output rate. Safety: the command is the world's
+ * device outputs cut to the glove's limits and rise rates, and drops to zero at once
+ * when no valid sample came for watchdog_s, the world has not stepped for
+ * engine_timeout_s, the host has not called frusta_world_read for host_timeout_s, or
+ * the glove disconnects; the glove is reopened every reconnect_interval_s and gets
+ * zeros until it speaks again. Protocols: native/src/devices/binary_profile.md and
+ * alpha_encoding.h. */
+
+/** Device handle. Opaque; pass by value; zero means null. */
+typedef struct frusta_device_id {
+  int32_t index1;      /* the hand it drives + 1; 0 is null */
+  uint16_t world0;     /* the owning world: slot + 1, and its generation's low byte */
+  uint16_t generation; /* bumped at each open on that hand */
+} frusta_device_id;
+
+/** What the glove's outputs are: bits of frusta_device_def.outputs and status. */
+typedef enum frusta_device_output {
+  FRUSTA_DEVICE_OUTPUT_FINGER_RESISTANCE = 1, /* a brake per finger */
+  FRUSTA_DEVICE_OUTPUT_FINGERTIP_FORCE = 2,   /* a force vector per fingertip, palm frame */
+  FRUSTA_DEVICE_OUTPUT_JOINT_TORQUE = 4       /* a torque per finger joint */
+} frusta_device_output;
+
+typedef enum frusta_device_state {
+  FRUSTA_DEVICE_CONNECTED = 1,
+  FRUSTA_DEVICE_DISCONNECTED = 2, /* retrying every reconnect_interval_s */
+  FRUSTA_DEVICE_CLOSED = 3
+} frusta_device_state;
+
+/** Why the glove's output is held at zero now (frusta_device_status.watchdog). */
+typedef enum frusta_watchdog_reason {
+  FRUSTA_WATCHDOG_NONE = 0,
+  FRUSTA_WATCHDOG_INPUT_STALLED = 1,  /* no valid sample for watchdog_s (or none yet) */
+  FRUSTA_WATCHDOG_DISCONNECTED = 2,
+  FRUSTA_WATCHDOG_ENGINE_STALLED = 3, /* the world has not stepped for engine_timeout_s */
+  FRUSTA_WATCHDOG_HOST_STALLED = 4    /* no frusta_world_read for host_timeout_s */
+} frusta_watchdog_reason;
+
+/** How a glove is opened; from frusta_default_device_def(). */
+typedef struct frusta_device_def {
+  int32_t struct_size;           /* sizeof(frusta_device_def) */
+  int32_t hand;                  /* the world's hand it drives; default 0 */
+  double output_rate_hz;         /* commands per second; 0: the world's rate, never above
+                                    what the glove takes (100 for OpenGloves); default 0 */
+  double watchdog_s;             /* 0.001..10; default 0.05 */
+  double engine_timeout_s;       /* 0.001..10; default 0.05 */
+  double host_timeout_s;         /* 0 (not watched) or 0.001..60; default 0.25 */
+  double reconnect_interval_s;   /* 0.001..60; default 0.2 */
+  double max_force_rate;         /* newtons per second a resistance or fingertip force
+                                    may rise (falls are immediate); default 500 */
+  double max_torque_rate;        /* newton-metres per second; default 25 */
+  double max_finger_resistance;  /* newtons; the glove's own limit if lower; default 10 */
+  double max_fingertip_force;    /* newtons; default 10 */
+  double max_joint_torque;       /* newton-metres; default 0.5 */
+  /* OpenGloves calibration: raw units (0..analog_max) to radians, newtons to brake
+     units. Per finger (thumb first) and flexion joint (first, second, third): */
+  double curl_open[FRUSTA_FINGER_COUNT][3];      /* raw reading, finger straight; default 0 */
+  double curl_closed[FRUSTA_FINGER_COUNT][3];    /* raw reading in a fist; default 4095 */
+  double flexion_open[FRUSTA_FINGER_COUNT][3];   /* radians at curl_open; default 0 */
+  double flexion_closed[FRUSTA_FINGER_COUNT][3]; /* radians at curl_closed; default a fist */
+  double splay_center[FRUSTA_FINGER_COUNT];      /* raw splay of a straight finger; 2048 */
+  double splay_span[FRUSTA_FINGER_COUNT];        /* raw splay for abduction_range; 2047 */
+  double abduction_range[FRUSTA_FINGER_COUNT];   /* radians; default 15 degrees */
+  double brake_full_scale;       /* newtons that set a brake to brake_units; default 10 */
+  double brake_units;            /* the glove's full brake; default 1000 */
+  double analog_max;             /* the largest raw reading; default 4095 */
+  int32_t internal_value;        /* set by frusta_default_device_def; do not touch */
+  int32_t reserved0;
+} frusta_device_def;
+
+/** A glove's state and counters (frusta_device_get_status). */
+typedef struct frusta_device_status {
+  int32_t struct_size;           /* sizeof(frusta_device_status); set it before the call */
+  int32_t state;                 /* frusta_device_state */
+  int32_t watchdog;              /* frusta_watchdog_reason */
+  int32_t outputs;               /* frusta_device_output bits the glove renders */
+  int32_t fingers;               /* the glove's fingers, thumb first */
+  int32_t has_palm_pose;         /* 1: the glove reports the palm (a tracker) */
+  int32_t protocol_version;      /* announced by the glove (0: none) */
+  int32_t recording_failed;      /* 1: the disk refused the recording; the glove runs on */
+  int64_t frames_ok;             /* samples taken */
+  int64_t frames_corrupt;        /* bad checksum or syntax: dropped */
+  int64_t frames_truncated;      /* cut short: dropped */
+  int64_t frames_out_of_range;   /* well formed, impossible values: dropped */
+  int64_t samples_rejected;      /* decoded, but NaN or beyond any joint: dropped */
+  int64_t commands_sent;
+  int64_t commands_dropped;      /* the glove did not drain its input in time */
+  int64_t reconnects;
+  int64_t disconnects;
+  int64_t watchdog_trips;        /* times the output was forced to zero */
+  double input_rate_hz;          /* measured */
+  double output_rate_hz;         /* in use */
+  double last_sample_age_s;      /* -1: none yet */
+  double max_finger_resistance;  /* newtons: the limits in use */
+  double max_fingertip_force;    /* newtons */
+  double max_joint_torque;       /* newton-metres */
+  double finger_resistance[FRUSTA_FINGER_COUNT];  /* newtons, the last command's */
+  double fingertip_force[FRUSTA_FINGER_COUNT][3]; /* newtons, palm frame */
+} frusta_device_status;
+
+typedef enum frusta_device_kind {
+  FRUSTA_DEVICE_KIND_SERIAL = 1, /* a serial port: open as opengloves: or serial: */
+  FRUSTA_DEVICE_KIND_HID = 2,    /* a vendor-defined HID device: hid: */
+  FRUSTA_DEVICE_KIND_USB = 3     /* any USB device (for its ids; not opened directly) */
+} frusta_device_kind;
+
+/** One device frusta_enumerate_devices found. */
+typedef struct frusta_device_info {
+  int32_t struct_size;           /* sizeof(frusta_device_info) */
+  int32_t kind;                  /* frusta_device_kind */
+  int32_t vendor_id;             /* USB/HID ids; -1 when unknown */
+  int32_t product_id;
+  uint8_t uri[256];              /* UTF-8, NUL-terminated: a URI to open (serial ports
+                                    as serial:PATH; use opengloves:PATH for those) */
+} frusta_device_info;
+
+/** Defaults for frusta_world_open_device. Thread: any. */
+FRUSTA_API frusta_device_def frusta_default_device_def(void);
+/** List serial ports, HID devices and USB devices present now (up to capacity;
+ *  *out_count is how many there are). out may be null with capacity 0. Thread: any
+ *  (it reads /dev, hidapi and libusb; slow: not for a frame loop). */
+FRUSTA_API frusta_result frusta_enumerate_devices(frusta_device_info* out, int32_t capacity,
+                                                  int32_t* out_count);
+/** Open the glove at uri to drive def->hand of the world, and start its thread. A
+ *  glove absent at open is an error (FRUSTA_ERROR_IO, naming it), not a retry; one
+ *  glove per hand (FRUSTA_ERROR_WRONG_STATE). While open, frusta_world_set_haptic on
+ *  that hand is refused: its palm comes from frusta_device_set_palm_pose unless the
+ *  glove reports one. Thread: host. */
+FRUSTA_API frusta_result frusta_world_open_device(frusta_world_id world, const char* uri,
+                                                  const frusta_device_def* def,
+                                                  frusta_device_id* out_device);
+/** Send the glove a zero command, stop its thread, close it. The id turns stale.
+ *  frusta_destroy_world closes a world's gloves first. Thread: host. */
+FRUSTA_API frusta_result frusta_device_close(frusta_device_id device);
+/** 1 if the id names an open glove, else 0. Thread: any. */
+FRUSTA_API int32_t frusta_device_is_valid(frusta_device_id device);
+/** The newest status (lock-free). Thread: host (one thread). */
+FRUSTA_API frusta_result frusta_device_get_status(frusta_device_id device,
+                                                  frusta_device_status* out);
+/** The palm pose (metres, tracking frame) for a glove without a tracker: the next
+ *  samples carry it. Lock-free. Thread: any one thread per device. */
+FRUSTA_API frusta_result frusta_device_set_palm_pose(frusta_device_id device,
+                                                     const frusta_pose* palm);
 
 #endif /* FRUSTA_FRUSTA_H */

@@ -60,7 +60,9 @@ constexpr NamedSize kStructSizes[] = {
     FRUSTA_NAMED_SIZE(frusta_object_id),     FRUSTA_NAMED_SIZE(frusta_world_def),
     FRUSTA_NAMED_SIZE(frusta_object_def),    FRUSTA_NAMED_SIZE(frusta_world_state),
     FRUSTA_NAMED_SIZE(frusta_world_hand),    FRUSTA_NAMED_SIZE(frusta_world_contact),
-    FRUSTA_NAMED_SIZE(frusta_object_state),
+    FRUSTA_NAMED_SIZE(frusta_object_state),    FRUSTA_NAMED_SIZE(frusta_device_id),
+    FRUSTA_NAMED_SIZE(frusta_device_def),      FRUSTA_NAMED_SIZE(frusta_device_status),
+    FRUSTA_NAMED_SIZE(frusta_device_info),
 };
 #undef FRUSTA_NAMED_SIZE
 

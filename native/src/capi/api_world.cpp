@@ -71,13 +71,6 @@ frusta_result read_object_def(const frusta_object_def& in, ObjectDef* out) {
   return FRUSTA_OK;
 }
 
-// An object id's world0: the world's slot in the low byte and its generation's low byte
-// above, so the ids of a destroyed world stay stale in the world that reuses its slot
-// (until 256 worlds have come and gone in that slot)
-uint16_t world_tag(frusta_world_id world) {
-  return static_cast<uint16_t>((world.index1 & 0xFF) | ((world.generation & 0xFF) << 8));
-}
-
 // The object slot of id in this world (checked against the host's view: live now).
 frusta_result object_handle(frusta_world_id world, frusta_object_id id, ObjectHandle* out) {
   if (id.index1 == 0) return fail(FRUSTA_ERROR_NULL_ID, "object id is null (zero-initialised)");
@@ -198,6 +191,12 @@ FRUSTA_API frusta_result frusta_world_set_haptic(frusta_world_id world, int32_t 
   if (frusta_result r = read_pose(palm, "palm", &pose)) return r;
   HandState state;
   if (frusta_result r = read_joint_angles(angles, count, "angles", &state.angles)) return r;
+  if (hand >= 0 && hand < kMaxGloves &&
+      w->glove_driven[static_cast<size_t>(hand)].load(std::memory_order_acquire))
+    return fail(FRUSTA_ERROR_WRONG_STATE,
+                "hand %d is driven by a glove: set its palm with frusta_device_set_palm_pose, "
+                "or close the glove first",
+                hand);
   state.palm_position = pose.position;
   state.palm_rotation = pose.rotation;
   return w->world.set_haptic(hand, state);

@@ -67,6 +67,28 @@ frusta_result WorldRegistry::find(frusta_world_id id, WorldObject** out) const {
   return find(id, true, out);
 }
 
+uint16_t world_tag(frusta_world_id world) {
+  return static_cast<uint16_t>((world.index1 & 0xff) | ((world.generation & 0xff) << 8));
+}
+
+frusta_result WorldRegistry::find_by_tag(uint16_t tag, const char* what, WorldObject** out,
+                                         frusta_world_id* id) const {
+  const int32_t index1 = tag & 0xff;
+  if (index1 >= 1 && index1 <= kMaxWorlds) {
+    const Slot& slot = slots_[static_cast<size_t>(index1 - 1)];
+    const uint16_t generation = slot.generation.load(std::memory_order_acquire);
+    WorldObject* world = slot.world.load(std::memory_order_acquire);
+    if (world && (generation & 0xff) == (tag >> 8)) {
+      *out = world;
+      *id = frusta_world_id{index1, 0, generation};
+      return FRUSTA_OK;
+    }
+  }
+  if (what == nullptr) return FRUSTA_ERROR_STALE_ID;
+  return fail(FRUSTA_ERROR_STALE_ID, "%s id's world (world0=%u) is destroyed or never existed",
+              what, tag);
+}
+
 bool WorldRegistry::is_valid(frusta_world_id id) const {
   WorldObject* world = nullptr;
   return find(id, false, &world) == FRUSTA_OK;

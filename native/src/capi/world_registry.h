@@ -9,16 +9,29 @@
 #include <cstdint>
 #include <mutex>
 
+#include "devices/device_link.h"
 #include "frusta/frusta.h"
 #include "runtime/world.h"
 
 namespace frusta {
 
+// Gloves drive the first kMaxGloves hands of a world, one each.
+constexpr int32_t kMaxGloves = 16;
+
 struct WorldObject {
   explicit WorldObject(const WorldDef& def) : world(def) {}
   World world;
   const WorldSnapshot* latched = nullptr;  // by frusta_world_read; host thread only
+  // declared after the world, so they close (and zero their gloves) before it goes
+  std::array<std::unique_ptr<DeviceLink>, kMaxGloves> gloves;  // host thread only
+  std::array<uint16_t, kMaxGloves> glove_generation{};        // host thread only
+  // read by frusta_world_set_haptic from any thread: that hand's input is a glove's
+  std::array<std::atomic<bool>, kMaxGloves> glove_driven{};
 };
+
+// An object's or a glove's world0: the world's slot + 1 in the low byte and its
+// generation's low byte above.
+uint16_t world_tag(frusta_world_id world);
 
 class WorldRegistry {
  public:
@@ -30,6 +43,10 @@ class WorldRegistry {
   // Lock-free: the world of id in *out, or an error (null or stale id).
   frusta_result find(frusta_world_id id, WorldObject** out) const;
   bool is_valid(frusta_world_id id) const;
+  // Lock-free: the world a world_tag() names, with its full id, or a stale-id error
+  // naming `what` (e.g. "device"; null: no message is set).
+  frusta_result find_by_tag(uint16_t tag, const char* what, WorldObject** out,
+                            frusta_world_id* id) const;
 
  private:
   struct Slot {

@@ -234,10 +234,14 @@ void DeviceLink::on_sample(const DeviceSample& sample) {
   world_.set_haptic(def_.hand, haptic_);  // the hand index was checked at open
   ++working_.frames_ok;
   if (last_sample_ns_ != 0) {
-    // a running mean over about 16 samples: steady enough to read, quick to follow
-    const double rate = 1e9 / static_cast<double>(std::max<int64_t>(now_ns_ - last_sample_ns_, 1));
-    working_.input_rate_hz =
-        working_.input_rate_hz == 0.0 ? rate : working_.input_rate_hz + (rate - working_.input_rate_hz) / 16.0;
+    // a running mean of the interval over about 16 samples (not of the rate: samples
+    // read in one burst have intervals near zero, which average out, and rates near
+    // infinity, which do not)
+    const double interval = static_cast<double>(now_ns_ - last_sample_ns_) / 1e9;
+    mean_sample_interval_s_ = mean_sample_interval_s_ == 0.0
+                                  ? interval
+                                  : mean_sample_interval_s_ + (interval - mean_sample_interval_s_) / 16.0;
+    if (mean_sample_interval_s_ > 0.0) working_.input_rate_hz = 1.0 / mean_sample_interval_s_;
   }
   last_sample_ns_ = now_ns_;
 }

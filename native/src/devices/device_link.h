@@ -122,6 +122,7 @@ class DeviceLink final : private ProtocolSink {
   std::vector<uint8_t> out_;
   int64_t now_ns_ = 0;         // of the current turn
   int64_t last_sample_ns_ = 0;  // 0: none since (re)connect
+  double mean_sample_interval_s_ = 0.0;
   int64_t last_command_ns_ = 0;
   int64_t next_heartbeat_ns_ = 0;
   int64_t record_start_ns_ = 0;

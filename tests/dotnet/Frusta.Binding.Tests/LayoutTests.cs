@@ -174,7 +174,7 @@ namespace Frusta.Binding.Tests
             FrustaLibrary.EnsureCompatible();
             Assert.Equal(FrustaConstants.AbiVersion, FrustaLibrary.AbiVersion);
             Assert.Equal(FrustaConstants.Version, FrustaLibrary.Version);
-            Assert.Equal("0.2.0", FrustaLibrary.VersionString);
+            Assert.Equal("0.3.0", FrustaLibrary.VersionString);
             Assert.Equal("FRUSTA_ERROR_STALE_ID", FrustaLibrary.GetResultName(FrustaResult.StaleId));
             Assert.Equal(0, FrustaLibrary.GetNativeStructSize("frusta_no_such_struct"));
         }

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "collecting_sink.h"
 #include "devices/glove_calibration.h"
 #include "devices/opengloves_protocol.h"
 
@@ -17,17 +18,6 @@ namespace frusta {
 namespace {
 
 constexpr double kMax = 4095.0;
-
-struct Collect final : ProtocolSink {
-  std::vector<DeviceSample> samples;
-  int corrupt = 0, truncated = 0, out_of_range = 0, heartbeats = 0;
-  void on_sample(const DeviceSample& s) override { samples.push_back(s); }
-  void on_capabilities(const DeviceCapabilities&) override {}
-  void on_fault(FrameFault f) override {
-    (f == FrameFault::kCorrupt ? corrupt : f == FrameFault::kTruncated ? truncated : out_of_range)++;
-  }
-  void on_heartbeat() override { ++heartbeats; }
-};
 
 void feed(OpenGlovesProtocol& p, const std::string& bytes, Collect* sink) {
   p.feed(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size(), sink);

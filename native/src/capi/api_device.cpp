@@ -1,0 +1,286 @@
+// SPDX-License-Identifier: MIT
+// C ABI: force-feedback gloves, each driving one hand of a world on a thread of its own.
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+#include "capi/convert.h"
+#include "capi/world_registry.h"
+#include "core/error.h"
+#include "core/validate.h"
+#include "devices/device_enumeration.h"
+#include "devices/device_factory.h"
+#include "devices/device_uri.h"
+#include "frusta/frusta.h"
+
+using namespace frusta;
+
+namespace {
+
+constexpr int32_t kFlexions = 3;
+
+template <class Array, class Field>
+void copy_fingers(const Array& from, Field& to) {
+  for (int32_t f = 0; f < FRUSTA_FINGER_COUNT; ++f) to[f] = from[f];
+}
+
+frusta_result in_range(double value, double low, double high, const char* field) {
+  if (!std::isfinite(value))
+    return fail(FRUSTA_ERROR_NOT_FINITE, "frusta_device_def.%s is %g", field, value);
+  if (value < low || value > high)
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "frusta_device_def.%s is %g, not in [%g, %g]", field,
+                value, low, high);
+  return FRUSTA_OK;
+}
+
+frusta_result read_device_def(const frusta_device_def& in, DeviceLinkDef* link,
+                              GloveCalibration* calibration) {
+  DeviceLinkDef d;
+  d.hand = in.hand;
+  d.output_rate_hz = in.output_rate_hz;
+  d.watchdog_s = in.watchdog_s;
+  d.engine_timeout_s = in.engine_timeout_s;
+  d.host_timeout_s = in.host_timeout_s;
+  d.reconnect_interval_s = in.reconnect_interval_s;
+  d.rates.max_force_rate = in.max_force_rate;
+  d.rates.max_torque_rate = in.max_torque_rate;
+  d.max_finger_resistance = in.max_finger_resistance;
+  d.max_fingertip_force = in.max_fingertip_force;
+  d.max_joint_torque = in.max_joint_torque;
+  if (frusta_result r = in_range(d.output_rate_hz, 0.0, 100000.0, "output_rate_hz")) return r;
+  if (frusta_result r = in_range(d.watchdog_s, 0.001, 10.0, "watchdog_s")) return r;
+  if (frusta_result r = in_range(d.engine_timeout_s, 0.001, 10.0, "engine_timeout_s")) return r;
+  if (frusta_result r = in_range(d.host_timeout_s, 0.0, 60.0, "host_timeout_s")) return r;
+  if (frusta_result r = in_range(d.reconnect_interval_s, 0.001, 60.0, "reconnect_interval_s")) return r;
+  if (frusta_result r = in_range(d.rates.max_force_rate, 0.0, 1e9, "max_force_rate")) return r;
+  if (frusta_result r = in_range(d.rates.max_torque_rate, 0.0, 1e9, "max_torque_rate")) return r;
+  if (frusta_result r = in_range(d.max_finger_resistance, 0.0, 1e9, "max_finger_resistance")) return r;
+  if (frusta_result r = in_range(d.max_fingertip_force, 0.0, 1e9, "max_fingertip_force")) return r;
+  if (frusta_result r = in_range(d.max_joint_torque, 0.0, 1e9, "max_joint_torque")) return r;
+
+  GloveCalibration c;
+  for (int32_t f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
+    for (int32_t j = 0; j < kFlexions; ++j) {
+      c.curl_open[f][j] = in.curl_open[f][j];
+      c.curl_closed[f][j] = in.curl_closed[f][j];
+      c.flexion_open[f][j] = in.flexion_open[f][j];
+      c.flexion_closed[f][j] = in.flexion_closed[f][j];
+    }
+  }
+  copy_fingers(in.splay_center, c.splay_center);
+  copy_fingers(in.splay_span, c.splay_span);
+  copy_fingers(in.abduction_range, c.abduction_range);
+  c.brake_full_scale = in.brake_full_scale;
+  c.brake_units = in.brake_units;
+  c.analog_max = in.analog_max;
+  if (frusta_result r = check_glove_calibration(c)) return r;
+  *link = d;
+  *calibration = c;
+  return FRUSTA_OK;
+}
+
+// The world and glove of a device id, or why not.
+frusta_result find_device(frusta_device_id id, WorldObject** world, DeviceLink** link,
+                          int32_t* hand) {
+  if (id.index1 == 0) return fail(FRUSTA_ERROR_NULL_ID, "device id is null (zero-initialised)");
+  frusta_world_id world_id;
+  if (frusta_result r = world_registry().find_by_tag(id.world0, "device", world, &world_id)) return r;
+  const int32_t h = id.index1 - 1;
+  if (h < 0 || h >= kMaxGloves || !(*world)->gloves[static_cast<size_t>(h)] ||
+      (*world)->glove_generation[static_cast<size_t>(h)] != id.generation)
+    return fail(FRUSTA_ERROR_STALE_ID,
+                "device id {index1=%d, generation=%u} names no open glove: it was closed",
+                id.index1, id.generation);
+  *link = (*world)->gloves[static_cast<size_t>(h)].get();
+  *hand = h;
+  return FRUSTA_OK;
+}
+
+void store_uri(const std::string& uri, uint8_t* out, size_t capacity) {
+  const size_t n = std::min(uri.size(), capacity - 1);
+  std::memcpy(out, uri.data(), n);
+  out[n] = 0;
+}
+
+}  // namespace
+
+FRUSTA_API frusta_device_def frusta_default_device_def(void) {
+  const DeviceLinkDef d;
+  const GloveCalibration c = default_glove_calibration();
+  frusta_device_def def;
+  std::memset(&def, 0, sizeof def);
+  def.struct_size = sizeof(frusta_device_def);
+  def.hand = d.hand;
+  def.output_rate_hz = d.output_rate_hz;
+  def.watchdog_s = d.watchdog_s;
+  def.engine_timeout_s = d.engine_timeout_s;
+  def.host_timeout_s = d.host_timeout_s;
+  def.reconnect_interval_s = d.reconnect_interval_s;
+  def.max_force_rate = d.rates.max_force_rate;
+  def.max_torque_rate = d.rates.max_torque_rate;
+  def.max_finger_resistance = d.max_finger_resistance;
+  def.max_fingertip_force = d.max_fingertip_force;
+  def.max_joint_torque = d.max_joint_torque;
+  for (int32_t f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
+    for (int32_t j = 0; j < kFlexions; ++j) {
+      def.curl_open[f][j] = c.curl_open[f][j];
+      def.curl_closed[f][j] = c.curl_closed[f][j];
+      def.flexion_open[f][j] = c.flexion_open[f][j];
+      def.flexion_closed[f][j] = c.flexion_closed[f][j];
+    }
+  }
+  copy_fingers(c.splay_center, def.splay_center);
+  copy_fingers(c.splay_span, def.splay_span);
+  copy_fingers(c.abduction_range, def.abduction_range);
+  def.brake_full_scale = c.brake_full_scale;
+  def.brake_units = c.brake_units;
+  def.analog_max = c.analog_max;
+  def.internal_value = kDefCookie;
+  return def;
+}
+
+FRUSTA_API frusta_result frusta_enumerate_devices(frusta_device_info* out, int32_t capacity,
+                                                  int32_t* out_count) {
+  if (frusta_result r = check_pointer(out_count, "out_count")) return r;
+  if (capacity < 0 || (capacity > 0 && out == nullptr))
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "capacity is %d with out %s", capacity,
+                out ? "set" : "null");
+  for (int32_t i = 0; i < capacity; ++i) {
+    if (frusta_result r = check_struct_size(out[i].struct_size, static_cast<int32_t>(sizeof(frusta_device_info)),
+                                            "frusta_device_info"))
+      return r;
+  }
+  return guarded("frusta_enumerate_devices", [&] {
+    std::vector<DeviceInfo> found;
+    enumerate_devices(&found);
+    for (int32_t i = 0; i < capacity && i < static_cast<int32_t>(found.size()); ++i) {
+      const DeviceInfo& d = found[static_cast<size_t>(i)];
+      frusta_device_info& o = out[i];
+      o.kind = d.kind;
+      o.vendor_id = d.vendor_id;
+      o.product_id = d.product_id;
+      store_uri(d.uri, o.uri, sizeof o.uri);
+    }
+    *out_count = static_cast<int32_t>(found.size());
+    return FRUSTA_OK;
+  });
+}
+
+FRUSTA_API frusta_result frusta_world_open_device(frusta_world_id world, const char* uri,
+                                                  const frusta_device_def* def,
+                                                  frusta_device_id* out_device) {
+  WorldObject* w = nullptr;
+  if (frusta_result r = world_registry().find(world, &w)) return r;
+  if (frusta_result r = check_pointer(uri, "uri")) return r;
+  if (frusta_result r = check_def_input(def, "frusta_device_def")) return r;
+  if (frusta_result r = check_pointer(out_device, "out_device")) return r;
+  DeviceLinkDef link_def;
+  GloveCalibration calibration;
+  if (frusta_result r = read_device_def(*def, &link_def, &calibration)) return r;
+  const int32_t hand = link_def.hand;
+  if (hand < 0 || hand >= w->world.hand_count() || hand >= kMaxGloves)
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE,
+                "frusta_device_def.hand is %d; the world has %d hands (gloves drive the first %d)",
+                hand, w->world.hand_count(), kMaxGloves);
+  if (w->gloves[static_cast<size_t>(hand)])
+    return fail(FRUSTA_ERROR_WRONG_STATE, "hand %d already has a glove: close it first", hand);
+  DeviceAddress address;
+  if (frusta_result r = parse_device_uri(uri, &address)) return r;
+  return guarded("frusta_world_open_device", [&] {
+    Glove glove;
+    if (frusta_result r = make_glove(address, calibration, &glove)) return r;
+    link_def.record_path = address.record_path;
+    link_def.protocol_name = glove.protocol_name;
+    auto link = std::make_unique<DeviceLink>(w->world, link_def, std::move(glove.stream),
+                                             std::move(glove.protocol));
+    if (frusta_result r = link->open()) return r;
+    uint16_t& generation = w->glove_generation[static_cast<size_t>(hand)];
+    generation = static_cast<uint16_t>(generation == UINT16_MAX ? 1 : generation + 1);
+    w->gloves[static_cast<size_t>(hand)] = std::move(link);
+    w->glove_driven[static_cast<size_t>(hand)].store(true, std::memory_order_release);
+    *out_device = frusta_device_id{hand + 1, world_tag(world), generation};
+    return FRUSTA_OK;
+  });
+}
+
+FRUSTA_API frusta_result frusta_device_close(frusta_device_id device) {
+  WorldObject* w = nullptr;
+  DeviceLink* link = nullptr;
+  int32_t hand = -1;
+  if (frusta_result r = find_device(device, &w, &link, &hand)) return r;
+  return guarded("frusta_device_close", [&] {
+    w->gloves[static_cast<size_t>(hand)].reset();  // zeroes the glove, joins its thread
+    w->glove_driven[static_cast<size_t>(hand)].store(false, std::memory_order_release);
+    return FRUSTA_OK;
+  });
+}
+
+FRUSTA_API int32_t frusta_device_is_valid(frusta_device_id device) {
+  if (device.index1 == 0) return 0;
+  WorldObject* w = nullptr;
+  frusta_world_id world;
+  if (world_registry().find_by_tag(device.world0, nullptr, &w, &world) != FRUSTA_OK) return 0;
+  const int32_t h = device.index1 - 1;
+  return h >= 0 && h < kMaxGloves && w->gloves[static_cast<size_t>(h)] &&
+                 w->glove_generation[static_cast<size_t>(h)] == device.generation
+             ? 1
+             : 0;
+}
+
+FRUSTA_API frusta_result frusta_device_get_status(frusta_device_id device,
+                                                  frusta_device_status* out) {
+  WorldObject* w = nullptr;
+  DeviceLink* link = nullptr;
+  int32_t hand = -1;
+  if (frusta_result r = find_device(device, &w, &link, &hand)) return r;
+  if (frusta_result r = check_pointer(out, "out")) return r;
+  if (frusta_result r = check_struct_size(out->struct_size, static_cast<int32_t>(sizeof(frusta_device_status)),
+                                          "frusta_device_status"))
+    return r;
+  const DeviceLinkStatus& s = link->status();
+  frusta_device_status o;
+  std::memset(&o, 0, sizeof o);
+  o.struct_size = sizeof o;
+  o.state = static_cast<int32_t>(s.state);
+  o.watchdog = static_cast<int32_t>(s.watchdog);
+  o.outputs = static_cast<int32_t>(s.capabilities.outputs);
+  o.fingers = s.capabilities.fingers;
+  o.has_palm_pose = s.capabilities.has_palm_pose ? 1 : 0;
+  o.protocol_version = static_cast<int32_t>(s.capabilities.protocol_version);
+  o.recording_failed = s.recording_failed ? 1 : 0;
+  o.frames_ok = s.frames_ok;
+  o.frames_corrupt = s.frames_corrupt;
+  o.frames_truncated = s.frames_truncated;
+  o.frames_out_of_range = s.frames_out_of_range;
+  o.samples_rejected = s.samples_rejected;
+  o.commands_sent = s.commands_sent;
+  o.commands_dropped = s.commands_dropped;
+  o.reconnects = s.reconnects;
+  o.disconnects = s.disconnects;
+  o.watchdog_trips = s.watchdog_trips;
+  o.input_rate_hz = s.input_rate_hz;
+  o.output_rate_hz = s.output_rate_hz;
+  o.last_sample_age_s = s.last_sample_age_s;
+  o.max_finger_resistance = s.capabilities.max_finger_resistance;
+  o.max_fingertip_force = s.capabilities.max_fingertip_force;
+  o.max_joint_torque = s.capabilities.max_joint_torque;
+  for (int32_t f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
+    o.finger_resistance[f] = s.last_command.finger_resistance[f];
+    store(s.last_command.fingertip_force[f], o.fingertip_force[f]);
+  }
+  *out = o;
+  return FRUSTA_OK;
+}
+
+FRUSTA_API frusta_result frusta_device_set_palm_pose(frusta_device_id device,
+                                                     const frusta_pose* palm) {
+  WorldObject* w = nullptr;
+  DeviceLink* link = nullptr;
+  int32_t hand = -1;
+  if (frusta_result r = find_device(device, &w, &link, &hand)) return r;
+  Pose pose;
+  if (frusta_result r = read_pose(palm, "palm", &pose)) return r;
+  link->set_palm_pose(pose.position, pose.rotation);
+  return FRUSTA_OK;
+}

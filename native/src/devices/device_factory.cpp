@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: MIT
+#include "devices/device_factory.h"
+
+#include "core/error.h"
+#include "devices/frusta_protocol.h"
+#include "devices/hid_stream.h"
+#include "devices/opengloves_protocol.h"
+#include "devices/recording.h"
+#include "devices/serial_stream.h"
+
+namespace frusta {
+
+namespace {
+
+constexpr char kOpenGloves[] = "opengloves";
+constexpr char kFrusta[] = "frusta";
+
+frusta_result make_protocol(const std::string& name, const GloveCalibration& calibration,
+                            Glove* out) {
+  if (name == kOpenGloves) {
+    out->protocol = std::make_unique<OpenGlovesProtocol>(calibration);
+  } else if (name == kFrusta) {
+    out->protocol = std::make_unique<FrustaProtocol>();
+  } else {
+    return fail(FRUSTA_ERROR_FILE_FORMAT, "unknown glove protocol \"%s\" (expected %s or %s)",
+                name.c_str(), kOpenGloves, kFrusta);
+  }
+  out->protocol_name = name;
+  return FRUSTA_OK;
+}
+
+}  // namespace
+
+frusta_result make_glove(const DeviceAddress& address, const GloveCalibration& calibration,
+                         Glove* out) {
+  Glove glove;
+  switch (address.kind) {
+    case DeviceKind::kOpenGloves:
+      glove.stream = std::make_unique<SerialStream>(address.path, address.baud);
+      if (frusta_result r = make_protocol(kOpenGloves, calibration, &glove)) return r;
+      break;
+    case DeviceKind::kSerial:
+      glove.stream = std::make_unique<SerialStream>(address.path, address.baud);
+      if (frusta_result r = make_protocol(kFrusta, calibration, &glove)) return r;
+      break;
+    case DeviceKind::kHid:
+      glove.stream = std::make_unique<HidStream>(address.vendor_id, address.product_id,
+                                                 address.serial_number);
+      if (frusta_result r = make_protocol(kFrusta, calibration, &glove)) return r;
+      break;
+    case DeviceKind::kReplay: {
+      std::string name;
+      if (frusta_result r = read_recording_protocol(address.path, &name)) return r;
+      if (frusta_result r = make_protocol(name, calibration, &glove)) return r;
+      glove.stream = std::make_unique<ReplayStream>(address.path, address.real_time, address.loop);
+      break;
+    }
+  }
+  *out = std::move(glove);
+  return FRUSTA_OK;
+}
+
+}  // namespace frusta

@@ -1,0 +1,207 @@
+// SPDX-License-Identifier: MIT
+// tools/bench devices: end-to-end latency of a glove, over a real serial line (a
+// pseudo-terminal), from a sample written on the glove's side to the brake command
+// that answers it read back there. A simulated glove alternately curls its index into
+// a box and lets go; each change's latency is the time from the write of the first
+// sample carrying it to the first command showing it (brake on, brake off). The path
+// measured is the whole one: the device thread's read and decode, the world's 1 kHz
+// step (which plays inputs one period late, to smooth a glove's jitter), the device
+// feed, the output guard and the next command at the output rate.
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <functional>
+#include <memory>
+#include <string>
+#include <thread>
+#include <unistd.h>
+#include <vector>
+
+#include "devices/alpha_encoding.h"
+#include "devices/device_link.h"
+#include "devices/frusta_protocol.h"
+#include "devices/opengloves_protocol.h"
+#include "devices/serial_stream.h"
+#include "hand/hand_model.h"
+#include "runtime/step_histogram.h"
+#include "scenes/binary_glove.h"
+#include "scenes/hand_scenarios.h"
+#include "scenes/simulated_glove.h"
+
+namespace frusta {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using scenes::SimulatedGlove;
+
+int64_t now_ns() {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now().time_since_epoch()).count();
+}
+
+// The glove's side of one protocol: its sample for a curl, what it does with the
+// engine's bytes as they come, and whether a command line (or frame) brakes the index.
+struct GloveSide {
+  const char* name;
+  double glove_rate_hz;
+  int32_t baud;
+  std::function<std::unique_ptr<GloveProtocol>()> protocol;
+  std::function<std::string(int curl, int64_t tick)> sample;
+  SimulatedGlove::Listener listener;
+  // the brake state of every complete command in `bytes` (consumed), after reset()
+  std::function<void()> reset;
+  std::function<void(std::string* bytes, std::vector<int>* brakes)> commands;
+};
+
+GloveSide opengloves_side() {
+  GloveSide side;
+  side.name = "opengloves";
+  side.glove_rate_hz = 1000.0;  // a glove sampling as fast as the engine steps
+  side.baud = 115200;
+  side.protocol = [] { return std::make_unique<OpenGlovesProtocol>(default_glove_calibration()); };
+  side.sample = [](int curl, int64_t) { return "A0B" + std::to_string(curl) + "C0D0E0\n"; };
+  side.reset = [] {};
+  side.commands = [](std::string* bytes, std::vector<int>* brakes) {
+    size_t end;
+    while ((end = bytes->find('\n')) != std::string::npos) {
+      std::array<int32_t, 5> units{};
+      if (decode_alpha_brakes(bytes->substr(0, end), &units)) brakes->push_back(units[1] > 0);
+      bytes->erase(0, end + 1);
+    }
+  };
+  return side;
+}
+
+// Our binary profile: a 1 kHz glove that takes a command every engine step.
+GloveSide binary_side() {
+  struct State final : binary_profile::HostSink {
+    explicit State(const DeviceCapabilities& caps) : glove(caps), firmware(glove.firmware()) {}
+    scenes::BinaryGlove glove;
+    SimulatedGlove::Firmware firmware;
+    binary_profile::GloveSideDecoder decoder;  // the measuring thread's
+    std::vector<int>* brakes = nullptr;
+    void on_hello(const binary_profile::Hello&) override {}
+    void on_command(const binary_profile::Command& c) override {
+      brakes->push_back(c.command.finger_resistance[1] > 0.0);
+    }
+    void on_heartbeat() override {}
+    void on_fault(FrameFault) override {}
+  };
+  DeviceCapabilities caps;
+  caps.input_rate_hz = 1000.0;
+  caps.output_rate_hz = 1000.0;
+  auto state = std::make_shared<State>(caps);
+  const GloveCalibration calibration = default_glove_calibration();
+  GloveSide side;
+  side.name = "frusta-binary";
+  side.glove_rate_hz = 1000.0;
+  side.baud = 921600;
+  side.protocol = [] { return std::make_unique<FrustaProtocol>(1000, 0); };
+  side.sample = [state, calibration](int curl, int64_t tick) {
+    for (int j = 0; j < 3; ++j)  // the curl as the OpenGloves calibration reads it
+      state->glove.set_angle(FRUSTA_JOINTS_PER_FINGER + 1 + j, calibration.flexion_closed[1][j] * curl / 4095);
+    return state->firmware(tick);
+  };
+  side.listener = state->glove.listener();
+  side.reset = [state] { state->decoder.reset(); };
+  side.commands = [state](std::string* bytes, std::vector<int>* brakes) {
+    state->brakes = brakes;
+    state->decoder.feed(reinterpret_cast<const uint8_t*>(bytes->data()), bytes->size(), state.get());
+    bytes->clear();
+  };
+  return side;
+}
+
+struct Latency {
+  StepHistogram press, release;
+  int64_t missed = 0;
+  double output_rate_hz = 0.0;
+};
+
+Latency measure(const GloveSide& side, int transitions) {
+  const HandModel model = make_hand_model(frusta_default_hand_def());
+  World world(WorldDef{});
+  int32_t hand = -1;
+  world.add_hand(model, &hand);
+  ObjectDef box;
+  box.pose.position = scenes::index_press_box_centre(model, 0.015, 0.002);
+  ObjectHandle handle;
+  world.add_object(scenes::baked_box(vec3(0.03), 0.0005), box, &handle);
+  world.start();
+
+  std::atomic<int> curl{0};
+  std::atomic<int64_t> changed_ns{0};  // when the first sample with the new curl went out
+  std::atomic<int> sent_curl{0};
+  const std::string path = "/tmp/frusta-bench-" + std::to_string(getpid()) + "-glove";
+  SimulatedGlove glove(path, side.glove_rate_hz, [&](int64_t tick) {
+    const int c = curl.load();
+    if (c != sent_curl.exchange(c)) changed_ns = now_ns();
+    return side.sample(c, tick);
+  }, side.listener);
+  DeviceLinkDef def;
+  def.host_timeout_s = 0.0;  // this host does not read snapshots
+  def.rates.max_force_rate = 1e9;  // the first command after contact brakes at once
+  DeviceLink link(world, def, std::make_unique<SerialStream>(path, side.baud), side.protocol());
+  link.open();
+
+  Latency result;
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  for (int t = 0; t < 2 * transitions; ++t) {
+    const bool pressing = t % 2 == 0;
+    glove.clear_received();
+    changed_ns = 0;
+    curl = pressing ? 2500 : 0;
+    // the first command after the change that shows it
+    std::string bytes;
+    std::vector<int> brakes;
+    bool seen = false;
+    const auto deadline = Clock::now() + std::chrono::milliseconds(500);
+    while (!seen && Clock::now() < deadline) {
+      std::this_thread::sleep_for(std::chrono::microseconds(200));
+      const int64_t since = changed_ns.load();
+      if (since == 0) continue;
+      side.reset();
+      for (const SimulatedGlove::Chunk& chunk : glove.chunks()) {
+        if (seen) break;
+        bytes += chunk.bytes;
+        brakes.clear();
+        side.commands(&bytes, &brakes);
+        for (int brake : brakes) {
+          if (chunk.time_ns >= since && (brake == 1) == pressing) {
+            (pressing ? result.press : result.release).record(static_cast<double>(chunk.time_ns - since) / 1e3);
+            seen = true;
+            break;
+          }
+        }
+      }
+      bytes.clear();
+    }
+    if (!seen) ++result.missed;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));  // rest in the new state
+  }
+  result.output_rate_hz = link.status().output_rate_hz;
+  link.close();
+  world.stop();
+  return result;
+}
+
+}  // namespace
+}  // namespace frusta
+
+int main() {
+  using namespace frusta;
+  constexpr int kTransitions = 100;
+  std::printf("{\n\"suite\": \"devices\",\n\"transitions\": %d,\n\"latency_us\": [\n", kTransitions);
+  const GloveSide sides[] = {opengloves_side(), binary_side()};
+  for (size_t i = 0; i < std::size(sides); ++i) {
+    const Latency l = measure(sides[i], kTransitions);
+    std::printf("  {\"protocol\": \"%s\", \"glove_rate_hz\": %.0f, \"output_rate_hz\": %.0f, "
+                "\"press_p50\": %.0f, \"press_p99\": %.0f, \"release_p50\": %.0f, "
+                "\"release_p99\": %.0f, \"missed\": %lld}%s\n",
+                sides[i].name, sides[i].glove_rate_hz, l.output_rate_hz, l.press.percentile(0.5),
+                l.press.percentile(0.99), l.release.percentile(0.5), l.release.percentile(0.99),
+                static_cast<long long>(l.missed), i + 1 < std::size(sides) ? "," : "");
+  }
+  std::printf("]\n}\n");
+  return 0;
+}

@@ -1,0 +1,243 @@
+// SPDX-License-Identifier: MIT
+// The gloves' C ABI: defs and URIs checked with named fields, a glove on a real pseudo-
+// terminal opened by URI, its status, its palm, its hand closed to other input, ids
+// turning stale, a world taking its gloves with it, enumeration, record and replay.
+#include <dirent.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <functional>
+#include <thread>
+#include <vector>
+
+#include "capi_fixture.h"
+#include "scenes/simulated_glove.h"
+
+namespace frusta::testing {
+namespace {
+
+using scenes::SimulatedGlove;
+
+std::string temp_path(const std::string& name) {
+  return "/tmp/frusta-" + std::to_string(getpid()) + "-capi-" + name;
+}
+
+int thread_count() {
+  int count = 0;
+  if (DIR* tasks = opendir("/proc/self/task")) {
+    while (dirent* entry = readdir(tasks)) count += entry->d_name[0] != '.';
+    closedir(tasks);
+  }
+  return count;
+}
+
+class DeviceApiTest : public CapiTest {
+ protected:
+  void SetUp() override {
+    CapiTest::SetUp();
+    const frusta_world_def def = frusta_default_world_def();
+    ASSERT_EQ(frusta_create_world(&def, &world_), FRUSTA_OK) << frusta_last_error();
+    const frusta_hand_def hand = frusta_default_hand_def();
+    int32_t index = -1;
+    ASSERT_EQ(frusta_world_add_hand(world_, &hand, &index), FRUSTA_OK);
+  }
+  void TearDown() override {
+    if (frusta_world_is_valid(world_)) {
+      EXPECT_EQ(frusta_destroy_world(world_), FRUSTA_OK);
+    }
+    CapiTest::TearDown();
+  }
+
+  // the host's loop: step and read until done() or the time is up
+  bool run_until(const std::function<bool()>& done, double seconds) {
+    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    frusta_world_state state{};
+    state.struct_size = sizeof state;
+    while (std::chrono::steady_clock::now() < end) {
+      EXPECT_EQ(frusta_world_step(world_), FRUSTA_OK);
+      EXPECT_EQ(frusta_world_read(world_, &state), FRUSTA_OK);
+      if (done()) return true;
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    return false;
+  }
+
+  frusta_device_status status(frusta_device_id device) {
+    frusta_device_status s{};
+    s.struct_size = sizeof s;
+    EXPECT_EQ(frusta_device_get_status(device, &s), FRUSTA_OK) << frusta_last_error();
+    return s;
+  }
+
+  frusta_world_id world_{};
+};
+
+SimulatedGlove::Firmware lucidgloves(int index_curl) {
+  return [index_curl](int64_t) { return "A0B" + std::to_string(index_curl) + "C0D0E0\n"; };
+}
+
+TEST_F(DeviceApiTest, DefaultDefIsAFistGloveWithSafeTimeouts) {
+  const frusta_device_def def = frusta_default_device_def();
+  EXPECT_EQ(def.struct_size, static_cast<int32_t>(sizeof(frusta_device_def)));
+  EXPECT_EQ(def.hand, 0);
+  EXPECT_DOUBLE_EQ(def.watchdog_s, 0.05);
+  EXPECT_DOUBLE_EQ(def.host_timeout_s, 0.25);
+  EXPECT_DOUBLE_EQ(def.curl_closed[1][0], 4095.0);
+  EXPECT_NEAR(def.flexion_closed[1][1], 90 * std::acos(-1.0) / 180, 1e-12);
+  EXPECT_DOUBLE_EQ(def.brake_units, 1000.0);
+}
+
+TEST_F(DeviceApiTest, BadDefsAndUrisAreRefusedByName) {
+  frusta_device_id device{};
+  frusta_device_def def = frusta_default_device_def();
+  def.watchdog_s = 0.0;
+  ExpectError(frusta_world_open_device(world_, "opengloves:/dev/null", &def, &device),
+              FRUSTA_ERROR_OUT_OF_RANGE, "watchdog_s");
+  def = frusta_default_device_def();
+  def.curl_closed[2][1] = def.curl_open[2][1];
+  ExpectError(frusta_world_open_device(world_, "opengloves:/dev/null", &def, &device),
+              FRUSTA_ERROR_OUT_OF_RANGE, "fist");
+  def = frusta_default_device_def();
+  def.hand = 1;
+  ExpectError(frusta_world_open_device(world_, "opengloves:/dev/null", &def, &device),
+              FRUSTA_ERROR_OUT_OF_RANGE, "hand is 1");
+  def = frusta_default_device_def();
+  def.struct_size -= 8;
+  ExpectError(frusta_world_open_device(world_, "opengloves:/dev/null", &def, &device),
+              FRUSTA_ERROR_STRUCT_SIZE, "frusta_device_def");
+  def = frusta_default_device_def();
+  ExpectError(frusta_world_open_device(world_, "bluetooth:glove", &def, &device),
+              FRUSTA_ERROR_OUT_OF_RANGE, "unknown scheme");
+  ExpectError(frusta_world_open_device(world_, "opengloves:/dev/ttyACM0?baud=12345", &def, &device),
+              FRUSTA_ERROR_OUT_OF_RANGE, "baud");
+  ExpectError(frusta_world_open_device(world_, "hid:12g4:1", &def, &device),
+              FRUSTA_ERROR_OUT_OF_RANGE, "hexadecimal");
+  ExpectError(frusta_world_open_device(world_, "replay:x?speed=3", &def, &device),
+              FRUSTA_ERROR_OUT_OF_RANGE, "speed");
+  ExpectError(frusta_world_open_device(world_, "opengloves:/nonexistent/ttyACM9", &def, &device),
+              FRUSTA_ERROR_IO, "/nonexistent/ttyACM9");
+  ExpectError(frusta_world_open_device(world_, "opengloves:/dev/null", &def, &device),
+              FRUSTA_ERROR_IO, "not a serial port");
+  ExpectError(frusta_world_open_device(world_, "replay:/nonexistent.rec", &def, &device),
+              FRUSTA_ERROR_IO, "/nonexistent.rec");
+  ExpectError(frusta_world_open_device(world_, nullptr, &def, &device), FRUSTA_ERROR_NULL_POINTER, "uri");
+  EXPECT_TRUE(FRUSTA_IS_NULL(device)) << "a failed open writes no id";
+  EXPECT_EQ(frusta_device_is_valid(device), 0);
+}
+
+TEST_F(DeviceApiTest, AGloveByUriDrivesItsHandAndReportsItsStatus) {
+  const int base = thread_count();
+  SimulatedGlove glove(temp_path("glove"), 100.0, lucidgloves(2000));
+  const frusta_device_def def = frusta_default_device_def();
+  frusta_device_id device{};
+  const std::string uri = "opengloves:" + glove.path() + "?baud=115200";
+  ASSERT_EQ(frusta_world_open_device(world_, uri.c_str(), &def, &device), FRUSTA_OK) << frusta_last_error();
+  EXPECT_EQ(frusta_device_is_valid(device), 1);
+  EXPECT_EQ(thread_count(), base + 2) << "the simulated glove's thread and the device's";
+
+  const frusta_pose palm{{0.1, 0.2, 0.3}, {0.0, 0.0, 0.0, 1.0}};
+  ASSERT_EQ(frusta_device_set_palm_pose(device, &palm), FRUSTA_OK);
+  ASSERT_TRUE(run_until([&] { return status(device).frames_ok > 10; }, 3.0));
+  frusta_world_hand hand{};
+  hand.struct_size = sizeof hand;
+  ASSERT_EQ(frusta_world_get_hand(world_, 0, &hand), FRUSTA_OK);
+  EXPECT_DOUBLE_EQ(hand.haptic_palm.position[1], 0.2);
+  EXPECT_NEAR(hand.haptic_angles[1 * 4 + 1], def.flexion_closed[1][0] * 2000 / 4095, 1e-9);
+
+  const frusta_device_status s = status(device);
+  EXPECT_EQ(s.state, FRUSTA_DEVICE_CONNECTED);
+  EXPECT_EQ(s.outputs, FRUSTA_DEVICE_OUTPUT_FINGER_RESISTANCE);
+  EXPECT_EQ(s.fingers, 5);
+  EXPECT_DOUBLE_EQ(s.output_rate_hz, 100.0);
+  EXPECT_DOUBLE_EQ(s.max_finger_resistance, 10.0);
+  EXPECT_GT(s.commands_sent, 0);
+  EXPECT_GE(s.last_sample_age_s, 0.0);
+
+  // the hand is the glove's now
+  const double angles[FRUSTA_HAND_JOINT_COUNT] = {};
+  ExpectError(frusta_world_set_haptic(world_, 0, &palm, angles, FRUSTA_HAND_JOINT_COUNT),
+              FRUSTA_ERROR_WRONG_STATE, "driven by a glove");
+  frusta_device_id second{};
+  ExpectError(frusta_world_open_device(world_, uri.c_str(), &def, &second), FRUSTA_ERROR_WRONG_STATE,
+              "already has a glove");
+  frusta_device_status small{};
+  small.struct_size = 16;
+  ExpectError(frusta_device_get_status(device, &small), FRUSTA_ERROR_STRUCT_SIZE, "frusta_device_status");
+
+  ASSERT_EQ(frusta_device_close(device), FRUSTA_OK);
+  EXPECT_EQ(frusta_device_is_valid(device), 0);
+  EXPECT_EQ(thread_count(), base + 1);
+  ExpectError(frusta_device_close(device), FRUSTA_ERROR_STALE_ID, "closed");
+  ExpectError(frusta_device_get_status(device, &small), FRUSTA_ERROR_STALE_ID, "closed");
+  EXPECT_EQ(frusta_world_set_haptic(world_, 0, &palm, angles, FRUSTA_HAND_JOINT_COUNT), FRUSTA_OK);
+  // the glove got released as the last thing it heard
+  const std::string heard = glove.received();
+  EXPECT_EQ(heard.substr(heard.rfind('\n', heard.size() - 2) + 1), "A0B0C0D0E0\n");
+
+  // opened again, the same hand has a new id; destroying the world closes the glove
+  ASSERT_EQ(frusta_world_open_device(world_, uri.c_str(), &def, &second), FRUSTA_OK);
+  EXPECT_NE(second.generation, device.generation);
+  ASSERT_EQ(frusta_destroy_world(world_), FRUSTA_OK);
+  EXPECT_EQ(frusta_device_is_valid(second), 0);
+  EXPECT_EQ(thread_count(), base + 1);
+  ExpectError(frusta_device_get_status(second, &small), FRUSTA_ERROR_STALE_ID, "device");
+}
+
+TEST_F(DeviceApiTest, ARecordedGloveReplaysThroughItsUri) {
+  const std::string recording = temp_path("recording");
+  const frusta_device_def def = frusta_default_device_def();
+  double live_angle = 0.0;
+  int64_t live_frames = 0;
+  {
+    SimulatedGlove glove(temp_path("glove"), 200.0, [](int64_t t) {
+      return "A0B" + std::to_string(std::min<int64_t>(t * 30, 4000)) + "C0D0E0\n";
+    });
+    frusta_device_id device{};
+    const std::string uri = "opengloves:" + glove.path() + "?record=" + recording;
+    ASSERT_EQ(frusta_world_open_device(world_, uri.c_str(), &def, &device), FRUSTA_OK) << frusta_last_error();
+    ASSERT_TRUE(run_until([&] { return status(device).frames_ok >= 100; }, 3.0));
+    glove.set_sending(false);
+    run_until([] { return false; }, 0.05);
+    live_frames = status(device).frames_ok;
+    ASSERT_EQ(frusta_device_close(device), FRUSTA_OK);
+    frusta_world_hand hand{};
+    hand.struct_size = sizeof hand;
+    ASSERT_EQ(frusta_world_get_hand(world_, 0, &hand), FRUSTA_OK);
+    live_angle = hand.haptic_angles[1 * 4 + 1];
+  }
+  frusta_device_id replay{};
+  const std::string uri = "replay:" + recording + "?speed=max";
+  ASSERT_EQ(frusta_world_open_device(world_, uri.c_str(), &def, &replay), FRUSTA_OK) << frusta_last_error();
+  ASSERT_TRUE(run_until([&] { return status(replay).state == FRUSTA_DEVICE_DISCONNECTED; }, 3.0));
+  run_until([] { return false; }, 0.01);
+  EXPECT_EQ(status(replay).frames_ok, live_frames);
+  frusta_world_hand hand{};
+  hand.struct_size = sizeof hand;
+  ASSERT_EQ(frusta_world_get_hand(world_, 0, &hand), FRUSTA_OK);
+  EXPECT_DOUBLE_EQ(hand.haptic_angles[1 * 4 + 1], live_angle);
+  std::remove(recording.c_str());
+}
+
+TEST_F(DeviceApiTest, EnumerationListsWhatIsThereAndReportsTheCount) {
+  int32_t count = -1;
+  ASSERT_EQ(frusta_enumerate_devices(nullptr, 0, &count), FRUSTA_OK) << frusta_last_error();
+  EXPECT_GE(count, 0);
+  std::vector<frusta_device_info> infos(static_cast<size_t>(count) + 1);
+  for (frusta_device_info& info : infos) info.struct_size = sizeof info;
+  int32_t again = -1;
+  ASSERT_EQ(frusta_enumerate_devices(infos.data(), static_cast<int32_t>(infos.size()), &again), FRUSTA_OK);
+  EXPECT_EQ(again, count);
+  for (int32_t i = 0; i < count; ++i) {
+    const std::string uri(reinterpret_cast<const char*>(infos[static_cast<size_t>(i)].uri));
+    std::printf("  %s\n", uri.c_str());
+    EXPECT_TRUE(uri.rfind("serial:", 0) == 0 || uri.rfind("hid:", 0) == 0 || uri.rfind("usb:", 0) == 0) << uri;
+  }
+  infos[0].struct_size = 4;
+  ExpectError(frusta_enumerate_devices(infos.data(), 1, &again), FRUSTA_ERROR_STRUCT_SIZE, "frusta_device_info");
+}
+
+}  // namespace
+}  // namespace frusta::testing
