@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: MIT
-// frusta-make-recording OUT.csv: writes the demo's scripted glove recording, built
-// from the same hand scenarios the tests check (the pinch that carries a marble, the
-// fingertip slide, the tile pinch), so the demo plays motions known to work. The
-// recording is bundled (samples/data/demo_glove.csv); a test checks it is what this
-// program writes.
+// frusta-make-recording OUT.csv [OUT.frrec]: writes the demo's scripted glove
+// recording, built from the same hand scenarios the tests check (the pinch that
+// carries a marble, the fingertip slide, the tile pinch), so the demo plays motions
+// known to work. The recording is bundled (samples/data/demo_glove.csv); a test checks
+// it is what this program writes. With OUT.frrec it also writes the glove part as a
+// device recording (native/src/devices/recording.h): a tracked glove speaking our
+// binary profile at 100 Hz, to open as replay:OUT.frrec (the Unity sample does).
 //
 // Format, one record per line (# starts a comment):
 //   object,NAME,SAMPLE,x,y,z,qx,qy,qz,qw,DYNAMIC,mass,friction,normal_damping,
@@ -16,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include "devices/frusta_protocol.h"
+#include "devices/recording.h"
 #include "scenes/hand_scenarios.h"
 
 namespace {
@@ -56,8 +60,8 @@ void write_pose(FILE* out, const frusta::RigidPose& pose) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
-    std::fprintf(stderr, "usage: frusta-make-recording OUT.csv\n");
+  if (argc != 2 && argc != 3) {
+    std::fprintf(stderr, "usage: frusta-make-recording OUT.csv [OUT.frrec]\n");
     return 2;
   }
   // three stations, 25 cm apart along y, each a scenario at the palm's origin moved there
@@ -126,15 +130,39 @@ int main(int argc, char** argv) {
   std::fprintf(out, "event,2.000,dynamic,marble,1\n");  // the host lets go once it is pinched
   std::fprintf(out, "event,4.800,remove,marble,0\n");   // fallen out of reach: the host drops it
 
+  frusta::Recorder glove;
+  std::vector<uint8_t> bytes;
+  if (argc == 3) {
+    if (glove.open(argv[2], "frusta") != FRUSTA_OK) {
+      std::fprintf(stderr, "%s\n", frusta_last_error());
+      return 1;
+    }
+    // the glove's answer to the host's HELLO: 100 Hz, a tracker, brakes
+    frusta::DeviceCapabilities caps;
+    caps.has_palm_pose = true;
+    frusta::binary_profile::encode_caps(caps, &bytes);
+    glove.write(0, bytes.data(), bytes.size());
+  }
   const double end = keys.back().time + 0.5;
   for (int i = 0; i <= static_cast<int>(end * kFrameRate); ++i) {
     const double t = i / kFrameRate;
     const HandState s = at_time(keys, t);
+    if (argc == 3) {
+      frusta::DeviceSample sample;
+      sample.angles = s.angles;
+      sample.has_palm_pose = true;
+      sample.palm_position = s.palm_position;
+      sample.palm_rotation = s.palm_rotation;
+      sample.device_time_us = static_cast<int64_t>(i * 1e6 / kFrameRate);
+      bytes.clear();
+      frusta::binary_profile::encode_sample(sample, static_cast<uint16_t>(i), &bytes);
+      glove.write(static_cast<int64_t>(i * 1e9 / kFrameRate), bytes.data(), bytes.size());
+    }
     std::fprintf(out, "frame,%.3f,%.6f,%.6f,%.6f,%.9f,%.9f,%.9f,%.9f", t, s.palm_position.x,
                  s.palm_position.y, s.palm_position.z, s.palm_rotation.x, s.palm_rotation.y,
                  s.palm_rotation.z, s.palm_rotation.w);
     for (double a : s.angles) std::fprintf(out, ",%.6f", a);
     std::fprintf(out, "\n");
   }
-  return std::fclose(out) == 0 ? 0 : 1;
+  return std::fclose(out) == 0 && !glove.failed() ? 0 : 1;
 }
