@@ -14,7 +14,7 @@ SimulatedGlove::Firmware BinaryGlove::firmware() {
     if (caps_due_) binary_profile::encode_caps(capabilities_, &out);
     caps_due_ = false;
     DeviceSample sample = sample_;
-    sample.device_time_us = static_cast<int64_t>(tick * 1e6 / capabilities_.input_rate_hz);
+    sample.device_time_us = static_cast<int64_t>(static_cast<double>(tick) * 1e6 / capabilities_.input_rate_hz);
     binary_profile::encode_sample(sample, sequence_++, &out);
     ++samples_sent_;
     return std::string(out.begin(), out.end());

@@ -22,7 +22,9 @@ TEST(usbWatch, ListsTheBusInOrder) {
     EXPECT_GT(devices[i].bus, 0);
     EXPECT_GE(devices[i].vendor_id, 0);
     EXPECT_LE(devices[i].vendor_id, 0xFFFF);
-    if (i > 0) EXPECT_TRUE(devices[i - 1].bus < devices[i].bus || devices[i - 1].address < devices[i].address);
+    if (i > 0) {
+      EXPECT_TRUE(devices[i - 1].bus < devices[i].bus || devices[i - 1].address < devices[i].address);
+    }
   }
   std::vector<UsbDeviceInfo> again;
   ASSERT_EQ(watch.enumerate(&again), FRUSTA_OK);
