@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The header's enums as int-backed C# enums (32-bit, as the ABI test freezes them) and
 // its counts as constants.
+using System;
+
 namespace Frusta.Binding
 {
     /// <summary>What a native call returned (<c>frusta_result</c>). Every failure also leaves
@@ -86,6 +88,60 @@ namespace Frusta.Binding
         Distance = 1,
     }
 
+    /// <summary>What a glove's outputs are (<c>frusta_device_output</c>): bits of
+    /// <see cref="FrustaDeviceStatus.Outputs"/>, which a glove announces.</summary>
+    [Flags]
+    public enum FrustaDeviceOutput
+    {
+        /// <summary>No outputs (a glove that only senses).</summary>
+        None = 0,
+        /// <summary>A brake per finger.</summary>
+        FingerResistance = 1,
+        /// <summary>A force vector per fingertip, palm frame.</summary>
+        FingertipForce = 2,
+        /// <summary>A torque per finger joint.</summary>
+        JointTorque = 4,
+    }
+
+    /// <summary>Whether a glove is connected (<c>frusta_device_state</c>).</summary>
+    public enum FrustaDeviceState
+    {
+        /// <summary>The glove is open and its stream is up.</summary>
+        Connected = 1,
+        /// <summary>The stream went away; the library reopens it every
+        /// <see cref="FrustaDeviceDef.ReconnectIntervalS"/> (a replay that ended stays here).</summary>
+        Disconnected = 2,
+        /// <summary>The glove was closed.</summary>
+        Closed = 3,
+    }
+
+    /// <summary>Why a glove's output is held at zero now (<c>frusta_watchdog_reason</c>).</summary>
+    public enum FrustaWatchdogReason
+    {
+        /// <summary>Not held: the glove renders the world's outputs.</summary>
+        None = 0,
+        /// <summary>No valid sample for <see cref="FrustaDeviceDef.WatchdogS"/> (or none yet).</summary>
+        InputStalled = 1,
+        /// <summary>The glove is disconnected.</summary>
+        Disconnected = 2,
+        /// <summary>The world has not stepped for <see cref="FrustaDeviceDef.EngineTimeoutS"/>.</summary>
+        EngineStalled = 3,
+        /// <summary>The host has not read the world (<see cref="World.Read"/>) for
+        /// <see cref="FrustaDeviceDef.HostTimeoutS"/>.</summary>
+        HostStalled = 4,
+    }
+
+    /// <summary>What kind of device <see cref="Device.Enumerate()"/> found (<c>frusta_device_kind</c>).</summary>
+    public enum FrustaDeviceKind
+    {
+        /// <summary>A serial port: open it as <c>opengloves:PATH</c> or <c>serial:PATH</c>.</summary>
+        Serial = 1,
+        /// <summary>A vendor-defined HID device: <c>hid:VID:PID</c>.</summary>
+        Hid = 2,
+        /// <summary>Any USB device (for its ids; not opened directly).</summary>
+        Usb = 3,
+    }
+
     /// <summary>The header's counts (<c>FRUSTA_*_COUNT</c> and friends).</summary>
     public static class FrustaConstants
     {
@@ -93,7 +149,7 @@ namespace Frusta.Binding
         public const int AbiVersion = 2;
         /// <summary>The library version this binding was written for (<c>FRUSTA_VERSION</c>,
         /// major*1000000 + minor*1000 + patch).</summary>
-        public const int Version = 2000;
+        public const int Version = 3000;
         /// <summary>Fingers per hand (5).</summary>
         public const int FingerCount = 5;
         /// <summary>Segments per finger (3).</summary>
@@ -110,5 +166,9 @@ namespace Frusta.Binding
         public const int PalmBody = HandSegmentCount;
         /// <summary>Doubles in one point Jacobian: 3 rows x (4 joints + 6 palm DOF) = 30.</summary>
         public const int PointJacobianLength = 3 * (JointsPerFinger + PalmDof);
+        /// <summary>Flexion joints per finger a glove calibration maps (3): first, second, third.</summary>
+        public const int FlexionJointsPerFinger = 3;
+        /// <summary>Bytes of <see cref="FrustaDeviceInfo.Uri"/> in UTF-8, its NUL included (256).</summary>
+        public const int DeviceUriCapacity = 256;
     }
 }

@@ -51,6 +51,10 @@ namespace Frusta.Binding
             new Mirror("frusta_world_hand", typeof(FrustaWorldHand), sizeof(FrustaWorldHand)),
             new Mirror("frusta_world_contact", typeof(FrustaWorldContact), sizeof(FrustaWorldContact)),
             new Mirror("frusta_object_state", typeof(FrustaObjectState), sizeof(FrustaObjectState)),
+            new Mirror("frusta_device_id", typeof(FrustaDeviceId), sizeof(FrustaDeviceId)),
+            new Mirror("frusta_device_def", typeof(FrustaDeviceDef), sizeof(FrustaDeviceDef)),
+            new Mirror("frusta_device_status", typeof(FrustaDeviceStatus), sizeof(FrustaDeviceStatus)),
+            new Mirror("frusta_device_info", typeof(FrustaDeviceInfo), sizeof(FrustaDeviceInfo)),
         };
 
         static readonly object Gate = new object();

@@ -65,6 +65,45 @@ namespace Frusta.Binding
         }
     }
 
+    internal sealed class DeviceHandle : SafeHandle
+    {
+        internal FrustaDeviceId Id;
+        // the owning world's handle: a glove closes only while its world is alive
+        internal WorldHandle World;
+        internal DeviceHandle() : base(IntPtr.Zero, true) { }
+        public override bool IsInvalid => handle == IntPtr.Zero;
+        internal void Own(WorldHandle world, FrustaDeviceId id)
+        {
+            World = world;
+            Id = id;
+            SetHandle((IntPtr)1);
+        }
+        // zeroes the glove's output and joins its thread. A disposed world closed its gloves
+        // itself (frusta_destroy_world does), so there is nothing left to close; holding the
+        // world's count keeps another thread from destroying it during the close
+        protected override bool ReleaseHandle()
+        {
+            bool added = false;
+            try
+            {
+                World.DangerousAddRef(ref added);
+            }
+            catch (ObjectDisposedException)
+            {
+                return true;
+            }
+            try
+            {
+                Native.frusta_device_close(Id);
+            }
+            finally
+            {
+                if (added) World.DangerousRelease();
+            }
+            return true;
+        }
+    }
+
     /// <summary>Holds a handle's reference count for one native call (a struct: no garbage).</summary>
     internal struct HandleUse : IDisposable
     {
@@ -84,6 +123,49 @@ namespace Frusta.Binding
             if (!added) return;
             added = false;
             handle.DangerousRelease();
+        }
+    }
+
+    /// <summary>Holds a glove's and its world's reference counts for one native call (a struct: no
+    /// garbage). The world's count keeps another thread from destroying the world, and with it the
+    /// glove, during the call.</summary>
+    internal struct DeviceUse : IDisposable
+    {
+        readonly DeviceHandle device;
+        bool deviceAdded, worldAdded;
+
+        /// <summary>Throws ObjectDisposedException once the Device was disposed.</summary>
+        internal DeviceUse(DeviceHandle device)
+        {
+            this.device = device;
+            deviceAdded = false;
+            worldAdded = false;
+            device.DangerousAddRef(ref deviceAdded);
+            try
+            {
+                device.World.DangerousAddRef(ref worldAdded);
+            }
+            catch (ObjectDisposedException)
+            {
+                // the world was disposed: it closed its gloves, the id is stale
+            }
+        }
+
+        /// <summary>false once the glove's world was disposed: do not call native then.</summary>
+        internal bool WorldAlive => worldAdded;
+
+        public void Dispose()
+        {
+            if (worldAdded)
+            {
+                worldAdded = false;
+                device.World.DangerousRelease();
+            }
+            if (deviceAdded)
+            {
+                deviceAdded = false;
+                device.DangerousRelease();
+            }
         }
     }
 }

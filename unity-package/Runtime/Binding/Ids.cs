@@ -221,4 +221,57 @@ namespace Frusta.Binding
         public override string ToString() => $"{{{Index1}, {World0}, {Generation}}}";
     }
 
+    /// <summary>
+    /// A force-feedback glove (<see cref="Device"/>) handle, the mirror of <c>frusta_device_id</c> (8 bytes). Opaque; a value, not a pointer:
+    /// copies name the same thing. <c>default</c> is null. A handle whose glove was closed (or
+    /// whose world was destroyed) is stale: the native side refuses it, and the binding throws
+    /// <see cref="FrustaException"/> with <see cref="FrustaResult.StaleId"/>.
+    /// </summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct FrustaDeviceId : IEquatable<FrustaDeviceId>
+    {
+        /// <summary>The hand it drives + 1; 0 is null.</summary>
+        public int Index1;
+        /// <summary>The owning world: slot + 1 in the low byte, its generation's low byte above.</summary>
+        public ushort World0;
+        /// <summary>Bumped at each open on that hand.</summary>
+        public ushort Generation;
+
+        /// <summary>The null handle (all zero).</summary>
+        public static FrustaDeviceId Null => default;
+
+        /// <summary>true for the null handle (<see cref="Index1"/> is 0).</summary>
+        public bool IsNull => Index1 == 0;
+
+        /// <summary>Field-wise equality.</summary>
+        /// <param name="other">The handle to compare with.</param>
+        /// <returns>true when both name the same hand, world and generation.</returns>
+        public bool Equals(FrustaDeviceId other) =>
+            Index1 == other.Index1 && World0 == other.World0 && Generation == other.Generation;
+
+        /// <summary>Field-wise equality with a boxed handle.</summary>
+        /// <param name="obj">The object to compare with.</param>
+        /// <returns>true when obj is an equal handle.</returns>
+        public override bool Equals(object obj) => obj is FrustaDeviceId o && Equals(o);
+
+        /// <summary>A hash of the three fields.</summary>
+        /// <returns>The hash code.</returns>
+        public override int GetHashCode() => Index1 * 31 + (World0 << 16 | Generation);
+
+        /// <summary>Field-wise equality.</summary>
+        /// <param name="a">The first handle.</param>
+        /// <param name="b">The second handle.</param>
+        /// <returns>true when equal.</returns>
+        public static bool operator ==(FrustaDeviceId a, FrustaDeviceId b) => a.Equals(b);
+
+        /// <summary>Field-wise inequality.</summary>
+        /// <param name="a">The first handle.</param>
+        /// <param name="b">The second handle.</param>
+        /// <returns>true when different.</returns>
+        public static bool operator !=(FrustaDeviceId a, FrustaDeviceId b) => !a.Equals(b);
+
+        /// <summary>"{index1, world0, generation}".</summary>
+        /// <returns>The text.</returns>
+        public override string ToString() => $"{{{Index1}, {World0}, {Generation}}}";
+    }
 }

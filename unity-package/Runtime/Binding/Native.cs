@@ -118,5 +118,22 @@ namespace Frusta.Binding
                                                                       int* outCount);
         [DllImport(Lib.Name, CallingConvention = Cdecl, ExactSpelling = true)]
         internal static extern FrustaResult frusta_world_get_object(FrustaWorldId world, FrustaObjectId obj, FrustaObjectState* output);
+
+        // ---------------------------------------------------------------- devices
+        [DllImport(Lib.Name, CallingConvention = Cdecl, ExactSpelling = true)]
+        internal static extern FrustaDeviceDef frusta_default_device_def();
+        [DllImport(Lib.Name, CallingConvention = Cdecl, ExactSpelling = true)]
+        internal static extern FrustaResult frusta_enumerate_devices(FrustaDeviceInfo* output, int capacity, int* outCount);
+        [DllImport(Lib.Name, CallingConvention = Cdecl, ExactSpelling = true)]
+        internal static extern FrustaResult frusta_world_open_device(FrustaWorldId world, byte* uri, FrustaDeviceDef* def,
+                                                                     FrustaDeviceId* outDevice);
+        [DllImport(Lib.Name, CallingConvention = Cdecl, ExactSpelling = true)]
+        internal static extern FrustaResult frusta_device_close(FrustaDeviceId device);
+        [DllImport(Lib.Name, CallingConvention = Cdecl, ExactSpelling = true)]
+        internal static extern int frusta_device_is_valid(FrustaDeviceId device);
+        [DllImport(Lib.Name, CallingConvention = Cdecl, ExactSpelling = true)]
+        internal static extern FrustaResult frusta_device_get_status(FrustaDeviceId device, FrustaDeviceStatus* output);
+        [DllImport(Lib.Name, CallingConvention = Cdecl, ExactSpelling = true)]
+        internal static extern FrustaResult frusta_device_set_palm_pose(FrustaDeviceId device, FrustaPose* palm);
     }
 }

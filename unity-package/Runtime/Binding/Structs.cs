@@ -7,6 +7,7 @@
 // Defs come only from the native defaults (the Default properties), never from `new`.
 using System;
 using System.Runtime.InteropServices;
+using System.Text;
 
 namespace Frusta.Binding
 {
@@ -658,5 +659,331 @@ namespace Frusta.Binding
 
         /// <summary>true when the world integrates this object.</summary>
         public readonly bool Dynamic => dynamic != 0;
+    }
+
+    /// <summary>
+    /// How a glove is opened (<c>frusta_device_def</c>, 720 bytes); from <see cref="Default"/>, then
+    /// edited, then passed to <see cref="World.OpenDevice(string, in FrustaDeviceDef)"/>. Times are
+    /// seconds, forces newtons, torques newton-metres. The OpenGloves calibration (raw readings to
+    /// radians, newtons to brake units) is read only by <c>opengloves:</c> gloves; gloves that speak
+    /// Frusta's binary profile send radians.
+    /// </summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public unsafe struct FrustaDeviceDef
+    {
+        const int Flexions = FrustaConstants.FlexionJointsPerFinger;
+
+        internal int StructSize;
+        /// <summary>The world's hand the glove drives (the index from <see cref="World.AddHand"/>); default 0.</summary>
+        public int Hand;
+        /// <summary>Commands per second, Hz; 0: the world's rate, never above what the glove takes
+        /// (100 for OpenGloves); default 0.</summary>
+        public double OutputRateHz;
+        /// <summary>Seconds without a valid sample before the output drops to zero, 0.001..10; default 0.05.</summary>
+        public double WatchdogS;
+        /// <summary>Seconds without a world step before the output drops to zero, 0.001..10; default 0.05.</summary>
+        public double EngineTimeoutS;
+        /// <summary>Seconds without a <see cref="World.Read"/> before the output drops to zero, 0.001..60,
+        /// or 0 (not watched); default 0.25.</summary>
+        public double HostTimeoutS;
+        /// <summary>Seconds between attempts to reopen a disconnected glove, 0.001..60; default 0.2.</summary>
+        public double ReconnectIntervalS;
+        /// <summary>Newtons per second a resistance or fingertip force may rise (falls are immediate); default 500.</summary>
+        public double MaxForceRate;
+        /// <summary>Newton-metres per second a joint torque may rise; default 25.</summary>
+        public double MaxTorqueRate;
+        /// <summary>Newtons per finger; the glove's own limit if lower; default 10.</summary>
+        public double MaxFingerResistance;
+        /// <summary>Newtons per fingertip; default 10.</summary>
+        public double MaxFingertipForce;
+        /// <summary>Newton-metres per joint; default 0.5.</summary>
+        public double MaxJointTorque;
+        fixed double curlOpen[FrustaConstants.FingerCount * Flexions];
+        fixed double curlClosed[FrustaConstants.FingerCount * Flexions];
+        fixed double flexionOpen[FrustaConstants.FingerCount * Flexions];
+        fixed double flexionClosed[FrustaConstants.FingerCount * Flexions];
+        fixed double splayCenter[FrustaConstants.FingerCount];
+        fixed double splaySpan[FrustaConstants.FingerCount];
+        fixed double abductionRange[FrustaConstants.FingerCount];
+        /// <summary>Newtons that set a brake to <see cref="BrakeUnits"/>, (0, 1e6]; default 10.</summary>
+        public double BrakeFullScale;
+        /// <summary>The glove's full brake in its own units, 1..65535; default 1000.</summary>
+        public double BrakeUnits;
+        /// <summary>The largest raw reading, 1..1e9; default 4095.</summary>
+        public double AnalogMax;
+        internal int InternalValue;
+        internal int Reserved0;
+
+        /// <summary>The library's defaults (<c>frusta_default_device_def</c>): hand 0, the world's
+        /// rate, the timeouts and limits above, and a calibration from a straight hand (raw 0, 0 rad)
+        /// to a fist (raw 4095). Thread: any.</summary>
+        public static FrustaDeviceDef Default
+        {
+            get
+            {
+                FrustaLibrary.EnsureCompatible();
+                return Native.frusta_default_device_def();
+            }
+        }
+
+        static int Flexion(FrustaFinger finger, int joint)
+        {
+            if ((uint)finger >= FrustaConstants.FingerCount) throw new ArgumentOutOfRangeException(nameof(finger));
+            if ((uint)joint >= Flexions) throw new ArgumentOutOfRangeException(nameof(joint), "must be 0..2");
+            return (int)finger * Flexions + joint;
+        }
+
+        static int Finger(FrustaFinger finger)
+        {
+            if ((uint)finger >= FrustaConstants.FingerCount) throw new ArgumentOutOfRangeException(nameof(finger));
+            return (int)finger;
+        }
+
+        /// <summary>The raw reading of a flexion joint with the finger straight; default 0.</summary>
+        /// <param name="finger">The finger.</param>
+        /// <param name="joint">0..2: the first, second, third flexion joint.</param>
+        /// <returns>Raw units, 0..<see cref="AnalogMax"/>.</returns>
+        public double GetCurlOpen(FrustaFinger finger, int joint) => curlOpen[Flexion(finger, joint)];
+
+        /// <summary>Set the raw reading of a straight flexion joint (see <see cref="GetCurlOpen"/>).</summary>
+        /// <param name="finger">The finger.</param>
+        /// <param name="joint">0..2.</param>
+        /// <param name="raw">Raw units, 0..<see cref="AnalogMax"/>; at least 1 from the closed reading.</param>
+        public void SetCurlOpen(FrustaFinger finger, int joint, double raw) => curlOpen[Flexion(finger, joint)] = raw;
+
+        /// <summary>The raw reading of a flexion joint in a fist; default 4095.</summary>
+        /// <param name="finger">The finger.</param>
+        /// <param name="joint">0..2: the first, second, third flexion joint.</param>
+        /// <returns>Raw units, 0..<see cref="AnalogMax"/>.</returns>
+        public double GetCurlClosed(FrustaFinger finger, int joint) => curlClosed[Flexion(finger, joint)];
+
+        /// <summary>Set the raw reading of a flexion joint in a fist (see <see cref="GetCurlClosed"/>).</summary>
+        /// <param name="finger">The finger.</param>
+        /// <param name="joint">0..2.</param>
+        /// <param name="raw">Raw units, 0..<see cref="AnalogMax"/>.</param>
+        public void SetCurlClosed(FrustaFinger finger, int joint, double raw) => curlClosed[Flexion(finger, joint)] = raw;
+
+        /// <summary>The flexion angle at the open reading; default 0.</summary>
+        /// <param name="finger">The finger.</param>
+        /// <param name="joint">0..2: the first, second, third flexion joint.</param>
+        /// <returns>Radians, |angle| &lt;= pi.</returns>
+        public double GetFlexionOpen(FrustaFinger finger, int joint) => flexionOpen[Flexion(finger, joint)];
+
+        /// <summary>Set the flexion angle at the open reading (see <see cref="GetFlexionOpen"/>).</summary>
+        /// <param name="finger">The finger.</param>
+        /// <param name="joint">0..2.</param>
+        /// <param name="radians">Radians, |angle| &lt;= pi.</param>
+        public void SetFlexionOpen(FrustaFinger finger, int joint, double radians) => flexionOpen[Flexion(finger, joint)] = radians;
+
+        /// <summary>The flexion angle at the closed reading; default a fist (80, 90, 70 degrees; the
+        /// thumb 45, 40, 60).</summary>
+        /// <param name="finger">The finger.</param>
+        /// <param name="joint">0..2: the first, second, third flexion joint.</param>
+        /// <returns>Radians, |angle| &lt;= pi.</returns>
+        public double GetFlexionClosed(FrustaFinger finger, int joint) => flexionClosed[Flexion(finger, joint)];
+
+        /// <summary>Set the flexion angle at the closed reading (see <see cref="GetFlexionClosed"/>).</summary>
+        /// <param name="finger">The finger.</param>
+        /// <param name="joint">0..2.</param>
+        /// <param name="radians">Radians, |angle| &lt;= pi.</param>
+        public void SetFlexionClosed(FrustaFinger finger, int joint, double radians) => flexionClosed[Flexion(finger, joint)] = radians;
+
+        /// <summary>The raw splay reading of a straight finger; default 2048.</summary>
+        /// <param name="finger">The finger.</param>
+        /// <returns>Raw units, 0..<see cref="AnalogMax"/>.</returns>
+        public double GetSplayCenter(FrustaFinger finger) => splayCenter[Finger(finger)];
+
+        /// <summary>Set the raw splay reading of a straight finger (see <see cref="GetSplayCenter"/>).</summary>
+        /// <param name="finger">The finger.</param>
+        /// <param name="raw">Raw units, 0..<see cref="AnalogMax"/>.</param>
+        public void SetSplayCenter(FrustaFinger finger, double raw) => splayCenter[Finger(finger)] = raw;
+
+        /// <summary>The raw splay change that means <see cref="GetAbductionRange"/>; default 2047.</summary>
+        /// <param name="finger">The finger.</param>
+        /// <returns>Raw units, 1..<see cref="AnalogMax"/>.</returns>
+        public double GetSplaySpan(FrustaFinger finger) => splaySpan[Finger(finger)];
+
+        /// <summary>Set a finger's raw splay span (see <see cref="GetSplaySpan"/>).</summary>
+        /// <param name="finger">The finger.</param>
+        /// <param name="raw">Raw units, 1..<see cref="AnalogMax"/>.</param>
+        public void SetSplaySpan(FrustaFinger finger, double raw) => splaySpan[Finger(finger)] = raw;
+
+        /// <summary>The abduction a full splay span means; default 15 degrees.</summary>
+        /// <param name="finger">The finger.</param>
+        /// <returns>Radians, 0..pi/2.</returns>
+        public double GetAbductionRange(FrustaFinger finger) => abductionRange[Finger(finger)];
+
+        /// <summary>Set a finger's abduction range (see <see cref="GetAbductionRange"/>).</summary>
+        /// <param name="finger">The finger.</param>
+        /// <param name="radians">Radians, 0..pi/2.</param>
+        public void SetAbductionRange(FrustaFinger finger, double radians) => abductionRange[Finger(finger)] = radians;
+    }
+
+    /// <summary>
+    /// A glove's state and counters (<c>frusta_device_status</c>, 320 bytes), filled by
+    /// <see cref="Device.GetStatus"/>. Read-only; reuse one instance per frame: nothing is allocated.
+    /// </summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public unsafe struct FrustaDeviceStatus
+    {
+        internal int StructSize;
+        FrustaDeviceState state;
+        FrustaWatchdogReason watchdog;
+        FrustaDeviceOutput outputs;
+        int fingers;
+        int hasPalmPose;
+        int protocolVersion;
+        int recordingFailed;
+        long framesOk;
+        long framesCorrupt;
+        long framesTruncated;
+        long framesOutOfRange;
+        long samplesRejected;
+        long commandsSent;
+        long commandsDropped;
+        long reconnects;
+        long disconnects;
+        long watchdogTrips;
+        double inputRateHz;
+        double outputRateHz;
+        double lastSampleAgeS;
+        double maxFingerResistance;
+        double maxFingertipForce;
+        double maxJointTorque;
+        fixed double fingerResistance[FrustaConstants.FingerCount];
+        fixed double fingertipForce[FrustaConstants.FingerCount * 3];
+
+        /// <summary>Connected, Disconnected (retrying) or Closed.</summary>
+        public readonly FrustaDeviceState State => state;
+
+        // the binding's own word when the world closed the glove and native can no longer be asked
+        internal void MarkClosed() => state = FrustaDeviceState.Closed;
+
+        /// <summary>Why the output is held at zero now; <see cref="FrustaWatchdogReason.None"/> when it is not.</summary>
+        public readonly FrustaWatchdogReason Watchdog => watchdog;
+
+        /// <summary>The outputs the glove renders (as it announced them).</summary>
+        public readonly FrustaDeviceOutput Outputs => outputs;
+
+        /// <summary>The glove's fingers, thumb first (0..5).</summary>
+        public readonly int Fingers => fingers;
+
+        /// <summary>true when the glove reports the palm pose itself (a tracker); otherwise the palm
+        /// comes from <see cref="Device.SetPalmPose"/>.</summary>
+        public readonly bool HasPalmPose => hasPalmPose != 0;
+
+        /// <summary>The protocol version the glove announced (0: none).</summary>
+        public readonly int ProtocolVersion => protocolVersion;
+
+        /// <summary>true when the disk refused the <c>record=</c> recording; the glove runs on.</summary>
+        public readonly bool RecordingFailed => recordingFailed != 0;
+
+        /// <summary>Samples taken since open.</summary>
+        public readonly long FramesOk => framesOk;
+
+        /// <summary>Frames dropped for a bad checksum or syntax.</summary>
+        public readonly long FramesCorrupt => framesCorrupt;
+
+        /// <summary>Frames dropped because they were cut short.</summary>
+        public readonly long FramesTruncated => framesTruncated;
+
+        /// <summary>Well-formed frames dropped for impossible values.</summary>
+        public readonly long FramesOutOfRange => framesOutOfRange;
+
+        /// <summary>Decoded samples dropped: NaN, or beyond any joint's range.</summary>
+        public readonly long SamplesRejected => samplesRejected;
+
+        /// <summary>Commands written to the glove.</summary>
+        public readonly long CommandsSent => commandsSent;
+
+        /// <summary>Commands dropped because the glove did not drain its input in time.</summary>
+        public readonly long CommandsDropped => commandsDropped;
+
+        /// <summary>Times the glove came back after a disconnect.</summary>
+        public readonly long Reconnects => reconnects;
+
+        /// <summary>Times the glove went away.</summary>
+        public readonly long Disconnects => disconnects;
+
+        /// <summary>Times the output was forced to zero (each entry into a watchdog reason).</summary>
+        public readonly long WatchdogTrips => watchdogTrips;
+
+        /// <summary>The measured sample rate, Hz (the inverse of a running mean interval).</summary>
+        public readonly double InputRateHz => inputRateHz;
+
+        /// <summary>The command rate in use, Hz.</summary>
+        public readonly double OutputRateHz => outputRateHz;
+
+        /// <summary>Seconds since the newest valid sample; -1 before the first.</summary>
+        public readonly double LastSampleAgeS => lastSampleAgeS;
+
+        /// <summary>The finger resistance limit in use, newtons (the lower of the def's and the glove's).</summary>
+        public readonly double MaxFingerResistance => maxFingerResistance;
+
+        /// <summary>The fingertip force limit in use, newtons.</summary>
+        public readonly double MaxFingertipForce => maxFingertipForce;
+
+        /// <summary>The joint torque limit in use, newton-metres.</summary>
+        public readonly double MaxJointTorque => maxJointTorque;
+
+        static int Finger(FrustaFinger finger)
+        {
+            if ((uint)finger >= FrustaConstants.FingerCount) throw new ArgumentOutOfRangeException(nameof(finger));
+            return (int)finger;
+        }
+
+        /// <summary>The last command's resistance on a finger, newtons.</summary>
+        /// <param name="finger">The finger.</param>
+        /// <returns>Newtons, &gt;= 0.</returns>
+        public readonly double GetFingerResistance(FrustaFinger finger)
+        {
+            int i = Finger(finger);
+            fixed (double* r = fingerResistance) return r[i];
+        }
+
+        /// <summary>The last command's force on a fingertip, newtons, palm frame.</summary>
+        /// <param name="finger">The finger.</param>
+        /// <returns>Newtons, palm frame (right-handed, as <see cref="FrustaHandDef"/>'s hand frame).</returns>
+        public readonly Vector3d GetFingertipForce(FrustaFinger finger)
+        {
+            int i = Finger(finger) * 3;
+            fixed (double* f = fingertipForce) return new Vector3d(f[i], f[i + 1], f[i + 2]);
+        }
+    }
+
+    /// <summary>One device <see cref="Device.Enumerate()"/> found (<c>frusta_device_info</c>, 272 bytes).</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public unsafe struct FrustaDeviceInfo
+    {
+        internal int StructSize;
+        FrustaDeviceKind kind;
+        int vendorId;
+        int productId;
+        fixed byte uri[FrustaConstants.DeviceUriCapacity];
+
+        /// <summary>A serial port, a HID device or a USB device.</summary>
+        public readonly FrustaDeviceKind Kind => kind;
+
+        /// <summary>The USB/HID vendor id; -1 when unknown.</summary>
+        public readonly int VendorId => vendorId;
+
+        /// <summary>The USB/HID product id; -1 when unknown.</summary>
+        public readonly int ProductId => productId;
+
+        /// <summary>A URI to open: <c>serial:PATH</c> for a serial port (use <c>opengloves:PATH</c>
+        /// for an OpenGloves glove on it), <c>hid:VID:PID[:SERIAL]</c>, or <c>usb:</c> for a USB device
+        /// (not opened directly). Decoded from UTF-8: allocates a string.</summary>
+        public readonly string Uri
+        {
+            get
+            {
+                fixed (byte* p = uri)
+                {
+                    int n = 0;
+                    while (n < FrustaConstants.DeviceUriCapacity && p[n] != 0) ++n;
+                    return Encoding.UTF8.GetString(p, n);
+                }
+            }
+        }
     }
 }

@@ -13,8 +13,9 @@ namespace Frusta.Binding
     /// <para>Threads: the creating thread is the host (Unity's main thread) for every member
     /// unless its documentation says otherwise; <see cref="SetHaptic"/> may come from one input
     /// thread per hand; <see cref="ReadSnapshot"/> from any thread. Dispose is safe twice and
-    /// from any thread; it waits for calls in flight, then stops the own thread and destroys
-    /// the world.</para>
+    /// from any thread; it waits for calls in flight, then stops the own thread, closes the
+    /// world's gloves (<see cref="OpenDevice(string, in FrustaDeviceDef)"/>) and destroys the
+    /// world.</para>
     /// </summary>
     public sealed unsafe class World : IDisposable
     {
@@ -44,6 +45,8 @@ namespace Frusta.Binding
             maxContactsPerHand = def.MaxContactsPerHand;
             RateHz = def.RateHz;
         }
+
+        internal WorldHandle Handle => handle;
 
         /// <summary>The native id (a value; stale once disposed).</summary>
         public FrustaWorldId Id => handle.Id;
@@ -88,6 +91,8 @@ namespace Frusta.Binding
         /// <param name="hand">The index from <see cref="AddHand"/>.</param>
         /// <param name="palm">Metres, world frame; quaternion norm in [0.5, 2].</param>
         /// <param name="angles">Exactly 20 radians, |angle| &lt;= 100 (beyond the limits is clamped).</param>
+        /// <exception cref="FrustaException"><see cref="FrustaResult.WrongState"/> on a hand a glove drives
+        /// (<see cref="OpenDevice(string, in FrustaDeviceDef)"/>) until the glove is disposed.</exception>
         public void SetHaptic(int hand, in FrustaPose palm, ReadOnlySpan<double> angles)
         {
             using (new HandleUse(handle))
@@ -312,6 +317,55 @@ namespace Frusta.Binding
                     snapshot.contactCounts[h] = count;
                 }
             }
+        }
+
+        /// <summary>Open a glove with the library's defaults (<see cref="FrustaDeviceDef.Default"/>) to drive
+        /// one hand; see <see cref="OpenDevice(string, in FrustaDeviceDef)"/>.</summary>
+        /// <param name="uri">Where the glove is, e.g. <c>opengloves:/dev/ttyUSB0</c> or <c>replay:FILE</c>.</param>
+        /// <param name="hand">The index from <see cref="AddHand"/>; default 0.</param>
+        /// <returns>The open glove; dispose it to close it.</returns>
+        public Device OpenDevice(string uri, int hand = 0)
+        {
+            FrustaDeviceDef def = FrustaDeviceDef.Default;
+            def.Hand = hand;
+            return OpenDevice(uri, def);
+        }
+
+        /// <summary>
+        /// Open the glove at <paramref name="uri"/> to drive the hand <paramref name="def"/>.Hand of this
+        /// world, and start the glove's own native thread (<c>frusta_world_open_device</c>). The URI is
+        /// one of <c>opengloves:PATH?baud=N</c> (OpenGloves alpha encoding over serial),
+        /// <c>serial:PATH?baud=N</c> and <c>hid:VID:PID[:SERIAL]</c> (Frusta's binary profile), or
+        /// <c>replay:FILE?speed=1|max&amp;loop=0|1</c> (a recording); any takes <c>&amp;record=FILE</c>.
+        /// While the glove is open it feeds the hand (<see cref="SetHaptic"/> on that hand is refused
+        /// with <see cref="FrustaResult.WrongState"/>), and its palm comes from
+        /// <see cref="Device.SetPalmPose"/> unless the glove reports one. Thread: host.
+        /// </summary>
+        /// <param name="uri">Where the glove is (UTF-8 on the native side).</param>
+        /// <param name="def">From <see cref="FrustaDeviceDef.Default"/>, then edited.</param>
+        /// <returns>The open glove; dispose it to close it (disposing the world closes it too).</returns>
+        /// <exception cref="FrustaException"><see cref="FrustaResult.OutOfRange"/> for a malformed URI or a def
+        /// value out of range; <see cref="FrustaResult.Io"/> for a glove absent at open (not a retry);
+        /// <see cref="FrustaResult.WrongState"/> when the hand already has a glove; the native message
+        /// names the problem.</exception>
+        public Device OpenDevice(string uri, in FrustaDeviceDef def)
+        {
+            if (uri == null) throw new ArgumentNullException(nameof(uri));
+            int max = Utf8.MaxBytes(uri);
+            Span<byte> text = max <= Utf8.StackLimit ? stackalloc byte[max] : new byte[max];
+            Utf8.Encode(uri, text, nameof(uri));
+            var device = new DeviceHandle();
+            FrustaDeviceId id;
+            using (new HandleUse(handle))
+            {
+                FrustaResult r;
+                fixed (byte* u = text)
+                fixed (FrustaDeviceDef* d = &def)
+                    r = Native.frusta_world_open_device(handle.Id, u, d, &id);
+                Errors.Check(r, "frusta_world_open_device");
+                device.Own(handle, id);
+            }
+            return new Device(this, device, uri, def.Hand);
         }
 
         /// <summary>Stop the own thread and destroy the world with its objects
