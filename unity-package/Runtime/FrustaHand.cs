@@ -7,7 +7,8 @@ namespace Frusta.Unity
 {
     /// <summary>
     /// A hand of a <see cref="FrustaWorldBehaviour"/>. The haptic input (the tracked wrist and the
-    /// glove's joint angles) goes in through <see cref="hapticSource"/> and <see cref="SetJointAngles"/>;
+    /// glove's joint angles) goes in through <see cref="hapticSource"/> and <see cref="SetJointAngles"/>,
+    /// or, while a <see cref="FrustaGloveDevice"/> drives the hand, comes from the glove itself;
     /// the graphic hand (the one that never sinks into objects) comes out each frame and drives the
     /// mapped bones of a skinned rig. Scene-view gizmos show its segments, joint balls and contacts.
     /// </summary>
@@ -71,6 +72,18 @@ namespace Frusta.Unity
         /// <summary>The hand's index in the world; -1 before it registered.</summary>
         public int Index => index;
 
+        /// <summary>The world component the hand belongs to (null if it found none).</summary>
+        public FrustaWorldBehaviour WorldBehaviour => world;
+
+        /// <summary>The tracked wrist whose world pose is the haptic palm pose: the inspector's
+        /// haptic source, or this transform.</summary>
+        public Transform HapticSource => hapticSource != null ? hapticSource : transform;
+
+        /// <summary>true while a <see cref="FrustaGloveDevice"/> drives this hand: the glove's samples
+        /// are the haptic input (the world refuses the host's), so <see cref="SetJointAngles"/> and the
+        /// haptic source are not used.</summary>
+        public bool DrivenByDevice { get; internal set; }
+
         /// <summary>The latest graphic and haptic state (valid once <see cref="FrustaWorldHand.Solved"/>).</summary>
         public ref readonly FrustaWorldHand State => ref latest;
 
@@ -124,9 +137,8 @@ namespace Frusta.Unity
         void Update()
         {
             World w = world != null ? world.World : null;
-            if (w == null || index < 0) return;
-            Transform source = hapticSource != null ? hapticSource : transform;
-            w.SetHaptic(index, source.ToFrustaPose(), angles);
+            if (w == null || index < 0 || DrivenByDevice) return;
+            w.SetHaptic(index, HapticSource.ToFrustaPose(), angles);
         }
 
         void OnLatched(FrustaWorldBehaviour source)
