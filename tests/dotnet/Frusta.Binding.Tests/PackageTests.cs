@@ -134,6 +134,18 @@ namespace Frusta.Binding.Tests
         }
 
         [Fact]
+        public void TheSampleShipsTheBundledGloveRecordingUnchanged()
+        {
+            // the Hand Demo replays its own copy: the package is installed without the repository
+            string bundled = Path.Combine(TestEnv.Root, "samples", "data", "demo_glove.frrec");
+            string copy = Path.Combine(TestEnv.Package, "Samples~", "HandDemo", "demo_glove.frrec");
+            Assert.True(File.Exists(copy), $"{copy} is missing");
+            Assert.True(File.ReadAllBytes(bundled).AsSpan().SequenceEqual(File.ReadAllBytes(copy)),
+                $"{copy} differs from {bundled}: copy it again (cp samples/data/demo_glove.frrec unity-package/Samples~/HandDemo/)");
+            Assert.Contains("demo_glove.frrec", File.ReadAllText(Path.Combine(TestEnv.Package, "Samples~", "HandDemo", "HandDemo.cs")));
+        }
+
+        [Fact]
         public void NoBuildOutputLivesInThePackage()
         {
             foreach (string d in Directory.EnumerateDirectories(TestEnv.Package, "*", SearchOption.AllDirectories))
