@@ -146,6 +146,19 @@ namespace Frusta.Binding.Tests
         }
 
         [Fact]
+        public void TheChangelogHasAnEntryForTheManifestsVersion()
+        {
+            // UPM's convention (Keep a Changelog): "## [x.y.z] - yyyy-mm-dd", newest first
+            string text = File.ReadAllText(Path.Combine(TestEnv.Package, "CHANGELOG.md"));
+            string version = Json(Path.Combine(TestEnv.Package, "package.json")).GetProperty("version").GetString();
+            var entries = Regex.Matches(text, @"^## \[(\d+\.\d+\.\d+)\] - \d{4}-\d{2}-\d{2}$", RegexOptions.Multiline)
+                               .Select(m => Version.Parse(m.Groups[1].Value)).ToArray();
+            Assert.NotEmpty(entries);
+            Assert.Equal(Version.Parse(version), entries[0]);
+            Assert.Equal(entries.OrderByDescending(v => v).ToArray(), entries);
+        }
+
+        [Fact]
         public void NoBuildOutputLivesInThePackage()
         {
             foreach (string d in Directory.EnumerateDirectories(TestEnv.Package, "*", SearchOption.AllDirectories))
