@@ -369,6 +369,8 @@ TEST(deviceLink, FrozenGloveStoppedEngineAndAbsentHostReleaseTheGlove) {
   auto link = open_link(scene.world, glove.path());
   ASSERT_TRUE(press(scene.world, firmware, *link, glove));
   const auto pressing = [&] { return last_brakes(glove)[kIndex] > 0 && link->status().watchdog == WatchdogReason::kNone; };
+  // (whether the start tripped it too depends on whether a sample beat the first command)
+  const int64_t trips = link->status().watchdog_trips;
 
   glove.set_sending(false);
   ASSERT_TRUE(wait_until(scene.world, [&] { return last_brakes(glove)[kIndex] == 0; }, 1.0));
@@ -386,7 +388,7 @@ TEST(deviceLink, FrozenGloveStoppedEngineAndAbsentHostReleaseTheGlove) {
   EXPECT_EQ(last_brakes(glove)[kIndex], 0);
   EXPECT_EQ(link->status().watchdog, WatchdogReason::kHostStalled);
   ASSERT_TRUE(wait_until(scene.world, pressing, 2.0));
-  EXPECT_EQ(link->status().watchdog_trips, 4) << "the start, the glove, the engine, the host";
+  EXPECT_EQ(link->status().watchdog_trips, trips + 3) << "the glove, the engine, the host";
 }
 
 int thread_count() {
