@@ -70,7 +70,8 @@ typedef enum frusta_result {
   FRUSTA_ERROR_IO = 12,              /* a file could not be opened, read or written */
   FRUSTA_ERROR_FILE_FORMAT = 13,     /* not a Frusta file, or a format version we cannot read */
   FRUSTA_ERROR_CORRUPT_FILE = 14,    /* a Frusta file whose contents fail validation */
-  FRUSTA_ERROR_WRONG_STATE = 15      /* not now: e.g. stepping a world its own thread runs */
+  FRUSTA_ERROR_WRONG_STATE = 15,     /* not now: e.g. stepping a world its own thread runs */
+  FRUSTA_ERROR_UNAVAILABLE = 16      /* a part this build lacks: the baker where Embree does not exist */
 } frusta_result;
 
 /** Message of the last failed call on this thread ("" after none). Valid until the
@@ -342,6 +343,10 @@ FRUSTA_API frusta_bake_def frusta_default_bake_def(void);
  *  wound counter-clockwise seen from outside. Blocks for the bake's duration
  *  (seconds for 10^5 triangles): call it off any frame loop. A tree that misses
  *  the target within max_leaves is still returned; check info.target_met.
+ *  The baking is done by the baker library (libfrusta_bake.so; Embree), loaded from
+ *  beside this library on first use (or from the path in FRUSTA_BAKE_PLUGIN); where
+ *  it is not installed (platforms without Embree) this fails with
+ *  FRUSTA_ERROR_UNAVAILABLE, and trees come from frusta-bake's .frtree files.
  *  Thread: any; bakes on different threads run concurrently. */
 FRUSTA_API frusta_result frusta_bake_sphere_tree(const float* vertices, int32_t vertex_count,
                                                  const int32_t* indices, int32_t index_count,

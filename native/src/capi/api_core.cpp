@@ -29,6 +29,7 @@ FRUSTA_API const char* frusta_result_name(int32_t result) {
     case FRUSTA_ERROR_FILE_FORMAT: return "FRUSTA_ERROR_FILE_FORMAT";
     case FRUSTA_ERROR_CORRUPT_FILE: return "FRUSTA_ERROR_CORRUPT_FILE";
     case FRUSTA_ERROR_WRONG_STATE: return "FRUSTA_ERROR_WRONG_STATE";
+    case FRUSTA_ERROR_UNAVAILABLE: return "FRUSTA_ERROR_UNAVAILABLE";
     default: return "FRUSTA_ERROR_UNKNOWN";
   }
 }

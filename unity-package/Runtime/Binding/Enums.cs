@@ -41,6 +41,9 @@ namespace Frusta.Binding
         CorruptFile = 14,
         /// <summary>Not now: e.g. stepping a world that its own thread runs.</summary>
         WrongState = 15,
+        /// <summary>A part this build of the library lacks: baking where the baker library
+        /// (Embree) is not installed beside it. Bake with frusta-bake and load the file.</summary>
+        Unavailable = 16,
     }
 
     /// <summary>Which hand (<c>frusta_hand_side</c>). A left hand is the mirror image of a
