@@ -9,7 +9,9 @@
 #include <glm/geometric.hpp>
 #include <glm/gtx/quaternion.hpp>
 
+#if defined(FRUSTA_HAVE_BAKER)
 #include "bake/baker.h"
+#endif
 #include "geometry/exact_distance.h"
 #include "hand/hand_model.h"
 #include "scenes/meshes.h"
@@ -30,6 +32,7 @@ std::shared_ptr<const TreeFile> sample_tree(const std::string& name) {
 }
 
 std::shared_ptr<const TreeFile> baked_box(const vec3& size, double target_error) {
+#if defined(FRUSTA_HAVE_BAKER)
   auto file = std::make_shared<TreeFile>();
   BakeParams params;
   params.target_error = target_error;
@@ -37,6 +40,11 @@ std::shared_ptr<const TreeFile> baked_box(const vec3& size, double target_error)
   if (bake_sphere_tree(make_box(size, 4), params, nullptr, file.get(), &met) != FRUSTA_OK)
     throw std::runtime_error(std::string("baking a box: ") + frusta_last_error());
   return file;
+#else
+  (void)size;
+  (void)target_error;
+  throw std::runtime_error("baked_box needs the baker (Embree), which this build lacks");
+#endif
 }
 
 std::shared_ptr<const TreeFile> ball_shell(int32_t leaves, double radius) {
@@ -81,9 +89,18 @@ void HandScenario::add(std::shared_ptr<const TreeFile> tree, const RigidPose& po
   trees.push_back(std::move(tree));
 }
 
+bool hand_scenario_bakes(const std::string& name) {
+  return name == "plate_pinch" || name == "start_inside";
+}
+
 std::vector<std::string> hand_scenario_names() {
-  return {"box_press", "ball_grasp", "slide", "plate_pinch", "bowl_press", "plate_teleport",
-          "start_inside", "palm_then_fingers"};
+  std::vector<std::string> names = {"box_press", "ball_grasp", "slide", "plate_pinch",
+                                    "bowl_press", "plate_teleport", "start_inside",
+                                    "palm_then_fingers"};
+#if !defined(FRUSTA_HAVE_BAKER)
+  names.erase(std::remove_if(names.begin(), names.end(), hand_scenario_bakes), names.end());
+#endif
+  return names;
 }
 
 namespace {

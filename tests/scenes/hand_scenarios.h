@@ -47,7 +47,10 @@ struct HandScenario {
 
 // box_press, ball_grasp, slide, plate_pinch, bowl_press, plate_teleport, start_inside,
 // palm_then_fingers: the acceptance list, in that order.
+// (without the baker, as in cross builds, those that bake their box are left out)
 std::vector<std::string> hand_scenario_names();
+// Whether the scenario bakes a box when made (plate_pinch, start_inside).
+bool hand_scenario_bakes(const std::string& name);
 HandScenario make_hand_scenario(const std::string& name);
 // A 4 mm plate between the thumb and index pads, each pushed `pressed` metres past
 // it (0.01 in the acceptance scenario, a few mm for a hold); axis: the plate's normal,

@@ -190,7 +190,9 @@ class CaseGenerator {
   vec3 random_unit() {
     std::normal_distribution<double> gauss;
     for (;;) {
-      const vec3 v(gauss(rng_), gauss(rng_), gauss(rng_));
+      // braces: the draws in order on every compiler and architecture (the arguments of
+      // a call have none: GCC draws z first on x86_64, x first on arm64)
+      const vec3 v{gauss(rng_), gauss(rng_), gauss(rng_)};
       const double n = glm::length(v);
       if (n > 1e-6) return v / n;
     }
@@ -205,7 +207,7 @@ class CaseGenerator {
     return b;
   }
 
-  vec3 random_distal() { return vec3(uniform(-0.2, 0.2), uniform(-0.2, 0.2), uniform(-0.2, 0.2)); }
+  vec3 random_distal() { return vec3{uniform(-0.2, 0.2), uniform(-0.2, 0.2), uniform(-0.2, 0.2)}; }
 
   void set_segment(Case& c, const vec3& e, const Basis& b, const Shape& s) {
     c.segment.distal = e;
@@ -222,8 +224,10 @@ class CaseGenerator {
     const double radius = point_sphere ? 0.0 : object_radius();
     const double grow = std::max(s.r1, s.r2) + radius + 0.01;
     c.sphere.radius = radius;
-    c.sphere.center = e + uniform(-grow, s.length + grow) * b.u + uniform(-grow, grow) * b.n1 +
-                      uniform(-grow, grow) * b.n2;
+    const double along = uniform(-grow, s.length + grow);  // one draw a statement: in order
+    const double across1 = uniform(-grow, grow);
+    const double across2 = uniform(-grow, grow);
+    c.sphere.center = e + along * b.u + across1 * b.n1 + across2 * b.n2;
   }
 
   void place_on_axis(Case& c) {
@@ -282,7 +286,8 @@ class CaseGenerator {
     };
 
     for (int attempt = 0; attempt < 64; ++attempt) {
-      const double gap = (coin() ? 1.0 : -1.0) * std::pow(10.0, uniform(-9.0, -3.0));
+      const double sign = coin() ? 1.0 : -1.0;
+      const double gap = sign * std::pow(10.0, uniform(-9.0, -3.0));
       const double phi = uniform(0.0, 6.283185307179586);
       const vec3 m = std::cos(phi) * b.n1 + std::sin(phi) * b.n2;
       double a, y, solid;

@@ -8,9 +8,11 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 FRUSTA_PACKAGES=(cmake ninja-build g++ pkg-config libglm-dev libhidapi-dev libusb-1.0-0-dev
                  libembree-dev libtinygltf-dev libbenchmark-dev libgtest-dev)
 
+# ensure_packages [PACKAGE...]: those (default: FRUSTA_PACKAGES) installed
 ensure_packages() {
-  local missing=() p
-  for p in "${FRUSTA_PACKAGES[@]}"; do
+  local wanted=("$@") missing=() p
+  [ ${#wanted[@]} -eq 0 ] && wanted=("${FRUSTA_PACKAGES[@]}")
+  for p in "${wanted[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
   done
   [ ${#missing[@]} -eq 0 ] && return 0
@@ -23,6 +25,31 @@ ensure_packages() {
   echo "frusta: installing ${missing[*]}" >&2
   DEBIAN_FRONTEND=noninteractive apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $line -qq >/dev/null
+}
+
+# Linux arm64 cross builds: Debian's cross compiler, qemu to run the tests, and the
+# arm64 builds of the libraries (multiarch; GLM is header-only, shared with the host)
+FRUSTA_ARM64_PACKAGES=(g++-aarch64-linux-gnu qemu-user-static libhidapi-dev:arm64
+                       libusb-1.0-0-dev:arm64 libgtest-dev:arm64 libbenchmark-dev:arm64)
+
+ensure_arm64_packages() {
+  if ! dpkg --print-foreign-architectures | grep -qx arm64; then
+    [ "$(id -u)" -eq 0 ] || { echo "frusta: as root, run: dpkg --add-architecture arm64" >&2; exit 1; }
+    dpkg --add-architecture arm64
+    DEBIAN_FRONTEND=noninteractive apt-get update -qq
+  fi
+  ensure_packages "${FRUSTA_ARM64_PACKAGES[@]}"
+}
+
+# build_arm64_tree DIR [targets...]: the runtime and tests for Linux arm64, without the
+# baker (no Embree there); sample objects come from the host build in build/
+build_arm64_tree() {
+  local dir="$1"
+  shift
+  FRUSTA_BUILD_TARGETS="$*" build_tree "$dir" RelWithDebInfo \
+    -DCMAKE_TOOLCHAIN_FILE="$ROOT/native/cmake/toolchains/aarch64-linux-gnu.cmake" \
+    -DFRUSTA_BUILD_BAKER=OFF -DFRUSTA_BUILD_SAMPLES=OFF \
+    -DFRUSTA_SAMPLE_OBJECTS_DIR="$ROOT/build/samples/objects"
 }
 
 # build_tree DIR BUILD_TYPE [extra cmake args...]: configure (once) and build (only

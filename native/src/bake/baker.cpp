@@ -32,7 +32,8 @@ BakeError measure_bake_error(const MeshQueries& queries, const TriangleMesh& mes
     const double share = total_area > 0.0 ? l.radius * l.radius / total_area : 0.0;
     const int64_t n = std::max<int64_t>(4, static_cast<int64_t>(std::ceil(share * static_cast<double>(samples))));
     for (int64_t k = 0; k < n; ++k) {
-      const vec3 q = l.center + l.radius * glm::normalize(vec3(gauss(rng), gauss(rng), gauss(rng)));
+      // braces: the three draws in order on every compiler (function arguments have none)
+      const vec3 q = l.center + l.radius * glm::normalize(vec3{gauss(rng), gauss(rng), gauss(rng)});
       ++leaf_points;
       // inside another leaf: not on the union's boundary, cannot stand out further
       if (distance_to_leaves(tree, q) < -1e-12) continue;
