@@ -41,15 +41,20 @@ ensure_arm64_packages() {
   ensure_packages "${FRUSTA_ARM64_PACKAGES[@]}"
 }
 
-# build_arm64_tree DIR [targets...]: the runtime and tests for Linux arm64, without the
-# baker (no Embree there); sample objects come from the host build in build/
+# build_arm64_tree DIR BUILD_TYPE [cmake args...]: the runtime, tests and benchmarks for
+# Linux arm64, without the baker (no Embree there); pass FRUSTA_SAMPLE_OBJECTS_DIR, the
+# sample objects a host build baked. Builds $FRUSTA_BUILD_TARGETS when set.
 build_arm64_tree() {
-  local dir="$1"
-  shift
-  FRUSTA_BUILD_TARGETS="$*" build_tree "$dir" RelWithDebInfo \
+  local dir="$1" type="$2"
+  shift 2
+  build_tree "$dir" "$type" \
     -DCMAKE_TOOLCHAIN_FILE="$ROOT/native/cmake/toolchains/aarch64-linux-gnu.cmake" \
-    -DFRUSTA_BUILD_BAKER=OFF -DFRUSTA_BUILD_SAMPLES=OFF \
-    -DFRUSTA_SAMPLE_OBJECTS_DIR="$ROOT/build/samples/objects"
+    -DFRUSTA_BUILD_BAKER=OFF -DFRUSTA_BUILD_SAMPLES=OFF "$@"
+}
+
+# run_arm64 PROGRAM [args...]: an arm64 program under qemu
+run_arm64() {
+  qemu-aarch64-static -L /usr/aarch64-linux-gnu "$@"
 }
 
 # build_tree DIR BUILD_TYPE [extra cmake args...]: configure (once) and build (only
