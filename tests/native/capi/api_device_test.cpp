@@ -2,9 +2,6 @@
 // The gloves' C ABI: defs and URIs checked with named fields, a glove on a real pseudo-
 // terminal opened by URI, its status, its palm, its hand closed to other input, ids
 // turning stale, a world taking its gloves with it, enumeration, record and replay.
-#include <dirent.h>
-#include <unistd.h>
-
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -14,25 +11,15 @@
 #include <vector>
 
 #include "capi_fixture.h"
+#include "scenes/process_probe.h"
 #include "scenes/simulated_glove.h"
 
 namespace frusta::testing {
 namespace {
 
 using scenes::SimulatedGlove;
-
-std::string temp_path(const std::string& name) {
-  return "/tmp/frusta-" + std::to_string(getpid()) + "-capi-" + name;
-}
-
-int thread_count() {
-  int count = 0;
-  if (DIR* tasks = opendir("/proc/self/task")) {
-    while (dirent* entry = readdir(tasks)) count += entry->d_name[0] != '.';
-    closedir(tasks);
-  }
-  return count;
-}
+using scenes::temp_path;
+using scenes::thread_count;
 
 class DeviceApiTest : public CapiTest {
  protected:

@@ -5,14 +5,11 @@
 // absurd angles, too slow or too fast, frozen; and an engine or host that stops.
 #include "devices/device_link.h"
 
-#include <dirent.h>
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <functional>
 #include <sstream>
 #include <string>
@@ -25,6 +22,7 @@
 #include "hand/hand_model.h"
 #include "scenes/binary_glove.h"
 #include "scenes/hand_scenarios.h"
+#include "scenes/process_probe.h"
 #include "scenes/simulated_glove.h"
 
 namespace frusta {
@@ -32,13 +30,10 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 using scenes::SimulatedGlove;
+using scenes::temp_path;
+using scenes::thread_count;
 constexpr int kIndex = 1;
 constexpr int kIndexFlexion1 = kIndex * FRUSTA_JOINTS_PER_FINGER + 1;
-
-std::string temp_path(const std::string& name) {
-  return (std::getenv("TMPDIR") ? std::string(std::getenv("TMPDIR")) : "/tmp") + "/frusta-" +
-         std::to_string(getpid()) + "-" + name;
-}
 
 // A right hand over a 3 cm box whose face lies 2 mm from the open index fingertip, on
 // the side a curling index moves to: a curl presses the finger in, and the world asks
@@ -389,15 +384,6 @@ TEST(deviceLink, FrozenGloveStoppedEngineAndAbsentHostReleaseTheGlove) {
   EXPECT_EQ(link->status().watchdog, WatchdogReason::kHostStalled);
   ASSERT_TRUE(wait_until(scene.world, pressing, 2.0));
   EXPECT_EQ(link->status().watchdog_trips, trips + 3) << "the glove, the engine, the host";
-}
-
-int thread_count() {
-  int count = 0;
-  if (DIR* tasks = opendir("/proc/self/task")) {
-    while (dirent* entry = readdir(tasks)) count += entry->d_name[0] != '.';
-    closedir(tasks);
-  }
-  return count;
 }
 
 TEST(deviceLink, NoDeviceNoThread) {
