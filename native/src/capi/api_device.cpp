@@ -20,9 +20,24 @@ namespace {
 
 constexpr int32_t kFlexions = 3;
 
-template <class Array, class Field>
-void copy_fingers(const Array& from, Field& to) {
-  for (int32_t f = 0; f < FRUSTA_FINGER_COUNT; ++f) to[f] = from[f];
+// The calibration's fields, between frusta_device_def and GloveCalibration (either
+// way: they share names, the one as C arrays, the other as std::arrays).
+template <class From, class To>
+void copy_calibration(const From& from, To& to) {
+  for (int32_t f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
+    for (int32_t j = 0; j < kFlexions; ++j) {
+      to.curl_open[f][j] = from.curl_open[f][j];
+      to.curl_closed[f][j] = from.curl_closed[f][j];
+      to.flexion_open[f][j] = from.flexion_open[f][j];
+      to.flexion_closed[f][j] = from.flexion_closed[f][j];
+    }
+    to.splay_center[f] = from.splay_center[f];
+    to.splay_span[f] = from.splay_span[f];
+    to.abduction_range[f] = from.abduction_range[f];
+  }
+  to.brake_full_scale = from.brake_full_scale;
+  to.brake_units = from.brake_units;
+  to.analog_max = from.analog_max;
 }
 
 frusta_result in_range(double value, double low, double high, const char* field) {
@@ -60,20 +75,7 @@ frusta_result read_device_def(const frusta_device_def& in, DeviceLinkDef* link,
   if (frusta_result r = in_range(d.max_joint_torque, 0.0, 1e9, "max_joint_torque")) return r;
 
   GloveCalibration c;
-  for (int32_t f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
-    for (int32_t j = 0; j < kFlexions; ++j) {
-      c.curl_open[f][j] = in.curl_open[f][j];
-      c.curl_closed[f][j] = in.curl_closed[f][j];
-      c.flexion_open[f][j] = in.flexion_open[f][j];
-      c.flexion_closed[f][j] = in.flexion_closed[f][j];
-    }
-  }
-  copy_fingers(in.splay_center, c.splay_center);
-  copy_fingers(in.splay_span, c.splay_span);
-  copy_fingers(in.abduction_range, c.abduction_range);
-  c.brake_full_scale = in.brake_full_scale;
-  c.brake_units = in.brake_units;
-  c.analog_max = in.analog_max;
+  copy_calibration(in, c);
   if (frusta_result r = check_glove_calibration(c)) return r;
   *link = d;
   *calibration = c;
@@ -122,20 +124,7 @@ FRUSTA_API frusta_device_def frusta_default_device_def(void) {
   def.max_finger_resistance = d.max_finger_resistance;
   def.max_fingertip_force = d.max_fingertip_force;
   def.max_joint_torque = d.max_joint_torque;
-  for (int32_t f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
-    for (int32_t j = 0; j < kFlexions; ++j) {
-      def.curl_open[f][j] = c.curl_open[f][j];
-      def.curl_closed[f][j] = c.curl_closed[f][j];
-      def.flexion_open[f][j] = c.flexion_open[f][j];
-      def.flexion_closed[f][j] = c.flexion_closed[f][j];
-    }
-  }
-  copy_fingers(c.splay_center, def.splay_center);
-  copy_fingers(c.splay_span, def.splay_span);
-  copy_fingers(c.abduction_range, def.abduction_range);
-  def.brake_full_scale = c.brake_full_scale;
-  def.brake_units = c.brake_units;
-  def.analog_max = c.analog_max;
+  copy_calibration(c, def);
   def.internal_value = kDefCookie;
   return def;
 }
