@@ -16,7 +16,9 @@ static int g_failed;
 
 /* One check: prints "ok   <what>" or "FAIL <what>" and counts it; returns ok. */
 static int check(int ok, const char* format, ...)
-#if defined(__GNUC__)
+#if defined(__MINGW32__)  /* MinGW's printf is C99's (__USE_MINGW_ANSI_STDIO), not msvcrt's */
+    __attribute__((format(gnu_printf, 2, 3)))
+#elif defined(__GNUC__)
     __attribute__((format(printf, 2, 3)))
 #endif
     ;

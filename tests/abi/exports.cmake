@@ -5,6 +5,7 @@
 # FRUSTA_API functions for the runtime, bake_plugin.h's for the baker. For a PE file
 # (a DLL, read with objdump -p) it also fails if the DLL imports from anything but
 # the Windows system DLLs: no MinGW runtime to ship beside it.
+cmake_minimum_required(VERSION 3.22)  # IN_LIST, in script mode too
 file(READ "${HEADER}" text)
 if(EXPECT STREQUAL "bake_plugin")
   set(api_macro "FRUSTA_BAKE_PLUGIN_API")
@@ -80,7 +81,7 @@ endif()
 if(FORMAT STREQUAL "pe")
   # what every Windows since 7 has; anything else would have to ship beside the DLL
   set(system_dlls kernel32.dll user32.dll advapi32.dll setupapi.dll hid.dll ws2_32.dll
-                  msvcrt.dll bcrypt.dll shell32.dll ole32.dll cfgmgr32.dll)
+                  msvcrt.dll bcrypt.dll shell32.dll ole32.dll cfgmgr32.dll winmm.dll)
   foreach(dll IN LISTS imports)
     string(TOLOWER "${dll}" lower)
     if(NOT lower IN_LIST system_dlls AND NOT lower MATCHES "^api-ms-win-")

@@ -57,6 +57,68 @@ run_arm64() {
   qemu-aarch64-static -L /usr/aarch64-linux-gnu "$@"
 }
 
+# Windows x64 cross builds: Debian's mingw-w64 (posix threads, for std::thread) and
+# Wine to run the tests. hidapi and libusb have no MinGW packages in Debian: their
+# Debian sources are built for Windows by build_windows_libraries.
+FRUSTA_WINDOWS_PACKAGES=(g++-mingw-w64-x86-64-posix wine64 make bzip2)
+FRUSTA_WINDOWS_TOOLCHAIN="$ROOT/native/cmake/toolchains/x86_64-w64-mingw32.cmake"
+FRUSTA_WINE_DIR=/usr/lib/wine  # Debian's wine64 puts wine64 and wineserver here, not on PATH
+
+ensure_windows_packages() {
+  ensure_packages "${FRUSTA_WINDOWS_PACKAGES[@]}"
+}
+
+# build_windows_libraries PREFIX: hidapi (its Windows backend, with its own CMake) and
+# libusb (its Windows backend, with its own configure) from Debian's source packages
+# (bookworm's versions, as on Linux), static, into PREFIX. Done once per PREFIX.
+build_windows_libraries() {
+  local prefix="$1"
+  [ -f "$prefix/lib/libhidapi.a" ] && [ -f "$prefix/lib/libusb-1.0.a" ] && return 0
+  local work="$prefix/src"
+  rm -rf "$prefix" && mkdir -p "$work/apt/lists/partial" "$work/apt/sources"
+  # a private source list: the machine's apt configuration is left as it was
+  printf 'Types: deb-src\nURIs: http://deb.debian.org/debian\nSuites: bookworm\nComponents: main\nSigned-By: /usr/share/keyrings/debian-archive-keyring.gpg\n' \
+    >"$work/apt/sources/debian-src.sources"
+  local apt=(apt-get -qq -o Dir::Etc::SourceList=/dev/null -o Dir::Etc::SourceParts="$work/apt/sources"
+             -o Dir::State::Lists="$work/apt/lists" -o APT::Sandbox::User=root)
+  echo "frusta: fetching Debian's hidapi and libusb sources to build them for Windows" >&2
+  "${apt[@]}" update
+  (cd "$work" && "${apt[@]}" source --download-only hidapi=0.13.1-1 libusb-1.0=2:1.0.26-1 >/dev/null)
+  tar -xzf "$work/hidapi_0.13.1.orig.tar.gz" -C "$work"
+  tar -xjf "$work/libusb-1.0_1.0.26.orig.tar.bz2" -C "$work"
+  cmake -S "$work/hidapi-hidapi-0.13.1" -B "$work/hidapi-build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+        -DCMAKE_TOOLCHAIN_FILE="$FRUSTA_WINDOWS_TOOLCHAIN" -DBUILD_SHARED_LIBS=OFF \
+        -DHIDAPI_BUILD_HIDTEST=OFF -DCMAKE_INSTALL_PREFIX="$prefix" >/dev/null
+  cmake --build "$work/hidapi-build" >/dev/null
+  cmake --install "$work/hidapi-build" >/dev/null
+  # hidapi.h marks its functions dllexport on Windows unconditionally; linked into
+  # frusta.dll they must stay inside it: drop the objects' export directives
+  x86_64-w64-mingw32-objcopy --remove-section=.drectve "$prefix/lib/libhidapi.a"
+  (cd "$work/libusb-1.0.26" &&
+     ./configure -q --host=x86_64-w64-mingw32 CC=x86_64-w64-mingw32-gcc-posix --prefix="$prefix" \
+                 --enable-static --disable-shared >/dev/null &&
+     make -s -j"$(nproc)" install >/dev/null 2>&1)
+}
+
+# build_windows_tree DIR BUILD_TYPE [cmake args...]: the runtime and tests for Windows
+# x64, without the baker (no Embree for Windows here). Builds $FRUSTA_BUILD_TARGETS.
+build_windows_tree() {
+  local dir="$1" type="$2"
+  shift 2
+  build_windows_libraries "$ROOT/build/windows-libs"
+  # the build lists each test program's tests by running it under Wine
+  WINEPREFIX="$ROOT/build/windows/wine-prefix" WINEDEBUG=-all \
+  build_tree "$dir" "$type" -DCMAKE_TOOLCHAIN_FILE="$FRUSTA_WINDOWS_TOOLCHAIN" \
+    -DFRUSTA_WINDOWS_LIBS="$ROOT/build/windows-libs" -DFRUSTA_BUILD_BAKER=OFF \
+    -DFRUSTA_BUILD_SAMPLES=OFF -DFRUSTA_BUILD_BENCHMARKS=OFF "$@"
+}
+
+# run_windows PROGRAM [args...]: a Windows program under Wine, in the prefix of
+# build/windows (made on first use)
+run_windows() {
+  WINEPREFIX="$ROOT/build/windows/wine-prefix" WINEDEBUG=-all "$FRUSTA_WINE_DIR/wine64" "$@"
+}
+
 # build_tree DIR BUILD_TYPE [extra cmake args...]: configure (once) and build (only
 # $FRUSTA_BUILD_TARGETS when set)
 build_tree() {

@@ -13,7 +13,9 @@ namespace frusta {
 // Record message (printf-style) for this thread and return code, so a shim can
 // `return fail(FRUSTA_ERROR_..., "field %s ...", ...)`.
 frusta_result fail(frusta_result code, const char* format, ...)
-#if defined(__GNUC__)
+#if defined(__MINGW32__)  // MinGW's printf is C99's (__USE_MINGW_ANSI_STDIO), not msvcrt's
+    __attribute__((format(gnu_printf, 2, 3)))
+#elif defined(__GNUC__)
     __attribute__((format(printf, 2, 3)))
 #endif
     ;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// What could be a glove on this machine now: serial ports (USB serial, Bluetooth
-// RFCOMM, and the stable /dev/serial/by-id names), vendor-defined HID devices, and
-// every USB device (for its ids). Slow (it walks /dev, hidapi and libusb): host only.
+// What could be a glove on this machine now: serial ports (serial_ports.h),
+// vendor-defined HID devices, and every USB device (for its ids). Slow (it walks /dev
+// or the registry, hidapi and libusb): host only.
 #pragma once
 
 #include <cstdint>

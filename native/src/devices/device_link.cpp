@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "runtime/periodic_clock.h"
+#include "runtime/timer_resolution.h"
 
 namespace frusta {
 
@@ -88,6 +89,7 @@ void DeviceLink::apply_capabilities(const DeviceCapabilities& announced) {
 }
 
 void DeviceLink::run() {
+  const FineTimerResolution fine_sleeps;
   uint8_t buffer[512];
   int64_t next_output = steady_ns();
   int64_t next_reconnect = 0;

@@ -74,8 +74,9 @@ frusta_result UsbWatch::watch_hotplug() {
 
 int32_t UsbWatch::poll_changes(int64_t timeout_us) {
   if (watching_) {
-    timeval timeout{static_cast<time_t>(timeout_us / 1000000),
-                    static_cast<suseconds_t>(timeout_us % 1000000)};
+    timeval timeout{};  // its fields' types differ between POSIX and Winsock
+    timeout.tv_sec = static_cast<decltype(timeout.tv_sec)>(timeout_us / 1000000);
+    timeout.tv_usec = static_cast<decltype(timeout.tv_usec)>(timeout_us % 1000000);
     libusb_handle_events_timeout_completed(context_, &timeout, nullptr);
   }
   const int32_t changes = changes_;

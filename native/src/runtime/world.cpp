@@ -12,6 +12,7 @@
 #include "core/error.h"
 #include "core/validate.h"
 #include "runtime/periodic_clock.h"
+#include "runtime/timer_resolution.h"
 
 namespace frusta {
 
@@ -308,6 +309,7 @@ void World::stop() {
 
 void World::run(double rate_hz, double spin_us) {
   using namespace std::chrono;
+  const FineTimerResolution fine_sleeps;
   PeriodicClock clock(duration_cast<PeriodicClock::Clock::duration>(duration<double>(1.0 / rate_hz)),
                       duration_cast<PeriodicClock::Clock::duration>(duration<double, std::micro>(spin_us)));
   clock.start();

@@ -121,16 +121,26 @@ namespace Frusta.Binding.Tests
                 foreach (string meta in Directory.GetFiles(dir, "*.meta"))
                 {
                     string asset = meta.Substring(0, meta.Length - 5);
-                    Assert.True(File.Exists(asset) || Directory.Exists(asset) || asset.EndsWith(".so"), $"{meta} has no asset");
+                    Assert.True(File.Exists(asset) || Directory.Exists(asset) || asset.EndsWith(".so") || asset.EndsWith(".dll"), $"{meta} has no asset");
                 }
             }
             Walk(TestEnv.Package);
-            string plugin = Path.Combine(TestEnv.Package, "Runtime", "Plugins", "Linux", "x86_64", "libfrusta.so.meta");
-            string text = File.ReadAllText(plugin);
-            Assert.Contains("PluginImporter:", text);
-            Assert.Matches(@"Editor: Editor\n    second:\n      enabled: 1\n      settings:\n        CPU: x86_64\n        DefaultValueInitialized: true\n        OS: Linux", text);
-            Assert.Matches(@"Standalone: Linux64\n    second:\n      enabled: 1\n      settings:\n        CPU: x86_64", text);
-            Assert.Matches(@"Standalone: Win64\n    second:\n      enabled: 0", text);
+            // each runtime library loads in its own editor and player only
+            void Plugin(string folder, string file, string editorOs, string player, string cpu)
+            {
+                string text = File.ReadAllText(Path.Combine(TestEnv.Package, "Runtime", "Plugins", folder, file + ".meta"));
+                Assert.Contains("PluginImporter:", text);
+                Assert.Matches(editorOs is null
+                    ? @"Editor: Editor\n    second:\n      enabled: 0"
+                    : $@"Editor: Editor\n    second:\n      enabled: 1\n      settings:\n        CPU: x86_64\n        DefaultValueInitialized: true\n        OS: {editorOs}", text);
+                foreach (string standalone in new[] { "Linux64", "Win64", "OSXUniversal" })
+                    Assert.Matches(standalone == player
+                        ? $@"Standalone: {standalone}\n    second:\n      enabled: 1\n      settings:\n        CPU: {cpu}"
+                        : $@"Standalone: {standalone}\n    second:\n      enabled: 0", text);
+            }
+            Plugin(Path.Combine("Linux", "x86_64"), "libfrusta.so", "Linux", "Linux64", "x86_64");
+            Plugin(Path.Combine("Linux", "arm64"), "libfrusta.so", null, "Linux64", "ARM64");
+            Plugin(Path.Combine("Windows", "x86_64"), "frusta.dll", "Windows", "Win64", "x86_64");
         }
 
         [Fact]

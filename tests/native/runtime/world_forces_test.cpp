@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
 
 #include "hand/hand_model.h"
 #include "runtime/world.h"
@@ -161,7 +162,7 @@ TEST(WorldForces, ABoxOnAnOpenPalmIsLiftedCarriedAndTippedOff) {
   World world(def);
   const int32_t hand = add_hand(world, model);
   // palm up: the hand turned over about its long axis, fingers curled a little
-  const glm::dquat up = scenes::about(vec3(1, 0, 0), M_PI);
+  const glm::dquat up = scenes::about(vec3(1, 0, 0), glm::pi<double>());
   HandState palm_up = scenes::open_hand(vec3(0.0), up);
   for (int f = 1; f < 5; ++f) scenes::set_flexion(palm_up, f, 0.3, 0.3, 0.3);
   double top = 0.0, centre_x = 0.0;  // of the palm spheres, turned over

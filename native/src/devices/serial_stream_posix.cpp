@@ -16,6 +16,7 @@ namespace frusta {
 
 namespace {
 
+// one case per kSerialBauds entry
 speed_t to_speed(int32_t baud) {
   switch (baud) {
     case 9600: return B9600;
@@ -34,8 +35,6 @@ speed_t to_speed(int32_t baud) {
 }
 
 }  // namespace
-
-bool is_supported_baud(int32_t baud) { return to_speed(baud) != B0; }
 
 SerialStream::SerialStream(std::string path, int32_t baud)
     : path_(std::move(path)), baud_(baud), name_("serial " + path_) {}
@@ -72,6 +71,8 @@ frusta_result SerialStream::open() {
   fd_ = fd;
   return FRUSTA_OK;
 }
+
+bool SerialStream::is_open() const { return fd_ >= 0; }
 
 void SerialStream::close() {
   if (fd_ >= 0) ::close(fd_);

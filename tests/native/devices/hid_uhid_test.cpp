@@ -1,10 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Our binary profile over HID reports: the report packing both ways, hidapi's real
-// backend asked for a glove that is not there, and, where the kernel offers /dev/uhid,
-// a virtual HID glove the real hidapi backend drives end to end. This machine has no
-// /dev/uhid: that part says so and skips.
-#include "devices/hid_stream.h"
-
+// Where the kernel offers /dev/uhid, a virtual HID glove the real hidapi hidraw backend
+// drives end to end. Machines without /dev/uhid (this one) say so and skip.
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <linux/input.h>
@@ -15,14 +11,13 @@
 #include <atomic>
 #include <chrono>
 #include <cstring>
-#include <random>
 #include <thread>
 #include <vector>
 
-#include "collecting_sink.h"
 #include "core/error.h"
 #include "devices/device_link.h"
 #include "devices/frusta_protocol.h"
+#include "devices/hid_stream.h"
 #include "hand/hand_model.h"
 #include "scenes/binary_glove.h"
 
@@ -31,67 +26,6 @@ namespace {
 
 namespace bp = binary_profile;
 constexpr uint16_t kVendor = 0x1209, kProduct = 0xF5F5;  // pid.codes' test range
-
-TEST(hidReports, FramesSplitIntoReportsAndJoinAgain) {
-  std::mt19937_64 rng(5);
-  std::uniform_real_distribution<double> angle(-3.0, 3.0);
-  std::vector<uint8_t> stream;
-  std::vector<DeviceSample> sent(40);
-  for (size_t i = 0; i < sent.size(); ++i) {
-    for (double& a : sent[i].angles) a = angle(rng);
-    bp::encode_sample(sent[i], static_cast<uint16_t>(i), &stream);
-  }
-  std::vector<std::vector<uint8_t>> reports;
-  for (size_t at = 0; at < stream.size();) {
-    std::vector<uint8_t> report(hid_reports::kReportSize, 0xAA);
-    at += hid_reports::pack(stream.data() + at, stream.size() - at, report.data());
-    reports.push_back(report);
-  }
-  EXPECT_EQ(reports.size(), (stream.size() + hid_reports::kMaxChunk - 1) / hid_reports::kMaxChunk);
-  EXPECT_EQ(reports.back()[hid_reports::kReportSize - 1], 0) << "padding is zeros";
-
-  FrustaProtocol host;
-  std::vector<uint8_t> hello;
-  host.start(&hello);
-  Collect sink;
-  for (const std::vector<uint8_t>& report : reports) {
-    const uint8_t* bytes = nullptr;
-    size_t count = 0;
-    ASSERT_TRUE(hid_reports::unpack(report.data(), report.size(), &bytes, &count));
-    host.feed(bytes, count, &sink);
-  }
-  ASSERT_EQ(sink.samples.size(), sent.size());
-  for (size_t i = 0; i < sent.size(); ++i)
-    EXPECT_NEAR(sink.samples[i].angles[7], sent[i].angles[7], 0.5 * bp::kAngleUnit + 1e-12);
-}
-
-TEST(hidReports, AReportClaimingMoreThanItHoldsIsDropped) {
-  uint8_t report[hid_reports::kReportSize] = {};
-  const uint8_t* bytes = nullptr;
-  size_t count = 0;
-  report[0] = 63;
-  EXPECT_TRUE(hid_reports::unpack(report, 64, &bytes, &count));
-  EXPECT_EQ(count, 63u);
-  EXPECT_FALSE(hid_reports::unpack(report, 40, &bytes, &count)) << "a short read";
-  report[0] = 64;
-  EXPECT_FALSE(hid_reports::unpack(report, 64, &bytes, &count));
-  EXPECT_FALSE(hid_reports::unpack(report, 0, &bytes, &count));
-}
-
-TEST(hidStream, AnAbsentGloveIsAnIoErrorNamingIt) {
-  HidStream stream(kVendor, kProduct, "FR-0042");
-  EXPECT_EQ(stream.open(), FRUSTA_ERROR_IO);  // through hidapi's hidraw backend
-  EXPECT_NE(std::strstr(frusta_last_error(), "hid 1209:f5f5:FR-0042: cannot open"), nullptr)
-      << frusta_last_error();
-  EXPECT_FALSE(stream.is_open());
-  uint8_t buffer[64];
-  size_t received = 1;
-  EXPECT_EQ(stream.read(buffer, sizeof buffer, 1000, &received), IoStatus::kDisconnected);
-  EXPECT_EQ(received, 0u);
-  bool dropped = true;
-  EXPECT_EQ(stream.write(buffer, 10, &dropped), IoStatus::kDisconnected);
-  EXPECT_FALSE(dropped);
-}
 
 // A HID glove made by the kernel's uhid: one vendor-defined 64-byte input and output
 // report, the binary profile inside as binary_profile.md's "Over HID" says.
