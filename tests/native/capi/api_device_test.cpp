@@ -10,7 +10,7 @@
 #include <thread>
 #include <vector>
 
-#include "capi_fixture.h"
+#include "device_api_fixture.h"
 #include "scenes/process_probe.h"
 #include "scenes/simulated_glove.h"
 
@@ -20,47 +20,6 @@ namespace {
 using scenes::SimulatedGlove;
 using scenes::temp_path;
 using scenes::thread_count;
-
-class DeviceApiTest : public CapiTest {
- protected:
-  void SetUp() override {
-    CapiTest::SetUp();
-    const frusta_world_def def = frusta_default_world_def();
-    ASSERT_EQ(frusta_create_world(&def, &world_), FRUSTA_OK) << frusta_last_error();
-    const frusta_hand_def hand = frusta_default_hand_def();
-    int32_t index = -1;
-    ASSERT_EQ(frusta_world_add_hand(world_, &hand, &index), FRUSTA_OK);
-  }
-  void TearDown() override {
-    if (frusta_world_is_valid(world_)) {
-      EXPECT_EQ(frusta_destroy_world(world_), FRUSTA_OK);
-    }
-    CapiTest::TearDown();
-  }
-
-  // the host's loop: step and read until done() or the time is up
-  bool run_until(const std::function<bool()>& done, double seconds) {
-    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-    frusta_world_state state{};
-    state.struct_size = sizeof state;
-    while (std::chrono::steady_clock::now() < end) {
-      EXPECT_EQ(frusta_world_step(world_), FRUSTA_OK);
-      EXPECT_EQ(frusta_world_read(world_, &state), FRUSTA_OK);
-      if (done()) return true;
-      std::this_thread::sleep_for(std::chrono::milliseconds(1));
-    }
-    return false;
-  }
-
-  frusta_device_status status(frusta_device_id device) {
-    frusta_device_status s{};
-    s.struct_size = sizeof s;
-    EXPECT_EQ(frusta_device_get_status(device, &s), FRUSTA_OK) << frusta_last_error();
-    return s;
-  }
-
-  frusta_world_id world_{};
-};
 
 SimulatedGlove::Firmware lucidgloves(int index_curl) {
   return [index_curl](int64_t) { return "A0B" + std::to_string(index_curl) + "C0D0E0\n"; };
