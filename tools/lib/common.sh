@@ -113,6 +113,23 @@ build_windows_tree() {
     -DFRUSTA_BUILD_SAMPLES=OFF -DFRUSTA_BUILD_BENCHMARKS=OFF "$@"
 }
 
+# start_wine: the Wine prefix of build/windows made (once), and one Wine server kept up
+# until stop_wine, so each test starts under a live server rather than racing one that
+# is shutting down. Wine's services inherit the output of the program that starts
+# them: they start here, off any pipe a caller waits on.
+start_wine() {
+  export WINEPREFIX="$ROOT/build/windows/wine-prefix" WINEDEBUG=-all
+  mkdir -p "$WINEPREFIX"
+  # refused (2) where a server runs already: that one serves
+  "$FRUSTA_WINE_DIR/wineserver" -p </dev/null >/dev/null 2>&1 || true
+  "$FRUSTA_WINE_DIR/wine64" wineboot -i </dev/null >/dev/null 2>&1
+}
+
+stop_wine() {
+  "$FRUSTA_WINE_DIR/wineserver" -k 2>/dev/null || true  # none running is fine
+  unset WINEPREFIX WINEDEBUG
+}
+
 # run_windows PROGRAM [args...]: a Windows program under Wine, in the prefix of
 # build/windows (made on first use)
 run_windows() {
