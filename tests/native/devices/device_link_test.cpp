@@ -102,14 +102,19 @@ std::array<int32_t, 5> last_brakes(const SimulatedGlove& glove) {
 
 // The glove speaks with the hand open, then curls the index into the box (a hand that
 // first appears inside an object is let out of it, not pushed: world_test).
+double index_flexion(World& world) {
+  return world.read().hands[0].haptic.angles[kIndexFlexion1];
+}
+
+// Curls the index into the box: done once the glove brakes and the host's view of the
+// world shows the curl (published a step or more after the world acted on it; under
+// ThreadSanitizer many steps)
 bool press(World& world, OpenGlovesFirmware& firmware, DeviceLink& link, const SimulatedGlove& glove) {
   if (!wait_until(world, [&] { return link.status().frames_ok > 3; }, 2.0)) return false;
   firmware.index_curl = 1500;
-  return wait_until(world, [&] { return last_brakes(glove)[kIndex] > 0; }, 2.0);
-}
-
-double index_flexion(World& world) {
-  return world.read().hands[0].haptic.angles[kIndexFlexion1];
+  const double pressed = default_glove_calibration().flexion_closed[kIndex][0] * 1500 / 4095;
+  return wait_until(world, [&] { return last_brakes(glove)[kIndex] > 0; }, 2.0) &&
+         wait_until(world, [&] { return std::fabs(index_flexion(world) - pressed) < 1e-9; }, 2.0);
 }
 
 bool all_zero(const DeviceCommand& c) {
