@@ -26,6 +26,7 @@
 #include "hand/hand_model.h"
 #include "runtime/step_histogram.h"
 #include "scenes/binary_glove.h"
+#include "scenes/baked_objects.h"
 #include "scenes/hand_scenarios.h"
 #include "scenes/simulated_glove.h"
 
@@ -124,9 +125,10 @@ Latency measure(const GloveSide& side, int transitions) {
   int32_t hand = -1;
   world.add_hand(model, &hand);
   ObjectDef box;
-  box.pose.position = scenes::index_press_box_centre(model, 0.015, 0.002);
+  box.pose.position =
+      scenes::index_press_box_centre(model, 0.5 * scenes::test_box_spec("press_box").size.x, 0.002);
   ObjectHandle handle;
-  world.add_object(scenes::baked_box(vec3(0.03), 0.0005), box, &handle);
+  world.add_object(scenes::test_box("press_box"), box, &handle);
   world.start();
 
   std::atomic<int> curl{0};

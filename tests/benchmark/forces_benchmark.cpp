@@ -27,6 +27,7 @@
 #include "runtime/step_histogram.h"
 #include "runtime/world.h"
 #include "bench_sections.h"
+#include "scenes/baked_objects.h"
 #include "scenes/hand_scenarios.h"
 
 namespace frusta {

@@ -25,6 +25,7 @@
 #include "geometry/exact_distance.h"
 #include "hand/hand_model.h"
 #include "bench_sections.h"
+#include "scenes/baked_objects.h"
 #include "scenes/hand_scenarios.h"
 #include "solver/hand_solver.h"
 #ifdef FRUSTA_WITH_MUJOCO

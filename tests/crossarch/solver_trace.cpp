@@ -2,9 +2,9 @@
 // frusta-solver-trace OUT.txt | --compare REFERENCE.txt
 // The engine's results at full precision, to compare across architectures: the exact
 // distance of 20000 seeded segment/sphere cases of every family, and every graphic hand
-// of every hand scenario that needs no baking (its scripted steps, then 100 held). tools/test
-// writes the x86_64 trace, then runs the arm64 build under qemu with --compare: the
-// same results, to the tolerances below, or the first difference named. Both builds use
+// of every hand scenario (its scripted steps, then 100 held). tools/test writes the
+// x86_64 trace, then runs the arm64 build under qemu with --compare: the same results,
+// to the tolerances below, or the first difference named. Both builds use
 // -ffp-contract=off and SSE2/NEON doubles (no x87), so they should differ only where
 // the C library's transcendental functions round differently.
 #include <cmath>
@@ -59,7 +59,6 @@ void write_hand(std::ostream& out, const std::string& name, int32_t step, const 
 void write_scenarios(std::ostream& out) {
   const HandModel model = make_hand_model(frusta_default_hand_def());
   for (const std::string& name : scenes::hand_scenario_names()) {
-    if (scenes::hand_scenario_bakes(name)) continue;  // a cross build has no baker
     const scenes::HandScenario s = scenes::make_hand_scenario(name);
     HandSolver solver(model, SolverParams{});
     const auto step = [&](int32_t t, const HandState& haptic) {

@@ -3,49 +3,17 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <stdexcept>
 
 #include <glm/geometric.hpp>
 #include <glm/gtx/quaternion.hpp>
 
-#if defined(FRUSTA_HAVE_BAKER)
-#include "bake/baker.h"
-#endif
 #include "geometry/exact_distance.h"
 #include "hand/hand_model.h"
 #include "scenes/meshes.h"
 #include "spheretree/tree_builder.h"
 
 namespace frusta::scenes {
-
-std::shared_ptr<const TreeFile> sample_tree(const std::string& name) {
-  static std::map<std::string, std::shared_ptr<const TreeFile>> cache;
-  auto it = cache.find(name);
-  if (it != cache.end()) return it->second;
-  auto file = std::make_shared<TreeFile>();
-  const std::string path = std::string(FRUSTA_SAMPLE_OBJECTS_DIR) + "/" + name + ".frtree";
-  if (load_tree_file(path, file.get()) != FRUSTA_OK)
-    throw std::runtime_error(path + ": " + frusta_last_error() + " (built by frusta_sample_objects)");
-  cache[name] = file;
-  return file;
-}
-
-std::shared_ptr<const TreeFile> baked_box(const vec3& size, double target_error) {
-#if defined(FRUSTA_HAVE_BAKER)
-  auto file = std::make_shared<TreeFile>();
-  BakeParams params;
-  params.target_error = target_error;
-  bool met = false;
-  if (bake_sphere_tree(make_box(size, 4), params, nullptr, file.get(), &met) != FRUSTA_OK)
-    throw std::runtime_error(std::string("baking a box: ") + frusta_last_error());
-  return file;
-#else
-  (void)size;
-  (void)target_error;
-  throw std::runtime_error("baked_box needs the baker (Embree), which this build lacks");
-#endif
-}
 
 std::shared_ptr<const TreeFile> ball_shell(int32_t leaves, double radius) {
   // spacing of N points over the sphere; a leaf of radius 0.75 spacing overlaps its
@@ -89,18 +57,9 @@ void HandScenario::add(std::shared_ptr<const TreeFile> tree, const RigidPose& po
   trees.push_back(std::move(tree));
 }
 
-bool hand_scenario_bakes(const std::string& name) {
-  return name == "plate_pinch" || name == "start_inside";
-}
-
 std::vector<std::string> hand_scenario_names() {
-  std::vector<std::string> names = {"box_press", "ball_grasp", "slide", "plate_pinch",
-                                    "bowl_press", "plate_teleport", "start_inside",
-                                    "palm_then_fingers"};
-#if !defined(FRUSTA_HAVE_BAKER)
-  names.erase(std::remove_if(names.begin(), names.end(), hand_scenario_bakes), names.end());
-#endif
-  return names;
+  return {"box_press",  "ball_grasp",     "slide",        "plate_pinch",
+          "bowl_press", "plate_teleport", "start_inside", "palm_then_fingers"};
 }
 
 namespace {
@@ -198,8 +157,7 @@ HandScenario plate_pinch(double pressed) {
   const vec3 thumb = pose.fingers[0].joint[3], index = pose.fingers[1].joint[3];
   s.axis = glm::normalize(index - thumb);
   s.anchor = thumb + s.axis * (model.fingers[0].radius[3] + 0.002);
-  static const std::shared_ptr<const TreeFile> plate = baked_box(vec3(0.03, 0.03, 0.004), 0.001);
-  s.add(plate, {s.anchor, glm::mat3_cast(glm::rotation(vec3(0, 0, 1), s.axis))});
+  s.add(test_box("pinch_plate"), {s.anchor, glm::mat3_cast(glm::rotation(vec3(0, 0, 1), s.axis))});
   const HandState before = pad_pushed(pose, pad_pushed(pose, pinch, 0, -s.axis, 0.008), 1, s.axis, 0.008);
   const HandState held = pad_pushed(pose, pad_pushed(pose, pinch, 0, s.axis, pressed), 1, -s.axis, pressed);
   s.steps = 300;
@@ -242,8 +200,7 @@ HandScenario plate_teleport() {
 // is what matters) and stays there
 HandScenario start_inside() {
   HandScenario s;
-  static const std::shared_ptr<const TreeFile> box = baked_box(vec3(0.40, 0.30, 0.16), 0.004);
-  s.add(box, at(vec3(0.08, 0.0, 0.0)));
+  s.add(test_box("room_box"), at(vec3(0.08, 0.0, 0.0)));
   HandState inside = open_hand();
   set_flexion(inside, 2, 0.3, 0.3, 0.3);
   s.steps = 200;

@@ -13,16 +13,12 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "hand/kinematics.h"
+#include "scenes/baked_objects.h"
 #include "solver/detection.h"
 #include "spheretree/tree_file.h"
 
 namespace frusta::scenes {
 
-// The sample objects baked at build time (samples/objects): ball, box, plate, bowl,
-// mug, octahedron. Loaded once per process; an empty tree when missing.
-std::shared_ptr<const TreeFile> sample_tree(const std::string& name);
-// A box baked on the spot (for sizes the samples lack).
-std::shared_ptr<const TreeFile> baked_box(const vec3& size, double target_error);
 // N leaves on a sphere's surface (Fibonacci points), sized to overlap so their union
 // is a closed shell whose outside stays within the radius: a ball of any leaf count.
 std::shared_ptr<const TreeFile> ball_shell(int32_t leaves, double radius);
@@ -47,10 +43,7 @@ struct HandScenario {
 
 // box_press, ball_grasp, slide, plate_pinch, bowl_press, plate_teleport, start_inside,
 // palm_then_fingers: the acceptance list, in that order.
-// (without the baker, as in cross builds, those that bake their box are left out)
 std::vector<std::string> hand_scenario_names();
-// Whether the scenario bakes a box when made (plate_pinch, start_inside).
-bool hand_scenario_bakes(const std::string& name);
 HandScenario make_hand_scenario(const std::string& name);
 // A 4 mm plate between the thumb and index pads, each pushed `pressed` metres past
 // it (0.01 in the acceptance scenario, a few mm for a hold); axis: the plate's normal,

@@ -41,9 +41,17 @@ ensure_arm64_packages() {
   ensure_packages "${FRUSTA_ARM64_PACKAGES[@]}"
 }
 
+# host_objects HOST_DIR: sets HOST_OBJECTS, the cmake arguments that point a build at
+# the sample objects and test boxes the build in HOST_DIR baked (cross builds have no
+# baker; sanitizer builds would bake for minutes)
+host_objects() {
+  HOST_OBJECTS=(-DFRUSTA_SAMPLE_OBJECTS_DIR="$ROOT/$1/samples/objects"
+                -DFRUSTA_TEST_OBJECTS_DIR="$ROOT/$1/tests/objects")
+}
+
 # build_arm64_tree DIR BUILD_TYPE [cmake args...]: the runtime, tests and benchmarks for
-# Linux arm64, without the baker (no Embree there); pass FRUSTA_SAMPLE_OBJECTS_DIR, the
-# sample objects a host build baked. Builds $FRUSTA_BUILD_TARGETS when set.
+# Linux arm64, without the baker (no Embree there); pass host_objects' arguments, the
+# objects a host build baked. Builds $FRUSTA_BUILD_TARGETS when set.
 build_arm64_tree() {
   local dir="$1" type="$2"
   shift 2

@@ -21,6 +21,7 @@
 #include "devices/serial_stream.h"
 #include "hand/hand_model.h"
 #include "scenes/binary_glove.h"
+#include "scenes/baked_objects.h"
 #include "scenes/hand_scenarios.h"
 #include "scenes/process_probe.h"
 #include "scenes/simulated_glove.h"
@@ -41,13 +42,13 @@ constexpr int kIndexFlexion1 = kIndex * FRUSTA_JOINTS_PER_FINGER + 1;
 struct Scene {
   Scene() : world(WorldDef{}) {
     const HandModel model = make_hand_model(frusta_default_hand_def());
-    const double half = 0.015;
+    const double half = 0.5 * scenes::test_box_spec("press_box").size.x;
     ObjectDef box;
     box.pose.position = scenes::index_press_box_centre(model, half, 0.002);
     int32_t hand = -1;
     EXPECT_EQ(world.add_hand(model, &hand), FRUSTA_OK);
     ObjectHandle handle;
-    EXPECT_EQ(world.add_object(scenes::baked_box(vec3(2 * half), 0.0005), box, &handle), FRUSTA_OK);
+    EXPECT_EQ(world.add_object(scenes::test_box("press_box"), box, &handle), FRUSTA_OK);
     EXPECT_EQ(world.start(), FRUSTA_OK);
   }
   ~Scene() { world.stop(); }

@@ -24,6 +24,7 @@
 
 #include "hand/hand_model.h"
 #include "runtime/world.h"
+#include "scenes/baked_objects.h"
 #include "scenes/hand_scenarios.h"
 
 namespace frusta {

@@ -12,6 +12,7 @@
 
 #include "hand/hand_model.h"
 #include "runtime/world.h"
+#include "scenes/baked_objects.h"
 #include "scenes/hand_scenarios.h"
 
 namespace frusta {
@@ -47,7 +48,7 @@ TEST(WorldForces, FingertipPressedIntoABakedBoxFeelsStiffnessTimesDepth) {
   const HandModel model = right_hand();
   const HandPose open = pose_of(model, scenes::open_hand());
   const vec3 tip = open.fingers[kIndex].joint[3];
-  const double half = 0.01;
+  const double half = 0.5 * scenes::test_box_spec("fingertip_box").size.x;
   // from 5 mm behind the tip's centre on: under the distal segment only
   const vec3 centre =
       tip + vec3(half - 0.005, 0.0, -(model.fingers[kIndex].radius[3] + half));
@@ -57,7 +58,7 @@ TEST(WorldForces, FingertipPressedIntoABakedBoxFeelsStiffnessTimesDepth) {
   World world(WorldDef{});
   const int32_t hand = add_hand(world, model);
   ObjectHandle handle;
-  ASSERT_EQ(world.add_object(scenes::baked_box(vec3(2 * half), 0.0002), box, &handle), FRUSTA_OK);
+  ASSERT_EQ(world.add_object(scenes::test_box("fingertip_box"), box, &handle), FRUSTA_OK);
 
   for (double depth : {0.001, 0.003, 0.006}) {
     // the hand lowered; the solver keeps the fingertip on the face (the palm pivots a
@@ -171,15 +172,16 @@ TEST(WorldForces, ABoxOnAnOpenPalmIsLiftedCarriedAndTippedOff) {
     centre_x += p.center.x / static_cast<double>(model.palm_spheres.size());
   }
   // a 5 cm box of 50 g dropped from 1 mm onto the palm
+  const double edge = scenes::test_box_spec("lifted_box").size.x;
   ObjectDef object;
-  object.pose.position = vec3(centre_x, 0.0, top + 0.025 + 0.001);
+  object.pose.position = vec3(centre_x, 0.0, top + 0.5 * edge + 0.001);
   object.dynamic = true;
   object.mass = 0.05;
-  object.inertia = vec3(object.mass * 0.05 * 0.05 / 6);
+  object.inertia = vec3(object.mass * edge * edge / 6);
   object.linear_damping = object.angular_damping = 0.5;  // air, roughly
   object.material.normal_damping = 2.0 * std::sqrt(kDefaultContactStiffness * object.mass);
   ObjectHandle handle;
-  ASSERT_EQ(world.add_object(scenes::baked_box(vec3(0.05), 0.0005), object, &handle), FRUSTA_OK);
+  ASSERT_EQ(world.add_object(scenes::test_box("lifted_box"), object, &handle), FRUSTA_OK);
   const size_t slot = static_cast<size_t>(handle.slot);
   const vec3 start = object.pose.position;
 
