@@ -26,7 +26,10 @@ TEST(PeriodicClock, DeadlinesAreAbsoluteSoLatenessDoesNotAccumulate) {
 }
 
 TEST(PeriodicClock, AShortStallIsCaughtUpTickByTick) {
-  PeriodicClock clock(milliseconds(1), microseconds(100));
+  // short: within the burst, which is made far longer than the stall, since a loaded
+  // machine can stretch a 5 ms sleep past the default 10 periods (the ticks would be
+  // dropped, as ALongStallDropsAllButOneBurst checks)
+  PeriodicClock clock(milliseconds(1), microseconds(100), 1000);
   clock.start();
   clock.wait();
   const PeriodicClock::Clock::time_point before = clock.tick();
