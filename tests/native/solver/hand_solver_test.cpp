@@ -87,7 +87,9 @@ TEST(HandSolver, InFreeSpaceTheGraphicHandIsTheHapticHand) {
   }
 }
 
-TEST(HandSolver, FingertipPressedIntoABoxFaceStopsOnIt) {
+// HandSolverScenario: the acceptance list's scripted scenarios (scenes/hand_scenarios.h),
+// every step checked against the exact reference
+TEST(HandSolverScenario, FingertipPressedIntoABoxFaceStopsOnIt) {
   const HandScenario s = make_hand_scenario("box_press");
   testing::RunLog log;
   HandSolver solver = run_scripted(s, log);
@@ -97,7 +99,7 @@ TEST(HandSolver, FingertipPressedIntoABoxFaceStopsOnIt) {
   expect_holds_and_rejects_bad_input(solver, s, log);
 }
 
-TEST(HandSolver, DeepGraspOfABallLeavesEveryFingerOnItsSurface) {
+TEST(HandSolverScenario, DeepGraspOfABallLeavesEveryFingerOnItsSurface) {
   const HandScenario s = make_hand_scenario("ball_grasp");
   testing::RunLog log;
   HandSolver solver = run_scripted(s, log);
@@ -105,7 +107,7 @@ TEST(HandSolver, DeepGraspOfABallLeavesEveryFingerOnItsSurface) {
   expect_holds_and_rejects_bad_input(solver, s, log);
 }
 
-TEST(HandSolver, FingertipSlidesAlongASurfaceWithoutSinking) {
+TEST(HandSolverScenario, FingertipSlidesAlongASurfaceWithoutSinking) {
   const HandScenario s = make_hand_scenario("slide");
   testing::RunLog log;
   HandSolver solver = run_scripted(s, log);
@@ -115,7 +117,7 @@ TEST(HandSolver, FingertipSlidesAlongASurfaceWithoutSinking) {
   expect_holds_and_rejects_bad_input(solver, s, log);
 }
 
-TEST(HandSolver, ThumbAndIndexPinchAThinPlate) {
+TEST(HandSolverScenario, ThumbAndIndexPinchAThinPlate) {
   const HandScenario s = make_hand_scenario("plate_pinch");
   HandSolver probe(default_model(), SolverParams{});
   StepStats first;
@@ -131,7 +133,7 @@ TEST(HandSolver, ThumbAndIndexPinchAThinPlate) {
   expect_holds_and_rejects_bad_input(solver, s, log);
 }
 
-TEST(HandSolver, FingersPressIntoAConcaveBowl) {
+TEST(HandSolverScenario, FingersPressIntoAConcaveBowl) {
   const HandScenario s = make_hand_scenario("bowl_press");
   testing::RunLog log;
   HandSolver solver = run_scripted(s, log);
@@ -139,7 +141,7 @@ TEST(HandSolver, FingersPressIntoAConcaveBowl) {
   expect_holds_and_rejects_bad_input(solver, s, log);
 }
 
-TEST(HandSolver, HapticHandTeleportingThroughAPlateLeavesTheGraphicHandOnTop) {
+TEST(HandSolverScenario, HapticHandTeleportingThroughAPlateLeavesTheGraphicHandOnTop) {
   const HandScenario s = make_hand_scenario("plate_teleport");
   testing::RunLog log;
   HandSolver solver = run_scripted(s, log);
@@ -185,7 +187,7 @@ TEST(HandSolver, APassedDeadlineStopsAfterOneSubStepAndTheHandLagsSafely) {
   EXPECT_FALSE(solver.contacts().empty()) << "and the hand ends resting on the plate";
 }
 
-TEST(HandSolver, HapticHandStartingInsideAnObjectIsPlacedOutside) {
+TEST(HandSolverScenario, HapticHandStartingInsideAnObjectIsPlacedOutside) {
   const HandScenario s = make_hand_scenario("start_inside");
   HandSolver solver(default_model(), SolverParams{});
   StepStats first;
@@ -198,7 +200,7 @@ TEST(HandSolver, HapticHandStartingInsideAnObjectIsPlacedOutside) {
   expect_holds_and_rejects_bad_input(solver, s, log);
 }
 
-TEST(HandSolver, PalmPressedFlatOnABoxThenFingersClose) {
+TEST(HandSolverScenario, PalmPressedFlatOnABoxThenFingersClose) {
   const HandScenario s = make_hand_scenario("palm_then_fingers");
   testing::RunLog log;
   HandSolver solver = run_scripted(s, log);
