@@ -21,18 +21,20 @@ function(frusta_target_options target)
     target_compile_options(${target} PRIVATE -fsanitize=thread -fno-omit-frame-pointer)
     target_link_options(${target} PRIVATE -fsanitize=thread)
   endif()
-  get_target_property(type ${target} TYPE)
-  if((FRUSTA_SANITIZE OR FRUSTA_SANITIZE_THREAD) AND NOT type STREQUAL "EXECUTABLE")
+  if(FRUSTA_SANITIZE OR FRUSTA_SANITIZE_THREAD)
     # a sanitized Debug build compiles the libraries (the engine, the baker, the test
     # scenes) at -O1, as ASan's authors advise, and the programs at -O0: under ASan
     # the unit tests took 298 s all at -O0, 78 s so, and 60 s all at -O1, which
     # took 257 s to build instead of 150 (the test programs are big and run little)
-    target_compile_options(${target} PRIVATE $<$<CONFIG:Debug>:-O1>)
-  endif()
-  if((FRUSTA_SANITIZE OR FRUSTA_SANITIZE_THREAD) AND CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
-    # optimised and instrumented, GCC 12 finds uninitialised members inside libstdc++'s
-    # std::regex that are not there (GCC bug 105562); the unsanitised builds keep the
-    # warning
-    target_compile_options(${target} PRIVATE -Wno-maybe-uninitialized)
+    get_target_property(type ${target} TYPE)
+    if(NOT type STREQUAL "EXECUTABLE")
+      target_compile_options(${target} PRIVATE $<$<CONFIG:Debug>:-O1>)
+    endif()
+    if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
+      # optimised and instrumented, GCC 12 finds uninitialised members inside
+      # libstdc++'s std::regex that are not there (GCC bug 105562); the unsanitised
+      # builds keep the warning
+      target_compile_options(${target} PRIVATE -Wno-maybe-uninitialized)
+    endif()
   endif()
 endfunction()

@@ -101,15 +101,16 @@ std::array<int32_t, 5> last_brakes(const SimulatedGlove& glove) {
   return units;
 }
 
-// The glove speaks with the hand open, then curls the index into the box (a hand that
-// first appears inside an object is let out of it, not pushed: world_test).
+// The index's first flexion as the host sees the glove's input.
 double index_flexion(World& world) {
   return world.read().hands[0].haptic.angles[kIndexFlexion1];
 }
 
-// Curls the index into the box: done once the host's view of the world shows the curl
-// (a step or more after the world acted on it) followed by a graphic hand that touches
-// the box, and then the glove brakes. A world behind its deadline (under
+// The glove speaks with the hand open, then curls the index into the box (a hand that
+// first appears inside an object is let out of it, not pushed: world_test). Done once
+// the host's view of the world shows the curl (a step or more after the world acted on
+// it) followed by a graphic hand that touches the box, and then the glove brakes. A
+// world behind its deadline (under
 // ThreadSanitizer, on a loaded machine) follows the curl over several steps, and the
 // finger leaves the face on the way while its distal joints curl round, its brake off
 // for those steps: the press is steady only once the hand has caught up.
