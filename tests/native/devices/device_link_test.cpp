@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -14,6 +15,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "devices/alpha_encoding.h"
 #include "devices/frusta_protocol.h"
@@ -209,8 +211,15 @@ TEST(deviceLink, BinaryProfileGloveHandshakesDrivesTheHandAndReadsCommandsBack) 
   const size_t before = firmware.commands().size();
   keep_reading(scene.world, 0.5);
   const auto commands = firmware.commands(before);
-  EXPECT_NEAR(static_cast<double>(commands.size()), 250.0, 250.0 * 0.25) << "500 a second";
-  ASSERT_FALSE(commands.empty());
+  // 500 a second: the median spacing over ten commands, which a loaded machine's stall
+  // leaves alone (the link skips the commands it could not send in time, so a count
+  // over the window fell to 162 of 250 under ASan beside another test)
+  ASSERT_GT(commands.size(), 20u);
+  std::vector<double> spacing;
+  for (size_t i = 10; i < commands.size(); ++i)
+    spacing.push_back(static_cast<double>(commands[i].time_ns - commands[i - 10].time_ns) / 10e9);
+  std::nth_element(spacing.begin(), spacing.begin() + spacing.size() / 2, spacing.end());
+  EXPECT_NEAR(spacing[spacing.size() / 2], 1.0 / 500.0, 0.25 / 500.0) << "500 a second";
   const binary_profile::Command& last = commands.back().command;
   EXPECT_EQ(last.outputs, caps.outputs);
   EXPECT_GT(last.command.finger_resistance[kIndex], 0.0);
