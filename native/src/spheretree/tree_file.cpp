@@ -40,8 +40,8 @@ namespace {
 #endif
 
 constexpr char kMagic[8] = {'F', 'R', 'U', 'S', 'T', 'R', 'E', 'E'};
-constexpr size_t kHeaderBytes = 160;
-constexpr size_t kChecksumOffset = 152;
+constexpr size_t kHeaderBytes = kTreeHeaderBytes;
+constexpr size_t kChecksumOffset = kTreeChecksumOffset;
 constexpr size_t kNodeBytes = 24;
 constexpr size_t kLeafBytes = 32;
 static_assert(sizeof(TreeNode) == kNodeBytes, "TreeNode is stored as is");
@@ -133,6 +133,8 @@ frusta_result check_structure(const SphereTree& t, const char* name) {
 }
 
 }  // namespace
+
+uint64_t tree_file_checksum(const uint8_t* data, size_t size) { return checksum(data, size); }
 
 std::vector<uint8_t> encode_tree_file(const TreeFile& file) {
   const SphereTree& t = file.tree;

@@ -33,6 +33,12 @@ struct TreeFile {
 };
 
 constexpr uint32_t kTreeFormatVersion = 1;
+constexpr size_t kTreeHeaderBytes = 160;
+constexpr size_t kTreeChecksumOffset = 152;
+
+// The checksum a file of size >= kTreeHeaderBytes stores at kTreeChecksumOffset,
+// computed over its other bytes. Public so the fuzzer can repair the files it mutates.
+uint64_t tree_file_checksum(const uint8_t* data, size_t size);
 
 // Encode/decode in memory (the file functions wrap these; tests use them too).
 std::vector<uint8_t> encode_tree_file(const TreeFile& file);
