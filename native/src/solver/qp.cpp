@@ -140,10 +140,13 @@ QpResult solve_projection_qp(int n, const double* weights, const double* target,
           t1 = active.u[k] / r[k];
           drop = k;
         }
-      // primal step: the length that satisfies row p
+      // primal step: the length that satisfies row p. With n rows active their normals
+      // span every direction, so z is zero (rounding leaves a speck of it, which once
+      // took a seventh row into a set of six): only a dual step is left
+      const bool full = active.size >= n;
       const double zz = dot(n, z, np);
       const double violation = dot(n, np, y) - rows[p].b;
-      const double t2 = zz > 1e-20 * dot(n, np, np) ? -violation / zz : kInfinity;
+      const double t2 = !full && zz > 1e-20 * dot(n, np, np) ? -violation / zz : kInfinity;
       if (t1 == kInfinity && t2 == kInfinity) {
         result.status = QpStatus::kInfeasible;
         result.active = active.size;

@@ -123,5 +123,69 @@ TEST(ProjectionQp, WeightsSetWhichVariableGivesWay) {
   EXPECT_NEAR(x[1], 0.2, 1e-15);
 }
 
+// A palm QP met in a world (a dynamic cube of absurdly small mass, a palm swinging
+// through it): seven rows on six variables, nearly dependent. Rounding left a speck of
+// primal direction once all six were active, and the seventh row was appended past
+// the active set's end (a stack overflow under ASan).
+TEST(ProjectionQp, AFullActiveSetTakesNoSeventhRow) {
+  const int n = 6;
+  const double w[n] = {0x1p+0, 0x1p+0, 0x1p+0, 0x1.27bb2fec56d5dp-5, 0x1.27bb2fec56d5dp-5,
+                       0x1.27bb2fec56d5dp-5};
+  const double target[n] = {-0x1.86375c207408dp-8, 0x1.cf3a05e23680ep-10, 0x1.ef74c6b9ba0c3p-5,
+                            0x1.c53e2f9936becp-9,  -0x1.201beead87e8ep-4, -0x1.03af0e3927582p-7};
+  const double a[7][n + 1] = {
+      {0x1.d9c159a25341fp-1, 0x1.c63fc7a66a457p-3, 0x1.0dd4a8828013ep-2, -0x1.11215727a885ap-5,
+       -0x1.416d387048a7bp-5, 0x1.3369aef95c754p-3, 0x1.702c177ee1546p-11},
+      {0x1.9fc3e16ad301ap-2, 0x1.83abed1dd589p-2, -0x1.a86a2f23b7837p-1, -0x1.707efb7572ee6p-6,
+       0x1.fe1acc28ba40fp-5, 0x1.1d73311b0286p-6, 0x1.eb5900262f17ap-11},
+      {0x1.19c2944577729p-2, 0x1.00ef2e4de5554p-4, -0x1.e98053e377058p-1, 0x1.c379f82063c72p-6,
+       0x1.2ca1c1e698919p-4, 0x1.a1abdf6b70035p-7, 0x1.0e15b5098f122p-8},
+      {-0x1.348cdaf1f6769p-2, 0x1.e341f486324a9p-1, 0x1.023366fd8c041p-3, -0x1.88713d0d8cc64p-8,
+       -0x1.11eab93171e04p-7, 0x1.8b6e209c1f573p-5, 0x1.cad7ac2bc51ebp-8},
+      {0x1.6aedfaf60b9dp-3, -0x1.f44131ebc224ap-1, -0x1.afa650f4b70c7p-4, 0x1.528ac2b109581p-7,
+       0x1.e8de0838ee136p-8, -0x1.a83e68b97f912p-5, 0x1.cfa47f41ae24cp-7},
+      {-0x1.a0e8f82447f1ep-1, -0x1.038d28f64e8c6p-1, -0x1.d9cb6ce1a5afap-3, 0x1.fae43051f34f1p-6,
+       0x1.6fb0ec6dac6c3p-6, -0x1.43bad14f9b6bap-3, -0x1.fdaab57202cd6p-12},
+      {-0x1.116a2457d9651p-6, -0x1.7096b86a5b64p-3, -0x1.d6541c105a45dp-1, 0x1.2aabdc0548596p-4,
+       0x1.592e39de34836p-2, -0x1.13f029ca90979p-4, -0x1.a5e04f8f79567p-11}};
+  QpRow rows[7];
+  for (int i = 0; i < 7; ++i) {
+    for (int j = 0; j < n; ++j) rows[i].a[j] = a[i][j];
+    rows[i].b = a[i][n];
+  }
+  double x[n] = {};
+  const QpResult r = solve_projection_qp(n, w, target, rows, 7, 64, x);
+  EXPECT_LE(r.active, n);
+  for (double v : x) EXPECT_TRUE(std::isfinite(v));
+}
+
+// The same on random problems built to be nearly degenerate: more rows than variables,
+// each a tiny perturbation of a few directions, every variable count.
+TEST(ProjectionQp, NearlyDependentRowsNeverOverfillTheActiveSet) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (int c = 0; c < 20000; ++c) {
+    const int n = 1 + c % kMaxQpVariables;
+    double w[kMaxQpVariables], target[kMaxQpVariables];
+    for (int j = 0; j < n; ++j) {
+      w[j] = std::exp(4.0 * unit(rng));
+      target[j] = unit(rng);
+    }
+    const double spread = std::pow(10.0, -16.0 * std::fabs(unit(rng)));
+    std::vector<QpRow> rows(static_cast<size_t>(n + 1 + c % 8));
+    for (size_t i = 0; i < rows.size(); ++i) {
+      const QpRow& base = rows[i % static_cast<size_t>(n)];
+      for (int j = 0; j < n; ++j)
+        rows[i].a[j] = i < static_cast<size_t>(n) ? unit(rng) : base.a[j] + spread * unit(rng);
+      rows[i].b = 2.0 + unit(rng);  // every row cuts off the target region
+    }
+    double x[kMaxQpVariables] = {};
+    const QpResult r = solve_projection_qp(n, w, target, rows.data(),
+                                           static_cast<int32_t>(rows.size()), 64, x);
+    ASSERT_LE(r.active, n) << "case " << c;
+    for (int j = 0; j < n; ++j) ASSERT_TRUE(std::isfinite(x[j])) << "case " << c;
+  }
+}
+
 }  // namespace
 }  // namespace frusta
