@@ -158,7 +158,7 @@
   X(frusta_world_hand, slipping, 448, 4)              \
   X(frusta_world_hand, substeps, 452, 4)              \
   X(frusta_world_hand, lagging, 456, 4)               \
-  X(frusta_world_hand, reserved0, 460, 4)             \
+  X(frusta_world_hand, infeasible, 460, 4)            \
   X(frusta_world_hand, fingertip_force, 464, 120)     \
   X(frusta_world_hand, finger_resistance, 584, 40)    \
   X(frusta_world_hand, joint_torque, 624, 160)        \

@@ -216,8 +216,9 @@ static void test_create_destroy(void) {
   check(chained, "each segment starts where the previous one of its finger ends");
   check(seg[FRUSTA_HAND_SEGMENT_COUNT].proximal_radius == 0.0,
         "get_segments writes only FRUSTA_HAND_SEGMENT_COUNT entries");
-  expect_ok("get_segments(out_count null)",
-            frusta_hand_get_segments(hand, seg, FRUSTA_HAND_SEGMENT_COUNT, NULL));
+  expect_error("get_segments(out_count null)",
+               frusta_hand_get_segments(hand, seg, FRUSTA_HAND_SEGMENT_COUNT, NULL),
+               FRUSTA_ERROR_NULL_POINTER, "out_count", NULL);
 
   int32_t palm_count = -1;
   expect_ok("get_palm_spheres(null, 0) size query",
@@ -301,14 +302,16 @@ static void test_def_errors(void) {
       double value;
       frusta_result want;
       const char* text;
-    } bad[6] = {
+    } bad[7] = {
         {NAN, FRUSTA_ERROR_NOT_FINITE, "nan"},
         {INFINITY, FRUSTA_ERROR_NOT_FINITE, "inf"},
         {-INFINITY, FRUSTA_ERROR_NOT_FINITE, "-inf"},
         {field->too_big, FRUSTA_ERROR_OUT_OF_RANGE, field->too_big > 0 ? "1e+300" : "-1e+300"},
         {-0.01, FRUSTA_ERROR_OUT_OF_RANGE, "-0.01"},
-        {0.0, FRUSTA_ERROR_OUT_OF_RANGE, NULL}};
-    const int cases = field->positive ? 6 : 4;
+        {0.0, FRUSTA_ERROR_OUT_OF_RANGE, NULL},
+        /* a hand (or a part) 1e-300 m long was once accepted */
+        {1e-300, FRUSTA_ERROR_OUT_OF_RANGE, "1e-300"}};
+    const int cases = field->positive ? 7 : 4;
     for (int k = 0; k < cases; ++k) {
       char what[96];
       def = good;
@@ -319,6 +322,16 @@ static void test_def_errors(void) {
       check(memcmp(&out, &sentinel, sizeof out) == 0, "%s leaves out_hand unchanged", what);
     }
   }
+
+  /* a palm too thin for its size would be a grid of 10^10 spheres (an int overflow
+     and a 45 GB allocation once): refused, naming the thickness */
+  def = good;
+  def.palm_length = def.palm_breadth = 5.0;
+  def.palm_thickness = 1e-4;
+  out = sentinel;
+  expect_error("create_hand(5 m palm, 0.1 mm thick)", frusta_create_hand(&def, &out),
+               FRUSTA_ERROR_OUT_OF_RANGE, "palm_thickness", "4096");
+  check(memcmp(&out, &sentinel, sizeof out) == 0, "the thin palm leaves out_hand unchanged");
 
   /* limits: outside [-pi, pi], and min > max */
   def = good;
@@ -390,6 +403,7 @@ static void test_set_size(void) {
       {-INFINITY, 0.09, FRUSTA_ERROR_NOT_FINITE, "hand_length", "-inf"},
       {1e300, 0.09, FRUSTA_ERROR_OUT_OF_RANGE, "hand_length", "1e+300"},
       {0.0, 0.09, FRUSTA_ERROR_OUT_OF_RANGE, "hand_length", NULL},
+      {1e-300, 0.09, FRUSTA_ERROR_OUT_OF_RANGE, "hand_length", "1e-300"},
       {-0.19, 0.09, FRUSTA_ERROR_OUT_OF_RANGE, "hand_length", "-0.19"},
       {0.19, NAN, FRUSTA_ERROR_NOT_FINITE, "hand_breadth", "nan"},
       {0.19, INFINITY, FRUSTA_ERROR_NOT_FINITE, "hand_breadth", "inf"},
@@ -621,7 +635,7 @@ static void test_hand_inputs(void) {
                    {0, INFINITY, FRUSTA_ERROR_NOT_FINITE, "inf"},
                    {19, -INFINITY, FRUSTA_ERROR_NOT_FINITE, "-inf"},
                    {7, 1e300, FRUSTA_ERROR_OUT_OF_RANGE, "1e+300"},
-                   {12, -101.0, FRUSTA_ERROR_OUT_OF_RANGE, "-101"}};
+                   {12, -12.6, FRUSTA_ERROR_OUT_OF_RANGE, "-12.6"}};
   for (size_t b = 0; b < sizeof angle_bad / sizeof angle_bad[0]; ++b) {
     double bad[FRUSTA_HAND_JOINT_COUNT];
     char field[32];
@@ -679,8 +693,11 @@ static void test_hand_inputs(void) {
   check(memcmp(palm, palm_pattern, sizeof palm) == 0, "failed get_palm_spheres writes no sphere");
   /* "On failure ... nothing the call would have changed has changed" (frusta.h) */
   check(count == -7, "failed get_palm_spheres leaves out_count unchanged (got %d)", count);
-  expect_ok("get_palm_spheres(exact capacity, out_count null)",
-            frusta_hand_get_palm_spheres(hand, palm, palm_count, NULL));
+  expect_error("get_palm_spheres(exact capacity, out_count null)",
+               frusta_hand_get_palm_spheres(hand, palm, palm_count, NULL),
+               FRUSTA_ERROR_NULL_POINTER, "out_count", NULL);
+  expect_ok("get_palm_spheres(exact capacity)",
+            frusta_hand_get_palm_spheres(hand, palm, palm_count, &count));
   check(memcmp(&palm[palm_count], &palm_pattern[palm_count], sizeof palm[0]) == 0,
         "get_palm_spheres writes only count spheres");
 
@@ -729,7 +746,7 @@ static void test_hand_inputs(void) {
   expect_ok(
       "point_jacobian(finger 1, segment 2, origin)",
       frusta_hand_point_jacobian(hand, 1, 2, (const double[3]){0, 0, 0}, point, jacobian, 30));
-  frusta_hand_get_segments(hand, segments, FRUSTA_HAND_SEGMENT_COUNT, NULL);
+  frusta_hand_get_segments(hand, segments, FRUSTA_HAND_SEGMENT_COUNT, &count);
   check(memcmp(point, segments[1 * FRUSTA_SEGMENTS_PER_FINGER + 2].proximal, sizeof point) == 0,
         "the origin of segment (1, 2) is its proximal joint");
   expect_unchanged(hand, "all failing output calls");
@@ -742,14 +759,15 @@ static void test_palm_pose_and_clamping(void) {
   frusta_hand_id hand;
   if (!expect_ok("create hand for poses", frusta_create_hand(&def, &hand))) return;
   frusta_segment at_rest[FRUSTA_HAND_SEGMENT_COUNT], moved[FRUSTA_HAND_SEGMENT_COUNT];
-  frusta_hand_get_segments(hand, at_rest, FRUSTA_HAND_SEGMENT_COUNT, NULL);
+  int32_t count = 0;
+  frusta_hand_get_segments(hand, at_rest, FRUSTA_HAND_SEGMENT_COUNT, &count);
 
   /* a quarter turn about z, given with norm 2: normalised, not refused */
   const double h = sqrt(0.5);
   const frusta_pose turned = {{1.0, 2.0, 3.0}, {0.0, 0.0, 2.0 * h, 2.0 * h}};
   expect_ok("set_palm_pose(quarter turn about z, norm 2)",
             frusta_hand_set_palm_pose(hand, &turned));
-  frusta_hand_get_segments(hand, moved, FRUSTA_HAND_SEGMENT_COUNT, NULL);
+  frusta_hand_get_segments(hand, moved, FRUSTA_HAND_SEGMENT_COUNT, &count);
   double worst = 0.0;
   for (int i = 0; i < FRUSTA_HAND_SEGMENT_COUNT; ++i) {
     /* (x, y, z) -> (-y, x, z), then + (1, 2, 3) */
@@ -760,13 +778,14 @@ static void test_palm_pose_and_clamping(void) {
   check(worst < 1e-12, "a norm-2 quarter turn is applied as the unit one (error %g)", worst);
   const frusta_pose identity = {{0, 0, 0}, {0, 0, 0, 0.5}};
   expect_ok("set_palm_pose(identity with norm 0.5)", frusta_hand_set_palm_pose(hand, &identity));
-  frusta_hand_get_segments(hand, moved, FRUSTA_HAND_SEGMENT_COUNT, NULL);
+  frusta_hand_get_segments(hand, moved, FRUSTA_HAND_SEGMENT_COUNT, &count);
   check(memcmp(moved, at_rest, sizeof moved) == 0, "identity pose restores the rest geometry");
 
-  /* finite angles beyond the limits are clamped, not refused */
+  /* angles beyond the limits, within FRUSTA_MAX_JOINT_ANGLE, are clamped, not refused */
   double wild[FRUSTA_HAND_JOINT_COUNT], got[FRUSTA_HAND_JOINT_COUNT];
-  for (int i = 0; i < FRUSTA_HAND_JOINT_COUNT; ++i) wild[i] = i % 2 ? 99.0 : -99.0;
-  expect_ok("set_joint_angles(+-99 rad)",
+  for (int i = 0; i < FRUSTA_HAND_JOINT_COUNT; ++i)
+    wild[i] = i % 2 ? FRUSTA_MAX_JOINT_ANGLE : -FRUSTA_MAX_JOINT_ANGLE;
+  expect_ok("set_joint_angles(+-FRUSTA_MAX_JOINT_ANGLE)",
             frusta_hand_set_joint_angles(hand, wild, FRUSTA_HAND_JOINT_COUNT));
   frusta_hand_get_joint_angles(hand, got, FRUSTA_HAND_JOINT_COUNT);
   int clamped = 1;
@@ -1207,8 +1226,11 @@ static void test_sphere_trees(void) {
   check(memcmp(g_leaves, g_leaves_again, sizeof g_leaves) == 0,
         "refused get_leaves writes no leaf");
   check(count == -7, "refused get_leaves leaves out_count unchanged (got %d)", count);
+  expect_error("sphere_tree_get_leaves(out_count null)",
+               frusta_sphere_tree_get_leaves(tree, g_leaves, leaf_count, NULL),
+               FRUSTA_ERROR_NULL_POINTER, "out_count", NULL);
   expect_ok("sphere_tree_get_leaves",
-            frusta_sphere_tree_get_leaves(tree, g_leaves, leaf_count, NULL));
+            frusta_sphere_tree_get_leaves(tree, g_leaves, leaf_count, &count));
   int inside = 1;
   for (int32_t i = 0; i < leaf_count; ++i)
     for (int k = 0; k < 3; ++k)

@@ -693,7 +693,7 @@ static void test_set_haptic(void) {
     const char* text;
   } bad_angles[] = {{NAN, FRUSTA_ERROR_NOT_FINITE, "nan"},
                     {-INFINITY, FRUSTA_ERROR_NOT_FINITE, "-inf"},
-                    {101.0, FRUSTA_ERROR_OUT_OF_RANGE, "101"},
+                    {12.6, FRUSTA_ERROR_OUT_OF_RANGE, "12.6"},
                     {-100.5, FRUSTA_ERROR_OUT_OF_RANGE, "-100.5"}};
   for (int i = 0; i < 4; ++i) {
     double bad[FRUSTA_HAND_JOINT_COUNT];
@@ -713,10 +713,20 @@ static void test_set_haptic(void) {
   check(state.rejected_inputs == rejected, "and count no rejected input (%lld -> %lld)",
         (long long)rejected, (long long)state.rejected_inputs);
 
-  /* finite angles beyond the joint limits (but within 100 rad) are taken, clamped */
-  angles[7] = 50.0;
-  expect_ok("set_haptic(angles[7] 50: beyond the limit, clamped)",
+  /* angles beyond the joint limits but within FRUSTA_MAX_JOINT_ANGLE are taken, and
+     the next step uses them, clamped: accepted means used, never dropped later */
+  angles[7] = FRUSTA_MAX_JOINT_ANGLE;
+  expect_ok("set_haptic(angles[7] FRUSTA_MAX_JOINT_ANGLE: beyond the limit, clamped)",
             frusta_world_set_haptic(world, hand, &start, angles, FRUSTA_HAND_JOINT_COUNT));
+  step_and_read(world, 1, &state);
+  get_hand(world, hand, &after);
+  const frusta_hand_def limits = frusta_default_hand_def();
+  check(after.haptic_angles[7] == FRUSTA_MAX_JOINT_ANGLE &&
+            after.graphic_angles[7] == limits.joint_max[1][3],
+        "the step used it (%g), clamped to the limit (%g, limit %g)", after.haptic_angles[7],
+        after.graphic_angles[7], limits.joint_max[1][3]);
+  check(state.rejected_inputs == rejected, "and rejected none (%lld -> %lld)",
+        (long long)rejected, (long long)state.rejected_inputs);
   frusta_destroy_world(world);
 }
 
@@ -831,6 +841,12 @@ static void test_add_object_errors(void) {
       {OBJECT_FIELD(mass), 0.0, FRUSTA_ERROR_OUT_OF_RANGE, NULL},
       {OBJECT_FIELD(mass), -1.0, FRUSTA_ERROR_OUT_OF_RANGE, "-1"},
       {OBJECT_FIELD(mass), 2e6, FRUSTA_ERROR_OUT_OF_RANGE, "2e+06"},
+      /* accepted once, and a palm swinging through it overflowed the QP's active set */
+      {OBJECT_FIELD(mass), 1e-300, FRUSTA_ERROR_OUT_OF_RANGE, "1e-300"},
+      {OBJECT_FIELD(inertia[0]), 1e-300, FRUSTA_ERROR_OUT_OF_RANGE, "1e-300"},
+      {OBJECT_FIELD(inertia[1]), 2e4, FRUSTA_ERROR_OUT_OF_RANGE, "20000"},
+      /* principal moments no body has: one larger than the other two together */
+      {OBJECT_FIELD(inertia[2]), 1e-3, FRUSTA_ERROR_OUT_OF_RANGE, "inertia[2]"},
       {OBJECT_FIELD(inertia[2]), NAN, FRUSTA_ERROR_NOT_FINITE, "nan"},
       {OBJECT_FIELD(inertia[1]), 0.0, FRUSTA_ERROR_OUT_OF_RANGE, NULL},
       {OBJECT_FIELD(inertia[0]), -4e-5, FRUSTA_ERROR_OUT_OF_RANGE, "-4e-05"},

@@ -10,6 +10,8 @@
  *   at fault, and nothing the call would have changed has changed.
  * - Structs that cross the boundary start with struct_size; defs must come from
  *   the matching frusta_default_*_def() (a hidden cookie catches hand-built ones).
+ * - Calls that copy an array into a caller's buffer take an out_count, which may not
+ *   be null (FRUSTA_ERROR_NULL_POINTER).
  * - Ids are small values passed by value. Zero-initialised means null. A stale id
  *   (its object destroyed) is refused with FRUSTA_ERROR_STALE_ID, never a crash.
  * - No C++ type, exception or abort crosses this header.
@@ -142,6 +144,9 @@ typedef enum frusta_finger {
 #define FRUSTA_JOINTS_PER_FINGER 4
 #define FRUSTA_HAND_SEGMENT_COUNT (FRUSTA_FINGER_COUNT * FRUSTA_SEGMENTS_PER_FINGER)
 #define FRUSTA_HAND_JOINT_COUNT (FRUSTA_FINGER_COUNT * FRUSTA_JOINTS_PER_FINGER)
+/** The largest |joint angle| any input may carry, radians (4 pi): beyond it a reading
+ *  is corrupt and refused; within it, angles beyond the hand's limits are clamped. */
+#define FRUSTA_MAX_JOINT_ANGLE 12.566370614359172
 /** Palm pose degrees of freedom in a Jacobian: translation x y z, then rotation x y z. */
 #define FRUSTA_PALM_DOF 6
 
@@ -158,12 +163,16 @@ typedef enum frusta_finger {
  *  segment is the proximal phalanx (joints MCP, PIP, DIP).
  *
  *  frusta_default_hand_def() fills every array from hand_length and hand_breadth
- *  (see frusta_hand_def_set_size); edit single entries afterwards to override. */
+ *  (see frusta_hand_def_set_size); edit single entries afterwards to override.
+ *  Ranges: hand_length and hand_breadth 0.01..5 m; every segment length, joint radius
+ *  and palm dimension 1e-4..5 m, with at most 4096 palm spheres (the palm's thickness
+ *  sets their spacing); base positions within 5 m, base rotations within 2 pi; joint
+ *  limits within [-pi, pi], joint_min <= joint_max. */
 typedef struct frusta_hand_def {
   int32_t struct_size;            /* sizeof(frusta_hand_def) */
   int32_t side;                   /* frusta_hand_side */
-  double hand_length;             /* metres, wrist crease to middle fingertip (> 0) */
-  double hand_breadth;            /* metres, across the metacarpal heads (> 0) */
+  double hand_length;             /* metres, wrist crease to middle fingertip */
+  double hand_breadth;            /* metres, across the metacarpal heads */
   /* metres, joint centre to joint centre; the third runs to the tip hemisphere's centre */
   double segment_length[FRUSTA_FINGER_COUNT][FRUSTA_SEGMENTS_PER_FINGER];
   /* metres: ball radius at the first, second, third joint, then the tip hemisphere */
@@ -172,9 +181,9 @@ typedef struct frusta_hand_def {
   double base_rotation[FRUSTA_FINGER_COUNT][3];  /* radians, x-y-z rotation of the rest frame */
   double joint_min[FRUSTA_FINGER_COUNT][FRUSTA_JOINTS_PER_FINGER]; /* radians */
   double joint_max[FRUSTA_FINGER_COUNT][FRUSTA_JOINTS_PER_FINGER]; /* radians */
-  double palm_length;             /* metres, wrist to the metacarpal heads (> 0) */
-  double palm_breadth;            /* metres (> 0) */
-  double palm_thickness;          /* metres (> 0); also the palm spheres' diameter */
+  double palm_length;             /* metres, wrist to the metacarpal heads */
+  double palm_breadth;            /* metres */
+  double palm_thickness;          /* metres; also the palm spheres' diameter */
   int32_t internal_value;         /* set by frusta_default_hand_def(); do not touch */
   int32_t reserved0;              /* explicit padding */
 } frusta_hand_def;
@@ -185,8 +194,8 @@ FRUSTA_API frusta_hand_def frusta_default_hand_def(void);
 
 /** Refill def's geometry (segment lengths, joint radii, bases, palm) from a hand
  *  length and breadth with the anthropometric proportions documented in
- *  native/src/hand/anthropometry.cpp. Joint limits and side are kept. On error def
- *  is unchanged. Thread: any. */
+ *  native/src/hand/anthropometry.cpp (each 0.01..5 m). Joint limits and side are
+ *  kept. On error def is unchanged. Thread: any. */
 FRUSTA_API frusta_result frusta_hand_def_set_size(frusta_hand_def* def, double hand_length,
                                                   double hand_breadth);
 
@@ -202,9 +211,9 @@ FRUSTA_API int32_t frusta_hand_is_valid(frusta_hand_id hand);
  *  must lie in [0.5, 2] and positions within 1e6 m of the origin. Thread: main. */
 FRUSTA_API frusta_result frusta_hand_set_palm_pose(frusta_hand_id hand, const frusta_pose* pose);
 /** Set all FRUSTA_HAND_JOINT_COUNT joint angles (finger-major: abduction, flexion 1,
- *  2, 3), radians. Finite values beyond the def's limits are clamped into them;
- *  |angle| > 100 rad is refused as corrupt input. count must equal
- *  FRUSTA_HAND_JOINT_COUNT. Thread: main. */
+ *  2, 3), radians. |angle| <= FRUSTA_MAX_JOINT_ANGLE is accepted and clamped into the
+ *  def's limits; beyond it, or not finite, the call is refused as corrupt input.
+ *  count must equal FRUSTA_HAND_JOINT_COUNT. Thread: main. */
 FRUSTA_API frusta_result frusta_hand_set_joint_angles(frusta_hand_id hand, const double* angles,
                                                       int32_t count);
 /** Copy the (clamped) joint angles into out[FRUSTA_HAND_JOINT_COUNT]. Thread: main. */
@@ -461,9 +470,10 @@ typedef struct frusta_object_def {
                                    default 0; 2 sqrt(tangential_stiffness m) keeps a
                                    held object of mass m from being kicked by the
                                    hand's jitter */
-  double mass;                  /* kg, > 0; default 0.1 */
-  double inertia[3];            /* principal moments in the object frame, kg m^2, > 0;
-                                   default 4e-5 */
+  double mass;                  /* kg, 1e-6..1e4; default 0.1 */
+  double inertia[3];            /* principal moments in the object frame, kg m^2,
+                                   1e-13..1e4, each at most the sum of the other two
+                                   (a real body's); default 4e-5 */
   double linear_velocity[3];    /* m/s, world; |each| <= 100; default 0 */
   double angular_velocity[3];   /* rad/s, world; |each| <= 1000; default 0 */
   double linear_damping;        /* 1/s, 0..1000; default 0 */
@@ -483,7 +493,9 @@ typedef struct frusta_world_state {
   double wake_late_us_p50, wake_late_us_p99, wake_late_us_max; /* own thread's jitter */
   double achieved_rate_hz;      /* own thread: steps per second since start; 0 if none */
   int64_t overruns;             /* ticks the own thread lost to late steps */
-  int64_t rejected_inputs;      /* haptic inputs the solver refused */
+  int64_t rejected_inputs;      /* haptic inputs the solver could not place: a hand
+                                   that starts inside objects with no free placement
+                                   near (bad input is refused by set_haptic instead) */
   int32_t object_count;         /* objects present at the step */
   int32_t reserved0;            /* explicit padding */
 } frusta_world_state;
@@ -501,7 +513,10 @@ typedef struct frusta_world_hand {
   int32_t slipping;             /* pressing contacts sliding (friction at mu |F|) */
   int32_t substeps;             /* solver sub-steps this step */
   int32_t lagging;              /* 1: the sub-step cap stopped the hand short */
-  int32_t reserved0;            /* explicit padding */
+  int32_t infeasible;           /* 1: a contact QP had no point meeting every row it
+                                   was given (nearly parallel or contradictory
+                                   constraints); the hand stayed at its last safe
+                                   estimate, short of its input */
   /* device outputs, each clamped to the world's limits; pick what the device renders */
   double fingertip_force[FRUSTA_FINGER_COUNT][3]; /* on each distal segment, newtons */
   double finger_resistance[FRUSTA_FINGER_COUNT];  /* |force| on each finger, newtons */
@@ -556,10 +571,13 @@ FRUSTA_API int32_t frusta_world_is_valid(frusta_world_id world);
 FRUSTA_API frusta_result frusta_world_add_hand(frusta_world_id world, const frusta_hand_def* def,
                                                int32_t* out_hand);
 /** Set a hand's haptic input (the glove): palm pose and FRUSTA_HAND_JOINT_COUNT joint
- *  angles (radians, finger-major). The newest input wins; the next step uses it.
- *  Positions within 1e6 m, quaternion norm in [0.5, 2], |angle| <= 100 (beyond the
- *  limits is clamped). Lock-free and allocation-free. FRUSTA_ERROR_WRONG_STATE on a
- *  hand a glove drives (frusta_world_open_device). Thread: input. */
+ *  angles (radians, finger-major). The newest input wins; the next step uses it. The
+ *  one rule for every input of a hand (this call, frusta_hand_set_joint_angles, a
+ *  glove's samples): positions within 1e6 m, quaternion norm in [0.5, 2] (normalised),
+ *  |angle| <= FRUSTA_MAX_JOINT_ANGLE (clamped into the hand's limits). What this call
+ *  accepts the next step uses; what breaks the rule is refused here. Lock-free and
+ *  allocation-free. FRUSTA_ERROR_WRONG_STATE on a hand a glove drives
+ *  (frusta_world_open_device). Thread: input. */
 FRUSTA_API frusta_result frusta_world_set_haptic(frusta_world_id world, int32_t hand,
                                                  const frusta_pose* palm, const double* angles,
                                                  int32_t count);

@@ -40,8 +40,9 @@ FRUSTA_API frusta_hand_def frusta_default_hand_def(void) {
 FRUSTA_API frusta_result frusta_hand_def_set_size(frusta_hand_def* def, double hand_length,
                                                   double hand_breadth) {
   if (frusta_result r = check_def_input(def, "frusta_hand_def")) return r;
-  if (frusta_result r = check_range(hand_length, 0.0, kMaxHandSize, true, "hand_length")) return r;
-  if (frusta_result r = check_range(hand_breadth, 0.0, kMaxHandSize, true, "hand_breadth"))
+  if (frusta_result r = check_range(hand_length, kMinHandSize, kMaxHandSize, false, "hand_length"))
+    return r;
+  if (frusta_result r = check_range(hand_breadth, kMinHandSize, kMaxHandSize, false, "hand_breadth"))
     return r;
   frusta_hand_def sized = *def;
   fill_hand_geometry(sized, hand_length, hand_breadth);
@@ -102,6 +103,7 @@ FRUSTA_API frusta_result frusta_hand_get_segments(frusta_hand_id hand, frusta_se
   HandObject* h = nullptr;
   if (frusta_result r = hand_registry().find(hand, &h)) return r;
   if (frusta_result r = check_pointer(out, "out")) return r;
+  if (frusta_result r = check_pointer(out_count, "out_count")) return r;
   if (frusta_result r = check_output(capacity, FRUSTA_HAND_SEGMENT_COUNT, "the segments"))
     return r;
   for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
@@ -116,7 +118,7 @@ FRUSTA_API frusta_result frusta_hand_get_segments(frusta_hand_id hand, frusta_se
       o.distal_radius = seg.distal_radius;
     }
   }
-  if (out_count) *out_count = FRUSTA_HAND_SEGMENT_COUNT;
+  *out_count = FRUSTA_HAND_SEGMENT_COUNT;
   return FRUSTA_OK;
 }
 
@@ -124,14 +126,15 @@ FRUSTA_API frusta_result frusta_hand_get_palm_spheres(frusta_hand_id hand, frust
                                                       int32_t capacity, int32_t* out_count) {
   HandObject* h = nullptr;
   if (frusta_result r = hand_registry().find(hand, &h)) return r;
+  if (frusta_result r = check_pointer(out_count, "out_count")) return r;
   const int32_t count = static_cast<int32_t>(h->model.palm_spheres.size());
   if (capacity == 0 && !out) {  // a size query
-    if (out_count) *out_count = count;
+    *out_count = count;
     return FRUSTA_OK;
   }
   if (frusta_result r = check_pointer(out, "out")) return r;
   if (frusta_result r = check_output(capacity, count, "the palm spheres")) return r;
-  if (out_count) *out_count = count;
+  *out_count = count;
   for (int32_t i = 0; i < count; ++i) {
     const Sphere s = palm_sphere(h->model, h->pose, i);
     for (int k = 0; k < 3; ++k) out[i].center[k] = s.center[k];

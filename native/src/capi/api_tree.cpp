@@ -77,16 +77,17 @@ FRUSTA_API frusta_result frusta_sphere_tree_get_leaves(frusta_tree_id tree, frus
                                                        int32_t capacity, int32_t* out_count) {
   TreeObject* t = nullptr;
   if (frusta_result r = tree_registry().find(tree, &t)) return r;
+  if (frusta_result r = check_pointer(out_count, "out_count")) return r;
   const std::vector<Sphere>& leaves = t->file.tree.leaves;
   const int32_t count = static_cast<int32_t>(leaves.size());
   if (capacity == 0 && !out) {  // a size query
-    if (out_count) *out_count = count;
+    *out_count = count;
     return FRUSTA_OK;
   }
   if (frusta_result r = check_pointer(out, "out")) return r;
   if (capacity < count)
     return fail(FRUSTA_ERROR_CAPACITY, "capacity is %d but the tree has %d leaves", capacity, count);
-  if (out_count) *out_count = count;
+  *out_count = count;
   for (int32_t i = 0; i < count; ++i) {
     store(leaves[static_cast<size_t>(i)].center, out[i].center);
     out[i].radius = leaves[static_cast<size_t>(i)].radius;

@@ -34,15 +34,6 @@ frusta_result read_world_def(const frusta_world_def& in, WorldDef* out) {
   def.device_limits = {in.max_fingertip_force, in.max_finger_resistance, in.max_joint_torque,
                        in.max_palm_force, in.max_palm_torque};
   if (frusta_result r = check_world_def(def)) return r;
-  // the solver's own knobs; the hand-dependent ones are checked when a hand is added
-  // above the solver's penetration tolerance (1e-6 m), below any hand's finger radius
-  if (frusta_result r = check_range(in.prediction_margin, 1e-5, 0.1, false, "prediction_margin"))
-    return r;
-  if (frusta_result r = check_range(in.node_radius, 0.0, 1.0, false, "node_radius")) return r;
-  if (in.max_iterations < 1 || in.max_iterations > 100)
-    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "max_iterations is %d, must be 1..100", in.max_iterations);
-  if (in.max_substeps < 1 || in.max_substeps > 1024)
-    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "max_substeps is %d, must be 1..1024", in.max_substeps);
   *out = def;
   return FRUSTA_OK;
 }
@@ -323,7 +314,7 @@ FRUSTA_API frusta_result frusta_world_get_hand(frusta_world_id world, int32_t ha
   out->slipping = h->force_stats.slipping;
   out->substeps = h->stats.substeps;
   out->lagging = h->stats.lagging ? 1 : 0;
-  out->reserved0 = 0;
+  out->infeasible = h->stats.infeasible ? 1 : 0;
   for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
     store(h->device.fingertip_force[static_cast<size_t>(f)], out->fingertip_force[f]);
     out->finger_resistance[f] = h->device.finger_resistance[static_cast<size_t>(f)];

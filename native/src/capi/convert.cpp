@@ -50,7 +50,7 @@ frusta_result read_pose(const frusta_pose* in, const char* name, Pose* out) {
   if (frusta_result r = check_finite(in->rotation, 4, (n + ".rotation").c_str())) return r;
   const glm::dquat q(in->rotation[3], in->rotation[0], in->rotation[1], in->rotation[2]);
   const double norm = glm::length(q);
-  if (!(norm >= 0.5 && norm <= 2.0))
+  if (!(norm >= kMinQuaternionNorm && norm <= kMaxQuaternionNorm))
     return fail(FRUSTA_ERROR_OUT_OF_RANGE, "%s.rotation has norm %g; a unit quaternion (x, y, z, "
                 "w) is expected (norms in [0.5, 2] are normalised)", name, norm);
   *out = {to_vec3(in->position), q / norm};

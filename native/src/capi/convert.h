@@ -12,9 +12,6 @@
 
 namespace frusta {
 
-// a joint angle beyond this is garbage from a device, not an extreme pose
-constexpr double kMaxJointAngle = 100.0;
-
 struct Pose {
   vec3 position{0.0};
   glm::dquat rotation{1.0, 0.0, 0.0, 0.0};  // normalised
@@ -31,7 +28,8 @@ frusta_result check_def_input(const Def* def, const char* struct_name) {
 // name prefixes the field names in messages, e.g. "segment" -> "segment.distal[1]"
 frusta_result read_segment(const frusta_segment* in, const char* name, Segment* out);
 frusta_result read_sphere(const frusta_sphere* in, const char* name, Sphere* out);
-// Positions within kMaxCoordinate; the quaternion's norm within [0.5, 2] is normalised.
+// Positions within kMaxCoordinate; a quaternion whose norm lies within
+// [kMinQuaternionNorm, kMaxQuaternionNorm] is normalised.
 frusta_result read_pose(const frusta_pose* in, const char* name, Pose* out);
 
 // FRUSTA_HAND_JOINT_COUNT finite angles within kMaxJointAngle; count must equal it.

@@ -13,6 +13,13 @@ namespace frusta {
 // Largest coordinate accepted anywhere: beyond it a double cannot resolve
 // micrometres, so the value is corrupt rather than a real scene.
 constexpr double kMaxCoordinate = 1e6;
+// Largest joint angle accepted from any input (C ABI, C++ entry points, gloves), in
+// radians: a reading beyond two turns is garbage; anything within is clamped to the
+// hand's joint limits.
+constexpr double kMaxJointAngle = FRUSTA_MAX_JOINT_ANGLE;
+// A rotation quaternion from any input may have a norm in this range; it is normalised.
+constexpr double kMinQuaternionNorm = 0.5;
+constexpr double kMaxQuaternionNorm = 2.0;
 
 // Written into defs by frusta_default_*_def(); a def without it was built by hand.
 constexpr int32_t kDefCookie = 0x46525354;  // "FRST"

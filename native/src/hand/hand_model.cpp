@@ -16,9 +16,12 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-frusta_result check_positive(double value, const char* field) {
-  return check_range(value, 0.0, kMaxHandSize, true, field);
+frusta_result check_part(double value, const char* field) {
+  return check_range(value, kMinHandPart, kMaxHandSize, false, field);
 }
+
+// the palm grid's rows and columns (at least 2 each), in double: no int can overflow
+double palm_grid(double extent, double radius) { return std::max(2.0, std::ceil(extent / radius)); }
 
 // x-y-z extrinsic rotation: first about x, then y, then z
 glm::dmat3 rotation_xyz(const double angles[3]) {
@@ -33,8 +36,8 @@ glm::dmat3 rotation_xyz(const double angles[3]) {
 // radius apart so their union has no gaps deeper than a seventh of the thickness.
 std::vector<Sphere> make_palm_spheres(double length, double breadth, double thickness) {
   const double r = 0.5 * thickness;
-  const int along = std::max(2, static_cast<int>(std::ceil(length / r)));
-  const int across = std::max(2, static_cast<int>(std::ceil(breadth / r)));
+  const int along = static_cast<int>(palm_grid(length, r));  // checked by check_hand_def
+  const int across = static_cast<int>(palm_grid(breadth, r));
   std::vector<Sphere> spheres;
   spheres.reserve(static_cast<size_t>(along * across));
   for (int i = 0; i < along; ++i) {
@@ -53,20 +56,31 @@ frusta_result check_hand_def(const frusta_hand_def& def) {
   if (def.side != FRUSTA_HAND_RIGHT && def.side != FRUSTA_HAND_LEFT)
     return fail(FRUSTA_ERROR_OUT_OF_RANGE, "hand_def.side is %d, must be FRUSTA_HAND_RIGHT (0) "
                 "or FRUSTA_HAND_LEFT (1)", def.side);
-  if (frusta_result r = check_positive(def.hand_length, "hand_def.hand_length")) return r;
-  if (frusta_result r = check_positive(def.hand_breadth, "hand_def.hand_breadth")) return r;
-  if (frusta_result r = check_positive(def.palm_length, "hand_def.palm_length")) return r;
-  if (frusta_result r = check_positive(def.palm_breadth, "hand_def.palm_breadth")) return r;
-  if (frusta_result r = check_positive(def.palm_thickness, "hand_def.palm_thickness")) return r;
+  if (frusta_result r = check_range(def.hand_length, kMinHandSize, kMaxHandSize, false,
+                                    "hand_def.hand_length"))
+    return r;
+  if (frusta_result r = check_range(def.hand_breadth, kMinHandSize, kMaxHandSize, false,
+                                    "hand_def.hand_breadth"))
+    return r;
+  if (frusta_result r = check_part(def.palm_length, "hand_def.palm_length")) return r;
+  if (frusta_result r = check_part(def.palm_breadth, "hand_def.palm_breadth")) return r;
+  if (frusta_result r = check_part(def.palm_thickness, "hand_def.palm_thickness")) return r;
+  const double r = 0.5 * def.palm_thickness;
+  const double spheres = palm_grid(def.palm_length, r) * palm_grid(def.palm_breadth, r);
+  if (spheres > kMaxPalmSpheres)
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE,
+                "hand_def.palm_thickness is %g m: a %g x %g m palm would take %.0f spheres of that "
+                "diameter, at most %d; make it thicker", def.palm_thickness, def.palm_length,
+                def.palm_breadth, spheres, kMaxPalmSpheres);
   char field[64];
   for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
     for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s) {
       std::snprintf(field, sizeof field, "hand_def.segment_length[%d][%d]", f, s);
-      if (frusta_result r = check_positive(def.segment_length[f][s], field)) return r;
+      if (frusta_result r = check_part(def.segment_length[f][s], field)) return r;
     }
     for (int j = 0; j < 4; ++j) {
       std::snprintf(field, sizeof field, "hand_def.joint_radius[%d][%d]", f, j);
-      if (frusta_result r = check_positive(def.joint_radius[f][j], field)) return r;
+      if (frusta_result r = check_part(def.joint_radius[f][j], field)) return r;
     }
     std::snprintf(field, sizeof field, "hand_def.base_position[%d]", f);
     if (frusta_result r = check_bounded(def.base_position[f], 3, kMaxHandSize, field)) return r;

@@ -29,6 +29,14 @@ struct HandModel {
 
 // A hand is centimetres long; a size beyond a few metres is a units mistake.
 constexpr double kMaxHandSize = 5.0;
+// The smallest hand (hand_length, hand_breadth): a doll's, metres.
+constexpr double kMinHandSize = 0.01;
+// The smallest part (segment, radius, palm dimension), metres: below it the solver's
+// micrometre tolerances are no longer small against the part.
+constexpr double kMinHandPart = 1e-4;
+// The palm is a grid of spheres of its thickness: a palm too thin for its size would
+// be millions of them.
+constexpr int32_t kMaxPalmSpheres = 4096;
 
 // Check every field of def; on failure the thread's error names the field.
 frusta_result check_hand_def(const frusta_hand_def& def);

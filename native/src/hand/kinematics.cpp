@@ -5,6 +5,10 @@
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "core/error.h"
+#include "core/validate.h"
 
 namespace frusta {
 
@@ -24,6 +28,26 @@ glm::dmat3 rotation_y(double angle) {
 const glm::dmat3 kMirror(1.0, 0.0, 0.0, 0.0, -1.0, 0.0, 0.0, 0.0, 1.0);
 
 }  // namespace
+
+frusta_result check_hand_state(const HandState& state, const char* name) {
+  const double* position = glm::value_ptr(state.palm_position);
+  const double* rotation = glm::value_ptr(state.palm_rotation);
+  const double* angles = state.angles.data();
+  const double norm = glm::length(state.palm_rotation);
+  // one pass without formatting: gloves call this for every sample
+  if (all_bounded(position, 3, kMaxCoordinate) && all_finite(rotation, 4) &&
+      norm >= kMinQuaternionNorm && norm <= kMaxQuaternionNorm &&
+      all_bounded(angles, FRUSTA_HAND_JOINT_COUNT, kMaxJointAngle))
+    return FRUSTA_OK;
+  if (frusta_result r = check_bounded_named(position, 3, kMaxCoordinate, "%s.palm_position", name))
+    return r;
+  if (frusta_result r = check_finite_named(rotation, 4, "%s.palm_rotation", name)) return r;
+  if (!(norm >= kMinQuaternionNorm && norm <= kMaxQuaternionNorm))
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE,
+                "%s.palm_rotation has norm %g; a unit quaternion is expected (norms in [%g, %g] "
+                "are normalised)", name, norm, kMinQuaternionNorm, kMaxQuaternionNorm);
+  return check_bounded_named(angles, FRUSTA_HAND_JOINT_COUNT, kMaxJointAngle, "%s.angles", name);
+}
 
 HandState interpolate(const HandState& a, const HandState& b, double t) {
   HandState s;

@@ -38,6 +38,12 @@ struct HandPose {
 // Columns of a point Jacobian: the finger's four joints, then the palm's 6 DOF.
 constexpr int kJacobianColumns = FRUSTA_JOINTS_PER_FINGER + FRUSTA_PALM_DOF;
 
+// The one check of a hand state from any input (C ABI, World::set_haptic, gloves):
+// positions within kMaxCoordinate, a rotation of norm within [kMinQuaternionNorm,
+// kMaxQuaternionNorm] (normalised by whoever uses it), angles within kMaxJointAngle
+// (clamped to the limits later). The thread's error names `name`'s field.
+frusta_result check_hand_state(const HandState& state, const char* name);
+
 // Clamp every angle of state into the model's limits.
 void clamp_to_limits(const HandModel& model, HandState& state);
 

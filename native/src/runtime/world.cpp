@@ -56,9 +56,19 @@ frusta_result check_rigid_pose(const RigidPose& pose, const char* name) {
 frusta_result check_object_def(const ObjectDef& def) {
   if (frusta_result r = check_rigid_pose(def.pose, "object pose")) return r;
   if (frusta_result r = check_force_material(def.material, "object material")) return r;
-  if (frusta_result r = check_range(def.mass, 0.0, 1e6, true, "object mass")) return r;
+  if (frusta_result r = check_range(def.mass, kMinMass, kMaxMass, false, "object mass")) return r;
   for (int k = 0; k < 3; ++k)
-    if (frusta_result r = check_range(def.inertia[k], 0.0, 1e6, true, "object inertia")) return r;
+    if (frusta_result r = check_range_named(def.inertia[k], kMinInertia, kMaxInertia, false,
+                                            "object inertia[%d]", k))
+      return r;
+  // principal moments of a real body: each at most the sum of the other two
+  for (int k = 0; k < 3; ++k) {
+    const double others = def.inertia[(k + 1) % 3] + def.inertia[(k + 2) % 3];
+    if (def.inertia[k] > others * (1.0 + 1e-9))
+      return fail(FRUSTA_ERROR_OUT_OF_RANGE,
+                  "object inertia[%d] is %g kg m^2, more than the other two together (%g): no "
+                  "body has such principal moments", k, def.inertia[k], others);
+  }
   if (frusta_result r = check_bounded(glm::value_ptr(def.linear_velocity), 3, kMaxLinearSpeed,
                                       "object linear_velocity"))
     return r;
@@ -72,6 +82,19 @@ frusta_result check_object_def(const ObjectDef& def) {
 
 frusta_result check_world_def(const WorldDef& def) {
   if (frusta_result r = check_range(def.rate_hz, 1.0, 100000.0, false, "rate_hz")) return r;
+  // the solver's knobs a world exposes; the hand-dependent rules are checked when a
+  // hand is added. The margin lies above the solver's penetration tolerance (1e-6 m).
+  if (frusta_result r = check_range(def.solver.prediction_margin, 1e-5, 0.1, false,
+                                    "prediction_margin"))
+    return r;
+  if (frusta_result r = check_range(def.solver.node_radius, 0.0, 1.0, false, "node_radius"))
+    return r;
+  if (def.solver.max_iterations < 1 || def.solver.max_iterations > 100)
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "max_iterations is %d, must be 1..100",
+                def.solver.max_iterations);
+  if (def.solver.max_substeps < 1 || def.solver.max_substeps > 1024)
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "max_substeps is %d, must be 1..1024",
+                def.solver.max_substeps);
   if (frusta_result r = check_range(def.spin_us, 0.0, 1e6 / def.rate_hz, false, "spin_us"))
     return r;
   if (frusta_result r = check_bounded(glm::value_ptr(def.gravity), 3, 1e3, "gravity")) return r;
@@ -216,6 +239,8 @@ frusta_result World::set_object_dynamic(ObjectHandle object, bool dynamic) {
 frusta_result World::set_haptic(int32_t hand, const HandState& haptic) {
   if (hand < 0 || hand >= hand_count())
     return fail(FRUSTA_ERROR_OUT_OF_RANGE, "hand is %d, the world has %d", hand, hand_count());
+  // refused here or never: an input taken is an input the step uses
+  if (frusta_result r = check_hand_state(haptic, "haptic")) return r;
   HandSlot& h = *hands_[static_cast<size_t>(hand)];
   TimedInput& slot = h.input.write_slot();
   slot.state = haptic;

@@ -106,7 +106,7 @@ struct WorldSnapshot {
   double wake_late_us_p50 = 0.0, wake_late_us_p99 = 0.0, wake_late_us_max = 0.0;
   int64_t overruns = 0;
   double achieved_rate_hz = 0.0;  // own thread: steps over the time since start()
-  int64_t rejected_inputs = 0;  // haptic inputs the solver refused (NaN, absurd)
+  int64_t rejected_inputs = 0;  // inputs the solver could not place (inside objects)
 };
 
 // What a device thread reads at its own rate: one hand's device outputs and whether
@@ -123,6 +123,12 @@ struct DeviceFeed {
 // Every field finite, the rotation orthonormal, the position within kMaxCoordinate;
 // the thread's error names `name` and the field.
 frusta_result check_rigid_pose(const RigidPose& pose, const char* name);
+// A hand-held object's mass, kg (a grain of sand to a car) and principal moments,
+// kg m^2 (a 1 mg bead of 1 mm to a car): beyond them the dynamics at 1 kHz are
+// meaningless, and a mass of 1e-300 once flung a cube through a palm.
+constexpr double kMinMass = 1e-6, kMaxMass = 1e4;
+constexpr double kMinInertia = 1e-13, kMaxInertia = 1e4;
+
 frusta_result check_object_def(const ObjectDef& def);
 frusta_result check_world_def(const WorldDef& def);
 

@@ -2,6 +2,7 @@
 #include "solver/hand_solver.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -19,8 +20,6 @@ namespace frusta {
 
 namespace {
 
-// A joint angle beyond a few turns is not a glove's reading but garbage.
-constexpr double kMaxAbsoluteAngle = 4.0 * 3.14159265358979323846;
 // Below this (metres) a sub-step did not move the hand.
 constexpr double kStandstill = 1e-9;
 
@@ -34,33 +33,6 @@ FingerAngles finger_angles(const HandState& state, int finger) {
 
 void set_finger_angles(HandState& state, int finger, const FingerAngles& a) {
   std::copy(a.begin(), a.end(), state.angles.begin() + finger * FRUSTA_JOINTS_PER_FINGER);
-}
-
-frusta_result check_haptic(const HandState& h) {
-  const vec3& p = h.palm_position;
-  const double q[4] = {h.palm_rotation.w, h.palm_rotation.x, h.palm_rotation.y, h.palm_rotation.z};
-  for (int k = 0; k < 3; ++k)
-    if (!std::isfinite(p[k]))
-      return fail(FRUSTA_ERROR_NOT_FINITE, "haptic palm position[%d] is %g", k, p[k]);
-  for (int k = 0; k < 4; ++k)
-    if (!std::isfinite(q[k]))
-      return fail(FRUSTA_ERROR_NOT_FINITE, "haptic palm rotation[%d] is %g", k, q[k]);
-  for (size_t j = 0; j < h.angles.size(); ++j)
-    if (!std::isfinite(h.angles[j]))
-      return fail(FRUSTA_ERROR_NOT_FINITE, "haptic joint angle %zu is %g", j, h.angles[j]);
-  for (int k = 0; k < 3; ++k)
-    if (std::fabs(p[k]) > kMaxCoordinate)
-      return fail(FRUSTA_ERROR_OUT_OF_RANGE, "haptic palm position[%d] is %g m, beyond +-%g m", k,
-                  p[k], kMaxCoordinate);
-  const double norm = glm::length(h.palm_rotation);
-  if (norm < 0.5 || norm > 2.0)
-    return fail(FRUSTA_ERROR_OUT_OF_RANGE,
-                "haptic palm rotation has length %g; a rotation quaternion has length 1", norm);
-  for (size_t j = 0; j < h.angles.size(); ++j)
-    if (std::fabs(h.angles[j]) > kMaxAbsoluteAngle)
-      return fail(FRUSTA_ERROR_OUT_OF_RANGE, "haptic joint angle %zu is %g rad, beyond +-4 pi", j,
-                  h.angles[j]);
-  return FRUSTA_OK;
 }
 
 }  // namespace
@@ -118,7 +90,7 @@ frusta_result HandSolver::check_params(const SolverParams& p, const HandModel& m
 frusta_result HandSolver::step(const HandState& haptic, const SolverObject* objects,
                                int32_t object_count, StepStats* stats_out,
                                Clock::time_point deadline) {
-  if (frusta_result r = check_haptic(haptic)) return r;
+  assert(check_hand_state(haptic, "haptic") == FRUSTA_OK);  // checked where it entered
   StepStats stats;
   HandState target = haptic;
   target.palm_rotation = glm::normalize(target.palm_rotation);

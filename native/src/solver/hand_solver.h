@@ -57,8 +57,9 @@ class HandSolver {
 
   using Clock = std::chrono::steady_clock;
 
-  // One step towards `haptic`. Bad input (non-finite, absurd) returns an error and
-  // leaves the graphic hand as it was. Objects stay put during a step. No sub-step
+  // One step towards `haptic`, which must pass check_hand_state (its entry point
+  // checked it). A hand that starts inside objects with no free placement near returns
+  // an error and stays unplaced. Objects stay put during a step. No sub-step
   // starts after `deadline` (at least one always runs): a hand caught in a tangle of
   // contacts then lags (stats->lagging) instead of stalling a real-time thread.
   frusta_result step(const HandState& haptic, const SolverObject* objects, int32_t object_count,

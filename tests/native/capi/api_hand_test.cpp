@@ -189,7 +189,7 @@ TEST_F(capiHand, AnglesInsideTheLimitsReadBackExactly) {
 
 TEST_F(capiHand, SetJointAnglesClampsBeyondLimitFiniteValuesToTheDefsLimits) {
   std::mt19937_64 rng(13);
-  std::uniform_real_distribution<double> any(-100.0, 100.0);
+  std::uniform_real_distribution<double> any(-FRUSTA_MAX_JOINT_ANGLE, FRUSTA_MAX_JOINT_ANGLE);
   frusta_hand_def def = frusta_default_hand_def();
   def.joint_min[FRUSTA_FINGER_INDEX][1] = 0.2;  // a custom, narrow range
   def.joint_max[FRUSTA_FINGER_INDEX][1] = 0.3;
@@ -197,8 +197,8 @@ TEST_F(capiHand, SetJointAnglesClampsBeyondLimitFiniteValuesToTheDefsLimits) {
   for (int trial = 0; trial < 50; ++trial) {
     Angles angles{};
     std::generate(angles.begin(), angles.end(), [&] { return any(rng); });
-    if (trial == 0) angles.fill(100.0);  // the largest accepted magnitude
-    if (trial == 1) angles.fill(-100.0);
+    if (trial == 0) angles.fill(FRUSTA_MAX_JOINT_ANGLE);  // the largest accepted magnitude
+    if (trial == 1) angles.fill(-FRUSTA_MAX_JOINT_ANGLE);
     ASSERT_EQ(frusta_hand_set_joint_angles(hand.get(), angles.data(), FRUSTA_HAND_JOINT_COUNT),
               FRUSTA_OK);
     const Angles got = angles_of(hand.get());

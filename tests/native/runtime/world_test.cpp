@@ -15,6 +15,9 @@
 #include <string>
 #include <thread>
 
+#include <glm/gtc/quaternion.hpp>
+
+#include "core/validate.h"
 #include "hand/hand_model.h"
 #include "scenes/hand_scenarios.h"
 
@@ -172,7 +175,9 @@ TEST(World, AnObjectPutInsideAHandIsIgnoredByItUntilTheyPart) {
       << "the hand stays out of it (the fingers bend around it)";
 }
 
-TEST(World, BadHapticInputIsCountedAndLeavesTheGraphicHand) {
+// Refused where it enters, never taken and dropped later: an input set_haptic accepts
+// is an input the step uses.
+TEST(World, BadHapticInputIsRefusedAtTheDoorAndLeavesTheGraphicHand) {
   World world(WorldDef{});
   const int32_t hand = add_hand(world, right_hand());
   HandState h = scenes::open_hand();
@@ -181,10 +186,15 @@ TEST(World, BadHapticInputIsCountedAndLeavesTheGraphicHand) {
   world.step();
   const HandState before = world.read().hands[0].graphic;
   h.angles[5] = std::numeric_limits<double>::quiet_NaN();
-  world.set_haptic(hand, h);
+  EXPECT_EQ(world.set_haptic(hand, h), FRUSTA_ERROR_NOT_FINITE);
+  h.angles[5] = 1.01 * kMaxJointAngle;
+  EXPECT_EQ(world.set_haptic(hand, h), FRUSTA_ERROR_OUT_OF_RANGE);
+  h.angles[5] = 0.3;
+  h.palm_rotation = glm::dquat(0.1, 0.0, 0.0, 0.0);
+  EXPECT_EQ(world.set_haptic(hand, h), FRUSTA_ERROR_OUT_OF_RANGE);
   world.step();
   const WorldSnapshot& s = world.read();
-  EXPECT_EQ(s.rejected_inputs, 1);
+  EXPECT_EQ(s.rejected_inputs, 0);
   EXPECT_EQ(s.hands[0].graphic.angles[5], before.angles[5]);
   EXPECT_EQ(world.set_haptic(1, scenes::open_hand()), FRUSTA_ERROR_OUT_OF_RANGE) << "one hand only";
   EXPECT_EQ(world.set_haptic(-1, scenes::open_hand()), FRUSTA_ERROR_OUT_OF_RANGE);

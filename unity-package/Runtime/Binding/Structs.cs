@@ -526,7 +526,7 @@ namespace Frusta.Binding
         /// <summary>Solver sub-steps this step.</summary>
         public int Substeps;
         int lagging;
-        internal int Reserved0;
+        int infeasible;
         fixed double fingertipForce[FrustaConstants.FingerCount * 3];
         fixed double fingerResistance[FrustaConstants.FingerCount];
         fixed double jointTorque[FrustaConstants.HandJointCount];
@@ -540,6 +540,11 @@ namespace Frusta.Binding
 
         /// <summary>true when the sub-step cap stopped the hand short of its input this step.</summary>
         public readonly bool Lagging => lagging != 0;
+
+        /// <summary>true when a contact QP had no point meeting every row it was given this
+        /// step (nearly parallel or contradictory constraints): the hand stayed at its last safe
+        /// estimate, short of its input.</summary>
+        public readonly bool Infeasible => infeasible != 0;
 
         static int Joint(int joint)
         {
