@@ -303,16 +303,23 @@ typedef struct frusta_tree_id {
 } frusta_tree_id;
 
 /** Bake parameters. Leaves are spheres fitted to the surface from inside plus
- *  inscribed spheres filling the interior; see README "Sphere trees". */
+ *  inscribed spheres filling the interior; see README "Sphere trees and baking".
+ *  Every field has a range, checked by frusta_bake_sphere_tree before anything is
+ *  baked (FRUSTA_ERROR_OUT_OF_RANGE, or FRUSTA_ERROR_NOT_FINITE for NaN/infinity,
+ *  naming the field); frusta-bake's options have the same ranges. */
 typedef struct frusta_bake_def {
   int32_t struct_size;   /* sizeof(frusta_bake_def) */
   int32_t branching;     /* children per node, 2..16; default 4 */
-  double target_error;   /* metres, bound on both error figures; default 0.001 */
+  double target_error;   /* metres, bound on both error figures, 1e-5..1 (10 um: what
+                            float geometry resolves on a hand-sized object; 1 m: spheres
+                            larger than any hand); default 0.001 */
   int64_t max_leaves;    /* leaf budget, 1..2^24; default 200000 */
   int32_t max_depth;     /* 1..40; a deeper tree is refused; default 40 */
   int32_t reserved0;     /* explicit padding */
-  int64_t error_samples; /* points behind each error figure, 1e3..1e8; default 100000 */
-  uint64_t seed;         /* sampling seed: same mesh and seed, same tree; default 1 */
+  int64_t error_samples; /* points behind each error figure, 1e3..1e7 (each point is kept
+                            in memory while measuring); default 100000 */
+  uint64_t seed;         /* sampling seed, any value: same mesh and seed, same tree;
+                            default 1 */
   int32_t internal_value;/* set by frusta_default_bake_def(); do not touch */
   int32_t reserved1;     /* explicit padding */
 } frusta_bake_def;

@@ -46,15 +46,9 @@ frusta_result bake(const float* vertices, int32_t vertex_count, const int32_t* i
                    bool* target_met) {
   TriangleMesh mesh;
   if (frusta_result r = read_mesh(vertices, vertex_count, indices, index_count, &mesh)) return r;
-  BakeParams params;
-  params.target_error = def.target_error;
-  params.max_leaves = def.max_leaves;
-  params.branching = def.branching;
-  params.max_depth = def.max_depth;
-  params.error_samples = def.error_samples;
-  params.seed = def.seed;
   TreeFile tree;
-  if (frusta_result r = bake_sphere_tree(mesh, params, nullptr, &tree, target_met)) return r;
+  if (frusta_result r = bake_sphere_tree(mesh, bake_params_of(def), nullptr, &tree, target_met))
+    return r;
   *file = encode_tree_file(tree);
   return FRUSTA_OK;
 }
@@ -86,7 +80,13 @@ FRUSTA_BAKE_PLUGIN_API frusta_result frusta_bake_plugin_bake(
     return FRUSTA_OK;
   });
   if (r != FRUSTA_OK && error != nullptr && error_capacity > 0) {
-    std::strncpy(error, frusta_last_error(), static_cast<size_t>(error_capacity) - 1);
+    // the message without fail()'s "FRUSTA_ERROR_...: " prefix: the runtime's fail()
+    // adds the code again
+    const char* message = frusta_last_error();
+    const size_t prefix = std::strlen(frusta_result_name(r));
+    if (std::strncmp(message, frusta_result_name(r), prefix) == 0 && message[prefix] == ':')
+      message += prefix + (message[prefix + 1] == ' ' ? 2 : 1);
+    std::strncpy(error, message, static_cast<size_t>(error_capacity) - 1);
     error[error_capacity - 1] = 0;
   }
   return r;

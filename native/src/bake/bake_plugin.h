@@ -28,8 +28,9 @@
 #  define FRUSTA_BAKE_PLUGIN_API FRUSTA_BAKE_PLUGIN_EXPORT
 #endif
 
-/* bumped with any change below, and with any change of frusta_bake_def */
-#define FRUSTA_BAKE_PLUGIN_VERSION 1
+/* bumped with any change below, and with any change of frusta_bake_def
+ * (2: error messages come without the code's name) */
+#define FRUSTA_BAKE_PLUGIN_VERSION 2
 
 /** FRUSTA_BAKE_PLUGIN_VERSION of the baker's build. */
 FRUSTA_BAKE_PLUGIN_API int32_t frusta_bake_plugin_version(void);
@@ -38,7 +39,8 @@ FRUSTA_BAKE_PLUGIN_API int32_t frusta_bake_plugin_version(void);
  *  On success *out_tree_file holds the tree as a .frtree file of *out_size bytes,
  *  to release with frusta_bake_plugin_free, and *out_target_met is 1 when both error
  *  figures met the target. On failure, the message is written to error (at most
- *  error_capacity bytes with the terminating NUL). Thread: any. */
+ *  error_capacity bytes with the terminating NUL) without the code's name, which
+ *  the caller reports with the result. Thread: any. */
 FRUSTA_BAKE_PLUGIN_API frusta_result frusta_bake_plugin_bake(
     const float* vertices, int32_t vertex_count, const int32_t* indices, int32_t index_count,
     const frusta_bake_def* def, uint8_t** out_tree_file, int64_t* out_size,

@@ -47,24 +47,9 @@ BakeError measure_bake_error(const MeshQueries& queries, const TriangleMesh& mes
 
 frusta_result bake_sphere_tree(const TriangleMesh& mesh, const BakeParams& params,
                                const ProgressFn& progress, TreeFile* out, bool* target_met) {
-  // every parameter is checked before the (long) cover, and each message names its field
-  if (!std::isfinite(params.target_error))
-    return fail(FRUSTA_ERROR_NOT_FINITE, "target_error is %g, must be a finite length in metres",
-                params.target_error);
-  if (!(params.target_error > 0.0))
-    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "target_error is %g m, must be > 0", params.target_error);
-  if (params.max_leaves < 1 || params.max_leaves > kMaxLeaves)
-    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "max_leaves is %lld, must be 1..%lld",
-                static_cast<long long>(params.max_leaves), static_cast<long long>(kMaxLeaves));
-  if (params.branching < 2 || params.branching > kMaxBranching)
-    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "branching is %d, must be 2..%d", params.branching,
-                kMaxBranching);
-  if (params.max_depth < 1 || params.max_depth > kMaxTreeDepth)
-    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "max_depth is %d, must be 1..%d", params.max_depth,
-                kMaxTreeDepth);
-  if (params.error_samples < 1000 || params.error_samples > 100000000)
-    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "error_samples is %lld, must be 1e3..1e8",
-                static_cast<long long>(params.error_samples));
+  // the C++ callers' boundary (the sample generator, tests, benchmarks); the C ABI
+  // and frusta-bake have refused a bad value already, with their own wording
+  if (frusta_result r = check_bake_params(params)) return r;
   if (frusta_result r = check_mesh(mesh, "mesh")) return r;
 
   const auto start = std::chrono::steady_clock::now();
@@ -77,11 +62,13 @@ frusta_result bake_sphere_tree(const TriangleMesh& mesh, const BakeParams& param
     return fail(FRUSTA_ERROR_OUT_OF_RANGE, "the mesh encloses no volume the baker could fill");
 
   TreeFile file;
-  if (frusta_result r = build_sphere_tree(cover.leaves, {params.branching}, &file.tree)) return r;
+  const TreeBuildOptions build{static_cast<int32_t>(params.branching)};
+  if (frusta_result r = build_sphere_tree(cover.leaves, build, &file.tree)) return r;
   if (file.tree.depth > params.max_depth)
     return fail(FRUSTA_ERROR_OUT_OF_RANGE, "%zu leaves need depth %d with branching %d, more than "
-                "max depth %d: raise the branching or the depth", cover.leaves.size(),
-                file.tree.depth, params.branching, params.max_depth);
+                "max depth %lld: raise the branching or the depth", cover.leaves.size(),
+                file.tree.depth, static_cast<int>(params.branching),
+                static_cast<long long>(params.max_depth));
   file.bounds_min = vec3(INFINITY);
   file.bounds_max = vec3(-INFINITY);
   for (const Sphere& l : file.tree.leaves) {
@@ -94,7 +81,7 @@ frusta_result bake_sphere_tree(const TriangleMesh& mesh, const BakeParams& param
   BakeRecord& b = file.bake;
   b.target_error = params.target_error;
   b.max_leaves = params.max_leaves;
-  b.max_depth = params.max_depth;
+  b.max_depth = static_cast<int32_t>(params.max_depth);
   b.triangle_count = static_cast<int32_t>(std::min<size_t>(mesh.triangles.size(), INT32_MAX));
   b.uncovered_error = error.uncovered;
   b.protruding_error = error.protruding;

@@ -3,20 +3,12 @@
 // of the construction (fresh samples, Embree distances and inside tests).
 #pragma once
 
+#include "bake/bake_params.h"
 #include "bake/sphere_cover.h"
 #include "spheretree/tree_file.h"
 #include "spheretree/tree_limits.h"
 
 namespace frusta {
-
-struct BakeParams {
-  double target_error = 0.001;   // metres: bound on both error figures
-  int64_t max_leaves = 200000;
-  int32_t branching = 4;
-  int32_t max_depth = kMaxTreeDepth;
-  int64_t error_samples = 100000;  // points on the surface, and as many on the leaves
-  uint64_t seed = 1;
-};
 
 struct BakeError {
   double uncovered = 0.0;   // largest distance from a surface point to the leaves
@@ -27,7 +19,8 @@ struct BakeError {
 BakeError measure_bake_error(const MeshQueries& queries, const TriangleMesh& mesh,
                              const SphereTree& tree, int64_t samples, uint64_t seed);
 
-// The whole bake. *target_met says whether both figures came out at or under the
+// The whole bake; params are checked (check_bake_params) before anything else.
+// *target_met says whether both figures came out at or under the
 // target (they may not when max_leaves runs out first); the tree is valid either way.
 frusta_result bake_sphere_tree(const TriangleMesh& mesh, const BakeParams& params,
                                const ProgressFn& progress, TreeFile* out, bool* target_met);

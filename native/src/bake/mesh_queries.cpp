@@ -47,12 +47,22 @@ const vec3 kVoteDirections[5] = {
 // a ray crossing more surfaces than this is in a pathological mesh; its count so far votes
 constexpr int kMaxCrossings = 256;
 
+// Embree asserts (and aborts the process) on a ray or query whose origin is not
+// within +-1.8e18 in float; callers' points stay far inside this
+constexpr double kEmbreeSafeCoordinate = 1e15;
+
+bool embree_safe(const vec3& p) {
+  return std::fabs(p.x) <= kEmbreeSafeCoordinate && std::fabs(p.y) <= kEmbreeSafeCoordinate &&
+         std::fabs(p.z) <= kEmbreeSafeCoordinate;  // false for NaN too
+}
+
 }  // namespace
 
 struct MeshQueries::Impl {
   const TriangleMesh* mesh = nullptr;
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
+  vec3 lo{INFINITY}, hi{-INFINITY};  // of the vertices: nothing outside is inside
 
   struct Search {
     const TriangleMesh* mesh;
@@ -82,6 +92,10 @@ frusta_result MeshQueries::create(const TriangleMesh& mesh, std::unique_ptr<Mesh
   q->impl_ = std::make_unique<Impl>();
   Impl& m = *q->impl_;
   m.mesh = &mesh;
+  for (const vec3& v : mesh.vertices) {
+    m.lo = glm::min(m.lo, v);
+    m.hi = glm::max(m.hi, v);
+  }
   m.device = rtcNewDevice(nullptr);
   if (!m.device)
     return fail(FRUSTA_ERROR_INTERNAL, "Embree device creation failed (error %d)",
@@ -122,6 +136,17 @@ MeshQueries::~MeshQueries() {
 
 MeshQueries::Closest MeshQueries::closest(const vec3& point, double max_distance) const {
   Impl::Search search{impl_->mesh, point};
+  if (!embree_safe(point)) {
+    // beyond what Embree accepts: every triangle, by hand (NaN finds nothing)
+    const TriangleMesh& mesh = *impl_->mesh;
+    for (const auto& t : mesh.triangles) {
+      const vec3 q = closest_on_triangle(point, mesh.vertices[t[0]], mesh.vertices[t[1]],
+                                         mesh.vertices[t[2]]);
+      const double d = glm::length(q - point);
+      if (d < search.best && d <= max_distance) search.best = d, search.nearest = q;
+    }
+    return {search.best, search.nearest};
+  }
   RTCPointQuery query;
   query.x = static_cast<float>(point.x);
   query.y = static_cast<float>(point.y);
@@ -135,6 +160,12 @@ MeshQueries::Closest MeshQueries::closest(const vec3& point, double max_distance
 }
 
 bool MeshQueries::inside(const vec3& point) const {
+  // outside the mesh's box (or NaN) is outside the solid; this also keeps every ray
+  // origin where Embree accepts it
+  const Impl& m = *impl_;
+  if (!(point.x >= m.lo.x && point.x <= m.hi.x && point.y >= m.lo.y && point.y <= m.hi.y &&
+        point.z >= m.lo.z && point.z <= m.hi.z))
+    return false;
   int votes = 0;
   for (const vec3& d : kVoteDirections) {
     // winding number along the ray: +1 leaving a shell (back face), -1 entering one

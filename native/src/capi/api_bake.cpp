@@ -3,7 +3,7 @@
 // (bake/bake_plugin.h): the runtime itself needs no Embree.
 #include <cstring>
 
-#include "bake/baker.h"
+#include "bake/bake_params.h"
 #include "capi/bake_plugin_loader.h"
 #include "capi/convert.h"
 #include "capi/tree_registry.h"
@@ -18,10 +18,10 @@ FRUSTA_API frusta_bake_def frusta_default_bake_def(void) {
   frusta_bake_def def;
   std::memset(&def, 0, sizeof def);
   def.struct_size = sizeof(frusta_bake_def);
-  def.branching = defaults.branching;
+  def.branching = static_cast<int32_t>(defaults.branching);
   def.target_error = defaults.target_error;
   def.max_leaves = defaults.max_leaves;
-  def.max_depth = defaults.max_depth;
+  def.max_depth = static_cast<int32_t>(defaults.max_depth);
   def.error_samples = defaults.error_samples;
   def.seed = defaults.seed;
   def.internal_value = kDefCookie;
@@ -34,6 +34,8 @@ FRUSTA_API frusta_result frusta_bake_sphere_tree(const float* vertices, int32_t 
                                                  frusta_tree_id* out_tree) {
   if (frusta_result r = check_def_input(def, "frusta_bake_def")) return r;
   if (frusta_result r = check_pointer(out_tree, "out_tree")) return r;
+  // the parameters' one check, before the baker is loaded (bake/bake_params.h)
+  if (frusta_result r = check_bake_params(bake_params_of(*def))) return r;
   return guarded("frusta_bake_sphere_tree", [&] {
     std::string why;
     const BakePlugin* plugin = bake_plugin(&why);
@@ -44,7 +46,7 @@ FRUSTA_API frusta_result frusta_bake_sphere_tree(const float* vertices, int32_t 
     char error[1024] = "";
     const frusta_result r = plugin->bake(vertices, vertex_count, indices, index_count, def,
                                          &bytes, &size, &target_met, error, sizeof error);
-    if (r != FRUSTA_OK) return fail(r, "%s", error);
+    if (r != FRUSTA_OK) return fail(r, "%s", error);  // the baker's message, without its code
     auto tree = std::make_unique<TreeObject>();
     const frusta_result decoded =
         decode_tree_file(bytes, static_cast<size_t>(size), "the baked tree", &tree->file);
