@@ -163,6 +163,9 @@ namespace Frusta.Binding
         public const int HandSegmentCount = FingerCount * SegmentsPerFinger;
         /// <summary>Joint angles per hand (20), finger-major.</summary>
         public const int HandJointCount = FingerCount * JointsPerFinger;
+        /// <summary>The largest |joint angle| any input may carry, radians (4 pi, <c>FRUSTA_MAX_JOINT_ANGLE</c>):
+        /// beyond it a reading is refused as corrupt; within it, angles beyond the hand's limits are clamped.</summary>
+        public const double MaxJointAngle = 12.566370614359172;
         /// <summary>Palm degrees of freedom in a Jacobian (6): translation x y z, then rotation x y z.</summary>
         public const int PalmDof = 6;
         /// <summary>The body index of the palm in <see cref="FrustaWorldContact.Body"/> (15).</summary>

@@ -90,7 +90,7 @@ namespace Frusta.Binding
         /// </summary>
         /// <param name="hand">The index from <see cref="AddHand"/>.</param>
         /// <param name="palm">Metres, world frame; quaternion norm in [0.5, 2].</param>
-        /// <param name="angles">Exactly 20 radians, |angle| &lt;= 100 (beyond the limits is clamped).</param>
+        /// <param name="angles">Exactly 20 radians, |angle| &lt;= 4 pi (FrustaConstants.MaxJointAngle; beyond the limits is clamped).</param>
         /// <exception cref="FrustaException"><see cref="FrustaResult.WrongState"/> on a hand a glove drives
         /// (<see cref="OpenDevice(string, in FrustaDeviceDef)"/>) until the glove is disposed.</exception>
         public void SetHaptic(int hand, in FrustaPose palm, ReadOnlySpan<double> angles)
