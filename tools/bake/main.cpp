@@ -2,10 +2,12 @@
 // frusta-bake: glTF 2.0 mesh in, sphere tree (.frtree) out, with its measured error.
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <map>
 #include <string>
 
 #include "bake/baker.h"
@@ -35,19 +37,25 @@ Both error figures are measured on fresh random points after the bake:
   protruding  the largest distance a leaf stands out of the mesh: how far above
               the true surface a finger stops
 
-options:
+options (a value outside its range is refused with exit code 2):
   -o, --output PATH    where to write the tree (default: INPUT with .frtree)
-  --max-error MM       target for both error figures, millimetres (default 1)
-  --max-leaves N       leaf budget; the bake stops there even if the target is not
-                       met (default 200000)
+  --max-error MM       target for both error figures, millimetres, 0.01..1000
+                       (default 1)
+  --max-leaves N       leaf budget, 1..16777216; the bake stops there even if the
+                       target is not met (default 200000)
   --branching N        children per tree node, 2..16 (default 4)
   --max-depth N        refuse trees deeper than this, 1..40 (default 40)
-  --samples N          points behind each error figure, >= 100000 recommended
-                       (default 100000)
-  --seed N             random seed of the sampling (default 1): same input, same tree
+  --samples N          points behind each error figure, 1000..10000000; >= 100000
+                       recommended (default 100000)
+  --seed N             random seed of the sampling, 0..2^64-1 (default 1): same
+                       input, same tree
   --json               print one JSON object on stdout instead of the summary
   -q, --quiet          no summary and no progress bar
   -h, --help           this text
+
+The input's buffers must be data: URIs, the GLB's own chunk, or regular files in
+the input's folder; images are never read. See README "Sphere trees and baking"
+for the loader's limits.
 
 exit codes:
   0 written, both figures within the target
@@ -60,20 +68,47 @@ struct Options {
   std::string input, output;
   frusta::BakeParams params;
   bool json = false, quiet = false;
+  std::map<frusta::BakeField, std::string> given;  // option and text behind each field
 };
 
-int usage(const char* message) {
-  std::fprintf(stderr, "frusta-bake: %s\n(run frusta-bake --help for the options)\n", message);
+int usage(const std::string& message) {
+  std::fprintf(stderr, "frusta-bake: %s\n(run frusta-bake --help for the options)\n",
+               message.c_str());
   return kUsage;
 }
 
-bool number(const char* text, double* out) {
+bool real_number(const char* text, double* out) {
   char* end = nullptr;
   *out = std::strtod(text, &end);
-  return end && *end == '\0' && end != text;
+  return end != text && *end == '\0';
+}
+
+// integers as integers: "1e30", "nan" and "4.5" are not, nor is what overflows 64 bits
+bool integer(const char* text, int64_t* out) {
+  char* end = nullptr;
+  errno = 0;
+  const long long v = std::strtoll(text, &end, 10);
+  if (end == text || *end != '\0' || errno == ERANGE) return false;
+  *out = v;
+  return true;
+}
+
+bool unsigned_integer(const char* text, uint64_t* out) {
+  if (*text < '0' || *text > '9') return false;  // strtoull would take "-1" as 2^64 - 1
+  char* end = nullptr;
+  errno = 0;
+  const unsigned long long v = std::strtoull(text, &end, 10);
+  if (*end != '\0' || errno == ERANGE) return false;
+  *out = v;
+  return true;
 }
 
 int parse(int argc, char** argv, Options* o) {
+  using frusta::BakeField;
+  const std::map<std::string, BakeField> integers = {{"--max-leaves", BakeField::kLeaves},
+                                                     {"--branching", BakeField::kBranching},
+                                                     {"--max-depth", BakeField::kDepth},
+                                                     {"--samples", BakeField::kSamples}};
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "-h" || a == "--help") {
@@ -83,23 +118,40 @@ int parse(int argc, char** argv, Options* o) {
     if (a == "--json") { o->json = true; continue; }
     if (a == "-q" || a == "--quiet") { o->quiet = true; continue; }
     if (a.rfind("-", 0) == 0) {
-      if (i + 1 >= argc) return usage((a + " needs a value").c_str());
+      if (i + 1 >= argc) return usage(a + " needs a value");
       const char* value = argv[++i];
-      double v = 0.0;
       if (a == "-o" || a == "--output") { o->output = value; continue; }
-      if (!number(value, &v)) return usage((a + " needs a number, got '" + value + "'").c_str());
-      if (a == "--max-error") o->params.target_error = v * 1e-3;
-      else if (a == "--max-leaves") o->params.max_leaves = static_cast<int64_t>(v);
-      else if (a == "--branching") o->params.branching = static_cast<int32_t>(v);
-      else if (a == "--max-depth") o->params.max_depth = static_cast<int32_t>(v);
-      else if (a == "--samples") o->params.error_samples = static_cast<int64_t>(v);
-      else if (a == "--seed") o->params.seed = static_cast<uint64_t>(v);
-      else return usage(("unknown option " + a).c_str());
+      const std::string given = a + " " + value;
+      if (a == "--max-error") {
+        double mm = 0.0;
+        if (!real_number(value, &mm)) return usage(a + " needs a number, got '" + value + "'");
+        o->params.target_error = mm * 1e-3;
+        o->given[BakeField::kTarget] = given + " (mm)";
+      } else if (a == "--seed") {
+        if (!unsigned_integer(value, &o->params.seed))
+          return usage(a + " needs an integer 0..2^64-1, got '" + value + "'");
+      } else if (const auto field = integers.find(a); field != integers.end()) {
+        int64_t v = 0;
+        if (!integer(value, &v)) return usage(a + " needs an integer, got '" + value + "'");
+        switch (field->second) {
+          case BakeField::kLeaves: o->params.max_leaves = v; break;
+          case BakeField::kBranching: o->params.branching = v; break;
+          case BakeField::kDepth: o->params.max_depth = v; break;
+          default: o->params.error_samples = v; break;
+        }
+        o->given[field->second] = given;
+      } else {
+        return usage("unknown option " + a);
+      }
       continue;
     }
     if (!o->input.empty()) return usage("only one input file");
     o->input = a;
   }
+  // the ranges: the same check as the C ABI's (bake/bake_params.h)
+  BakeField field = BakeField::kNone;
+  if (frusta::check_bake_params(o->params, &field) != FRUSTA_OK)
+    return usage(o->given[field] + ": " + frusta_last_error());
   if (o->input.empty()) return usage("no input file");
   if (o->output.empty()) {
     const size_t dot = o->input.find_last_of('.');

@@ -72,7 +72,11 @@ TEST(FrustaBakeCli, ExitCodesSeparateTheFailures) {
   const std::string junk = ::testing::TempDir() + "junk.gltf";
   std::ofstream(junk) << "not gltf";
   EXPECT_EQ(run(junk).code, 3);
-  EXPECT_EQ(run("--branching 99 " + kObjects + "/box.glb -o " + ::testing::TempDir() + "b.frtree").code, 4);
+  EXPECT_EQ(run("--branching 99 " + kObjects + "/box.glb -o " + ::testing::TempDir() + "b.frtree").code, 2);
+  const Process deep = run("--max-depth 1 --branching 2 " + kObjects + "/box.glb -o " +
+                           ::testing::TempDir() + "d.frtree");
+  EXPECT_EQ(deep.code, 4) << deep.out;
+  EXPECT_NE(deep.out.find("max depth 1"), std::string::npos) << deep.out;
   EXPECT_EQ(run("-o /nonexistent/dir/x.frtree " + kObjects + "/box.glb").code, 5);
   const Process budget = run("--max-leaves 20 -o " + ::testing::TempDir() + "c.frtree " + kObjects + "/ball.glb");
   EXPECT_EQ(budget.code, 6) << budget.out;
@@ -82,6 +86,41 @@ TEST(FrustaBakeCli, ExitCodesSeparateTheFailures) {
   for (const char* option : {"--max-error", "--max-leaves", "--branching", "--max-depth", "--samples",
                              "--seed", "--json", "--output", "--quiet"})
     EXPECT_NE(help.out.find(option), std::string::npos) << option;
+}
+
+// Issue 16: every option's range is checked where it is parsed, integers as
+// integers; out of range is a usage error (2) naming the option, never a bake that
+// fails (4) or aborts in Embree (134), nor a cast of 1e30 to an integer
+TEST(FrustaBakeCli, OptionsOutOfRangeAreUsageErrorsNamingTheOption) {
+  struct Bad {
+    const char* arguments;
+    const char* fragment;
+  };
+  const Bad cases[] = {
+      {"--max-error 1e300", "--max-error 1e300"}, {"--max-error 1001", "--max-error"},
+      {"--max-error 0.001", "--max-error"},       {"--max-error 0", "--max-error"},
+      {"--max-error -1", "--max-error"},          {"--max-error nan", "--max-error"},
+      {"--max-error inf", "--max-error"},         {"--branching 99", "--branching 99"},
+      {"--branching 1", "--branching"},           {"--branching 1e30", "--branching"},
+      {"--branching nan", "--branching"},         {"--branching 2.5", "--branching"},
+      {"--branching 4294967298", "4294967298"},   {"--max-leaves 0", "--max-leaves"},
+      {"--max-leaves 16777217", "--max-leaves"},  {"--max-leaves 1e30", "--max-leaves"},
+      {"--max-leaves 99999999999999999999", "--max-leaves"},
+      {"--max-depth 41", "--max-depth"},          {"--max-depth -1", "--max-depth"},
+      {"--samples 999", "--samples"},             {"--samples 10000001", "--samples"},
+      {"--samples 1e30", "--samples"},            {"--samples nan", "--samples"},
+      {"--seed -1", "--seed"},                    {"--seed 1e3", "--seed"},
+      {"--seed 18446744073709551616", "--seed"}};
+  for (const Bad& c : cases) {
+    const Process r = run(std::string(c.arguments) + " -o " + ::testing::TempDir() + "r.frtree " +
+                          kObjects + "/box.glb");
+    EXPECT_EQ(r.code, 2) << c.arguments << ": " << r.out;
+    EXPECT_NE(r.out.find(c.fragment), std::string::npos) << c.arguments << ": " << r.out;
+  }
+  // the edges themselves are taken: the largest target on a small box, the largest seed
+  const Process edge = run("--max-error 1000 --samples 1000 --seed 18446744073709551615 -o " +
+                           ::testing::TempDir() + "edge.frtree " + kObjects + "/box.glb");
+  EXPECT_TRUE(edge.code == 0 || edge.code == 6) << edge.out;
 }
 
 }  // namespace
