@@ -6,7 +6,7 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 
 # Debian packages the build needs (docs: /work/shared/deps.md, README "Dependencies").
 FRUSTA_PACKAGES=(cmake ninja-build g++ pkg-config libglm-dev libhidapi-dev libusb-1.0-0-dev
-                 libembree-dev libtinygltf-dev libbenchmark-dev libgtest-dev)
+                 libembree-dev libtinygltf-dev nlohmann-json3-dev libbenchmark-dev libgtest-dev)
 
 # ensure_packages [PACKAGE...]: those (default: FRUSTA_PACKAGES) installed
 ensure_packages() {

@@ -9,6 +9,7 @@
 #include <regex>
 #include <string>
 
+#include "corpus_fixture.h"
 #include "spheretree/tree_file.h"
 
 namespace {
@@ -121,6 +122,32 @@ TEST(FrustaBakeCli, OptionsOutOfRangeAreUsageErrorsNamingTheOption) {
   const Process edge = run("--max-error 1000 --samples 1000 --seed 18446744073709551615 -o " +
                            ::testing::TempDir() + "edge.frtree " + kObjects + "/box.glb");
   EXPECT_TRUE(edge.code == 0 || edge.code == 6) << edge.out;
+}
+
+// The hostile glTF corpus through the CLI (issue 16): no crash, hang or abort, exit 3
+// with a message naming the file, nothing beside the input's folder opened; the files
+// that load bake.
+TEST(FrustaBakeCli, TheHostileCorpusEndsInExitCode3NamingTheFile) {
+  frusta::corpus::Folder folder;
+  frusta::corpus::OpenWatch outside(folder.root());
+  for (const frusta::corpus::Case& c : frusta::corpus::Folder::all_cases()) {
+    const std::string path = folder.in(c.file);
+    const Process r = run("-q --max-error 2 --samples 1000 -o " + folder.in("out.frtree") + " " + path);
+    if (c.result == "FRUSTA_OK") {
+      EXPECT_TRUE(r.code == 0 || r.code == 6) << c.file << ": " << r.out;
+    } else {
+      EXPECT_EQ(r.code, 3) << c.file << ": " << r.out;
+      EXPECT_NE(r.out.find(path), std::string::npos) << c.file << ": " << r.out;
+      EXPECT_NE(r.out.find(c.fragment), std::string::npos) << c.file << ": " << r.out;
+    }
+    for (const std::string& name : outside.take())
+      ADD_FAILURE() << c.file << ": " << name << " beside the input's folder was opened";
+  }
+  const Process fifo = run("-q " + folder.in("fifo.bin"));
+  EXPECT_EQ(fifo.code, 3) << fifo.out;
+  const Process zero = run("-q -o " + folder.in("z.frtree") + " /dev/zero");
+  EXPECT_EQ(zero.code, 3) << zero.out;
+  EXPECT_NE(zero.out.find("not a regular file"), std::string::npos) << zero.out;
 }
 
 }  // namespace

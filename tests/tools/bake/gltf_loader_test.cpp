@@ -2,14 +2,19 @@
 #include "gltf_loader.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
+#include <set>
 #include <string>
 #include <vector>
 
 #include <glm/geometric.hpp>
+
+#include "corpus_fixture.h"
 
 namespace frusta {
 namespace {
@@ -150,6 +155,105 @@ TEST(GltfLoader, BrokenFilesGiveTheirOwnError) {
   }
   GltfLoadResult r;
   EXPECT_EQ(load_gltf_triangles(dir() + "does-not-exist.gltf", &r), FRUSTA_ERROR_IO);
+}
+
+// The hostile corpus (corpus/cases.tsv; issue 16): each file ends in its documented
+// result with a message naming the file and the part at fault, and no file beside
+// the input's folder is opened, by the buffers, the images or tinygltf's search of
+// the working folder.
+TEST(GltfLoaderCorpus, EveryFileEndsInItsResultAndNothingOutsideTheFolderIsOpened) {
+  corpus::Folder folder;
+  corpus::OpenWatch outside(folder.root());
+  for (const corpus::Case& c : corpus::Folder::all_cases()) {
+    const std::string path = folder.in(c.file);
+    GltfLoadResult r;
+    const frusta_result got = load_gltf_triangles(path, &r);
+    const std::string message = got == FRUSTA_OK ? "" : frusta_last_error();
+    EXPECT_EQ(frusta_result_name(got), c.result) << c.file << ": " << message;
+    if (got == FRUSTA_OK) {
+      EXPECT_EQ(r.mesh.triangles.size(), 4u) << c.file;
+    } else {
+      EXPECT_NE(message.find(c.fragment), std::string::npos) << c.file << ": " << message;
+      EXPECT_NE(message.find(path), std::string::npos) << c.file << ": " << message;
+      EXPECT_EQ(message.find("FRUSTA_ERROR", 1), std::string::npos) << "the code twice: " << message;
+    }
+    for (const std::string& name : outside.take())
+      ADD_FAILURE() << c.file << ": " << name << " beside the input's folder was opened";
+  }
+}
+
+TEST(GltfLoaderCorpus, EveryCorpusFileHasItsCase) {
+  std::set<std::string> listed;
+  for (const corpus::Case& c : corpus::Folder::cases()) listed.insert(c.file);
+  for (const auto& entry : std::filesystem::directory_iterator(FRUSTA_GLTF_CORPUS_DIR)) {
+    const std::string ext = entry.path().extension().string();
+    if (ext == ".gltf" || ext == ".glb") {
+      EXPECT_EQ(listed.count(entry.path().filename().string()), 1u) << entry.path();
+    }
+  }
+  EXPECT_GE(listed.size(), 25u);
+}
+
+// the input itself: a FIFO would block an open for ever, a device never end
+TEST(GltfLoaderCorpus, TheInputMustBeARegularFileWithinTheLimit) {
+  corpus::Folder folder;
+  const std::string fifo = folder.in("input_fifo.gltf");
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  struct Input {
+    std::string path;
+    const char* fragment;
+  };
+  for (const Input& input : {Input{fifo, "not a regular file"}, Input{"/dev/zero", "not a regular file"},
+                             Input{folder.in("sub"), "not a regular file"},
+                             Input{folder.in("huge.bin"), "bytes the loader reads"}}) {
+    GltfLoadResult r;
+    EXPECT_EQ(load_gltf_triangles(input.path, &r), FRUSTA_ERROR_IO) << input.path;
+    const std::string message = frusta_last_error();
+    EXPECT_NE(message.find(input.fragment), std::string::npos) << message;
+    EXPECT_NE(message.find(input.path), std::string::npos) << message;
+  }
+}
+
+// limits the corpus does not reach cheaply: the JSON's value count, nesting exactly at
+// the limit, and instancing just within the node budget
+TEST(GltfLoaderCorpus, LimitsHoldAtTheirEdges) {
+  corpus::Folder folder;
+  const std::vector<unsigned char> tetra = corpus::tetra_bin();
+  GltfLoadResult r;
+  // 64 levels (the root object is one) load
+  const std::string at_limit = folder.in("depth_64.glb");
+  corpus::write_file(at_limit, corpus::glb_of(corpus::deep_gltf(GltfLimits::kMaxJsonDepth - 1, true), tetra));
+  EXPECT_EQ(load_gltf_triangles(at_limit, &r), FRUSTA_OK) << frusta_last_error();
+  // too many values, however flat
+  std::string values = "[0";
+  for (size_t i = 0; i < GltfLimits::kMaxJsonValues; ++i) values += ",0";
+  std::string many = corpus::deep_gltf(1, true);
+  many.replace(many.find("[0]"), 3, values + "]");
+  corpus::write_file(folder.in("values.glb"), corpus::glb_of(many, tetra));
+  EXPECT_EQ(load_gltf_triangles(folder.in("values.glb"), &r), FRUSTA_ERROR_FILE_FORMAT);
+  EXPECT_NE(std::string(frusta_last_error()).find("JSON values"), std::string::npos)
+      << frusta_last_error();
+  // L doubling levels instance 2^(L+1) - 1 nodes: 18 are within the budget (and load
+  // 2^18 tetrahedra), 20 are over it
+  for (int levels : {18, 20}) {
+    std::string nodes = "[";
+    for (int i = 0; i < levels; ++i)
+      nodes += "{\"children\": [" + std::to_string(i + 1) + ", " + std::to_string(i + 1) + "]}, ";
+    nodes += "{\"mesh\": 0}]";
+    std::string json = corpus::deep_gltf(1, true);
+    json.replace(json.find("[{\"mesh\": 0}]"), 13, nodes);
+    const std::string path = folder.in("levels" + std::to_string(levels) + ".glb");
+    corpus::write_file(path, corpus::glb_of(json, tetra));
+    const frusta_result got = load_gltf_triangles(path, &r);
+    if (levels == 18) {
+      ASSERT_EQ(got, FRUSTA_OK) << frusta_last_error();
+      EXPECT_EQ(r.mesh.triangles.size(), 4u << 18);
+    } else {
+      EXPECT_EQ(got, FRUSTA_ERROR_FILE_FORMAT);
+      EXPECT_NE(std::string(frusta_last_error()).find("budget of 1048576"), std::string::npos)
+          << frusta_last_error();
+    }
+  }
 }
 
 }  // namespace
