@@ -49,10 +49,14 @@ frusta_result make_glove(const DeviceAddress& address, const GloveCalibration& c
       if (frusta_result r = make_protocol(kFrusta, calibration, &glove)) return r;
       break;
     case DeviceKind::kReplay: {
+      // read and checked once, here: the file is not read again at open
+      auto replay = std::make_unique<ReplayStream>(address.path, address.real_time, address.loop);
       std::string name;
-      if (frusta_result r = read_recording_protocol(address.path, &name)) return r;
-      if (frusta_result r = make_protocol(name, calibration, &glove)) return r;
-      glove.stream = std::make_unique<ReplayStream>(address.path, address.real_time, address.loop);
+      if (frusta_result r = replay->load(&name)) return r;
+      if (make_protocol(name, calibration, &glove) != FRUSTA_OK)
+        return fail(FRUSTA_ERROR_FILE_FORMAT, "recording %s: unknown glove protocol \"%s\" (expected %s or %s)",
+                    address.path.c_str(), name.c_str(), kOpenGloves, kFrusta);
+      glove.stream = std::move(replay);
       break;
     }
   }

@@ -4,7 +4,10 @@
 // protocol decoder, calibration and checks as the live glove did. Format:
 //   "frusta-recording 1 <protocol>\n"   protocol: opengloves | frusta
 //   records until the end: int64 time since the recording began (ns), uint32 byte
-//   count (<= 65536), the bytes; integers little-endian
+//   count (1 ... 65536), the bytes; integers little-endian; times never decrease
+// A recording is a regular file of at most kMaxRecordingBytes. Anything else (a FIFO,
+// a device such as /dev/zero, a directory) is refused before a byte is read or
+// written: opening it could block for ever, reading it might never end.
 #pragma once
 
 #include <cstdint>
@@ -17,22 +20,29 @@
 namespace frusta {
 
 constexpr uint32_t kMaxRecordBytes = 65536;
+// 1 GiB: over four hours of a 1 kHz binary-profile glove; a replay holds it in memory
+constexpr int64_t kMaxRecordingBytes = int64_t{1} << 30;
 
 // Written by the device thread: fwrite into the C library's buffer, so a record costs a
 // copy, not a system call.
 class Recorder {
  public:
   ~Recorder();
-  frusta_result open(const std::string& path, const std::string& protocol);
+  // Creates `path`, or empties it if it is a regular file. The recording stops (and
+  // failed() says so) once it would grow past max_bytes, so it can always be replayed.
+  frusta_result open(const std::string& path, const std::string& protocol,
+                     int64_t max_bytes = kMaxRecordingBytes);
   void write(int64_t time_ns, const uint8_t* data, size_t size);
   bool failed() const { return failed_; }
 
  private:
   std::FILE* file_ = nullptr;
-  bool failed_ = false;  // the disk refused a write: recording stops, the glove does not
+  bool failed_ = false;  // the disk refused a write, or the size limit came: recording
+                         // stops, the glove does not
+  int64_t written_ = 0, max_bytes_ = kMaxRecordingBytes;
 };
 
-// Reads a recording's header: its protocol name, in *protocol.
+// Reads a recording's header (and nothing more): its protocol name, in *protocol.
 frusta_result read_recording_protocol(const std::string& path, std::string* protocol);
 
 // A recording played back as a glove's byte stream: in real time (each record when its
@@ -42,6 +52,10 @@ frusta_result read_recording_protocol(const std::string& path, std::string* prot
 class ReplayStream final : public ByteStream {
  public:
   ReplayStream(std::string path, bool real_time, bool loop);
+  // Reads and checks the whole recording, once (open() does it if not done); the
+  // protocol its header names goes to *protocol. A record cut off at the end (the
+  // recorder was killed) is played as far as it goes; any other fault refuses it all.
+  frusta_result load(std::string* protocol = nullptr);
   frusta_result open() override;
   void close() override;
   bool is_open() const override { return open_; }
@@ -59,8 +73,9 @@ class ReplayStream final : public ByteStream {
   std::string path_;
   bool real_time_, loop_;
   std::string name_;
+  std::string protocol_;
   bool loaded_ = false, open_ = false, ended_ = false;
-  std::vector<uint8_t> bytes_;
+  std::vector<uint8_t> bytes_;  // the whole file
   std::vector<Record> records_;
   size_t next_ = 0, consumed_ = 0;  // record, and bytes of it already read
   int64_t start_ns_ = 0;

@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: MIT
 // The gloves' C ABI: defs and URIs checked with named fields, a glove on a real pseudo-
 // terminal opened by URI, its status, its palm, its hand closed to other input, ids
-// turning stale, a world taking its gloves with it, enumeration, record and replay.
+// turning stale, a world taking its gloves with it, enumeration, record and replay, and
+// recordings that are not (a FIFO, /dev/zero, ...) refused by name.
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <string>
 #include <functional>
@@ -11,6 +13,7 @@
 #include <vector>
 
 #include "device_api_fixture.h"
+#include "scenes/hostile_recordings.h"
 #include "scenes/process_probe.h"
 #include "scenes/simulated_glove.h"
 
@@ -165,6 +168,49 @@ TEST_F(DeviceApiTest, ARecordedGloveReplaysThroughItsUri) {
   ASSERT_EQ(frusta_world_get_hand(world_, 0, &hand), FRUSTA_OK);
   EXPECT_DOUBLE_EQ(hand.haptic_angles[1 * 4 + 1], live_angle);
   std::remove(recording.c_str());
+}
+
+// What is not a recording, as replay:FILE or &record=FILE, is refused by name, neither
+// blocking the open (a FIFO) nor reading without end (/dev/zero, a file too large).
+// Each open runs in a child process killed at a deadline or a memory cap, so the old
+// hang fails the test instead of hanging it.
+TEST_F(DeviceApiTest, WhatIsNotARecordingIsRefusedByName) {
+  const scenes::HostileRecordings files(int64_t{1} << 30);
+  const frusta_device_def def = frusta_default_device_def();
+  const auto open_in_child = [&](const std::string& uri) {
+    return scenes::run_in_child([&](std::string* message) {
+      frusta_device_id device{};
+      const frusta_result r = frusta_world_open_device(world_, uri.c_str(), &def, &device);
+      *message = frusta_last_error();
+      return static_cast<int>(r);
+    });
+  };
+  std::vector<std::string> uris;
+  std::vector<scenes::HostilePath> expected;
+  for (const scenes::HostilePath& h : files.replay) {
+    uris.push_back("replay:" + h.path + "?speed=max");
+    expected.push_back(h);
+  }
+  for (const scenes::HostilePath& h : files.record_to) {
+    uris.push_back("replay:" + files.good + "?speed=max&record=" + h.path);
+    expected.push_back(h);
+  }
+  for (size_t i = 0; i < uris.size(); ++i) {
+    const scenes::ChildOutcome outcome = open_in_child(uris[i]);
+    if (!outcome.returned) {
+      ADD_FAILURE() << uris[i] << ": " << outcome.message;
+      continue;
+    }
+    EXPECT_EQ(outcome.result, expected[i].code) << uris[i] << ": " << outcome.message;
+    EXPECT_NE(outcome.message.find(expected[i].path), std::string::npos) << outcome.message;
+    EXPECT_NE(outcome.message.find(expected[i].says), std::string::npos) << outcome.message;
+  }
+  // and a sound one opens, recording where it may
+  const std::string copy = temp_path("copy");
+  const std::string uri = "replay:" + files.good + "?speed=max&record=" + copy;
+  const scenes::ChildOutcome sound = open_in_child(uri);
+  EXPECT_TRUE(sound.returned && sound.result == FRUSTA_OK) << sound.message;
+  std::remove(copy.c_str());
 }
 
 TEST_F(DeviceApiTest, EnumerationListsWhatIsThereAndReportsTheCount) {
