@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 
 #include "runtime/periodic_clock.h"
 #include "runtime/timer_resolution.h"
@@ -32,6 +33,20 @@ bool is_valid_sample(const DeviceSample& s) {
 }
 
 }  // namespace
+
+void RateMeter::add(int64_t stamp_ns, int64_t number, bool glove_clock) {
+  const Entry& last = entries_[static_cast<size_t>(newest_)];
+  if (count_ > 0 && (glove_clock != glove_clock_ || stamp_ns < last.stamp_ns || number <= last.number))
+    count_ = 0;
+  glove_clock_ = glove_clock;
+  newest_ = (newest_ + 1) % kWindow;
+  entries_[static_cast<size_t>(newest_)] = Entry{stamp_ns, number};
+  count_ = std::min(count_ + 1, kWindow);
+  const Entry& oldest = entries_[static_cast<size_t>((newest_ - count_ + 1 + kWindow) % kWindow)];
+  const int64_t span = stamp_ns - oldest.stamp_ns;
+  // (samples read in one burst share an arrival time: the rate waits for a span)
+  if (span > 0) rate_hz_ = static_cast<double>(number - oldest.number) * 1e9 / static_cast<double>(span);
+}
 
 DeviceLink::DeviceLink(World& world, const DeviceLinkDef& def, std::unique_ptr<ByteStream> stream,
                        std::unique_ptr<GloveProtocol> protocol)
@@ -98,6 +113,7 @@ void DeviceLink::run() {
     if (!stream_->is_open()) {
       if (now_ns_ >= next_reconnect) {
         if (stream_->open() == FRUSTA_OK) {
+          now_ns_ = steady_ns();  // connected when the open returned, not when it began
           on_connected(now_ns_);
           next_output = now_ns_;
           continue;
@@ -150,8 +166,9 @@ void DeviceLink::on_connected(int64_t now) {
   ever_connected_ = true;
   working_.state = LinkState::kConnected;
   last_sample_ns_ = 0;  // zeros until the glove speaks again
+  input_rate_.reset();
+  samples_taken_ = 0;
   last_command_ns_ = now;
-  guard_.zero();
   out_.clear();
   protocol_->start(&out_);
   write_bytes(false);
@@ -164,7 +181,6 @@ void DeviceLink::on_disconnected(int64_t now) {
   working_.watchdog = WatchdogReason::kDisconnected;
   working_.state = LinkState::kDisconnected;
   ++working_.disconnects;
-  guard_.zero();
   publish_status(now);
 }
 
@@ -184,7 +200,7 @@ void DeviceLink::send_command(int64_t now) {
   const WatchdogReason reason = check_watchdog(now, feed);
   if (reason != WatchdogReason::kNone) {
     if (working_.watchdog == WatchdogReason::kNone) ++working_.watchdog_trips;
-    guard_.zero();
+    if (reason != WatchdogReason::kInputStalled) guard_.zero();
   } else {
     const double dt = std::min(static_cast<double>(now - last_command_ns_) / 1e9, 0.1);
     guard_.shape(feed.device, feed.haptic_palm_rotation, dt);
@@ -235,16 +251,14 @@ void DeviceLink::on_sample(const DeviceSample& sample) {
   }
   world_.set_haptic(def_.hand, haptic_);  // the hand index was checked at open
   ++working_.frames_ok;
-  if (last_sample_ns_ != 0) {
-    // a running mean of the interval over about 16 samples (not of the rate: samples
-    // read in one burst have intervals near zero, which average out, and rates near
-    // infinity, which do not)
-    const double interval = static_cast<double>(now_ns_ - last_sample_ns_) / 1e9;
-    mean_sample_interval_s_ = mean_sample_interval_s_ == 0.0
-                                  ? interval
-                                  : mean_sample_interval_s_ + (interval - mean_sample_interval_s_) / 16.0;
-    if (mean_sample_interval_s_ > 0.0) working_.input_rate_hz = 1.0 / mean_sample_interval_s_;
-  }
+  // by the glove's clock and count when it sends both (a clock past 292 years in ns is
+  // a broken glove's: arrival and our count are used instead)
+  ++samples_taken_;
+  const bool glove_clock = sample.device_time_us >= 0 && sample.device_time_us <= INT64_MAX / 1000 &&
+                           sample.sequence >= 0;
+  input_rate_.add(glove_clock ? sample.device_time_us * 1000 : now_ns_,
+                  glove_clock ? sample.sequence : samples_taken_, glove_clock);
+  if (input_rate_.rate_hz() > 0.0) working_.input_rate_hz = input_rate_.rate_hz();
   last_sample_ns_ = now_ns_;
 }
 

@@ -12,6 +12,7 @@
 // zeros until its first valid sample, so it resumes from where the hand is now.
 #pragma once
 
+#include <array>
 #include <atomic>
 #include <memory>
 #include <string>
@@ -26,6 +27,28 @@
 #include "runtime/world.h"
 
 namespace frusta {
+
+// Samples per second over the last kWindow samples, from their stamps and numbers: the
+// glove's own clock and count where its samples carry them (the binary profile's), so
+// neither a loaded host that reads them late and in bursts nor a sample lost on the way
+// moves the figure; else their arrival, numbered as taken. A stamp or number that goes
+// back (the glove restarted) starts the window over.
+class RateMeter {
+ public:
+  static constexpr int kWindow = 64;
+  void reset() { count_ = 0; }
+  void add(int64_t stamp_ns, int64_t number, bool glove_clock);
+  double rate_hz() const { return rate_hz_; }  // 0 until two stamps apart
+
+ private:
+  struct Entry {
+    int64_t stamp_ns, number;
+  };
+  std::array<Entry, kWindow> entries_{};  // a ring: the newest at newest_
+  int count_ = 0, newest_ = 0;
+  bool glove_clock_ = false;
+  double rate_hz_ = 0.0;
+};
 
 struct DeviceLinkDef {
   int32_t hand = 0;
@@ -59,7 +82,7 @@ struct DeviceLinkStatus {
   int64_t samples_rejected = 0;  // decoded, but NaN or beyond any joint's range
   int64_t commands_sent = 0, commands_dropped = 0;
   int64_t reconnects = 0, disconnects = 0, watchdog_trips = 0;
-  double input_rate_hz = 0.0;       // measured over the last samples
+  double input_rate_hz = 0.0;       // over the last samples, by the glove's clock if it has one
   double last_sample_age_s = -1.0;  // -1: no sample yet
   double output_rate_hz = 0.0;
   DeviceCapabilities capabilities;  // as announced, under the def's limits
@@ -122,7 +145,8 @@ class DeviceLink final : private ProtocolSink {
   std::vector<uint8_t> out_;
   int64_t now_ns_ = 0;         // of the current turn
   int64_t last_sample_ns_ = 0;  // 0: none since (re)connect
-  double mean_sample_interval_s_ = 0.0;
+  RateMeter input_rate_;
+  int64_t samples_taken_ = 0;  // since (re)connect: the number of a sample without one
   int64_t last_command_ns_ = 0;
   int64_t next_heartbeat_ns_ = 0;
   int64_t record_start_ns_ = 0;

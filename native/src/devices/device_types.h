@@ -41,6 +41,7 @@ struct DeviceSample {
   vec3 palm_position{0.0};                             // metres, tracking frame
   glm::dquat palm_rotation{1.0, 0.0, 0.0, 0.0};        // unit
   int64_t device_time_us = -1;  // the glove's own clock, when it says (-1: it does not)
+  int64_t sequence = -1;        // the glove's count of its samples, when it says (-1: it does not)
 };
 
 // What a glove is told to render: the world's device outputs clamped to the glove's

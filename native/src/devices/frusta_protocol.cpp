@@ -382,6 +382,7 @@ void FrustaProtocol::start(std::vector<uint8_t>* out) {
   command_sequence_ = 0;
   has_time_ = false;
   time_base_ = 0;
+  sequence_base_ = 0;
   binary_profile::encode_hello(hello_, out);
 }
 
@@ -428,11 +429,16 @@ void FrustaProtocol::on_frame(binary_profile::MessageType type, const uint8_t* p
         sink_->on_fault(to_fault(verdict));
         return;
       }
-      // unwrap the glove's 32-bit microsecond clock (71.6 minutes a turn)
+      // unwrap the glove's 32-bit microsecond clock (71.6 minutes a turn) and its sample
+      // sequence (65536 samples a turn), so rates come from its clock and count
+      const uint16_t sequence = static_cast<uint16_t>(payload[0] | payload[1] << 8);
       if (has_time_ && time < last_time_) time_base_ += int64_t{1} << 32;
+      if (has_time_ && sequence < last_sequence_) sequence_base_ += int64_t{1} << 16;
       has_time_ = true;
       last_time_ = time;
+      last_sequence_ = sequence;
       sample_.device_time_us = time_base_ + time;
+      sample_.sequence = sequence_base_ + sequence;
       sink_->on_sample(sample_);
       return;
     }

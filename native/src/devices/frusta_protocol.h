@@ -165,10 +165,12 @@ class FrustaProtocol final : public GloveProtocol, private binary_profile::Frame
   ProtocolSink* sink_ = nullptr;  // during feed
   bool caps_received_ = false;
   uint16_t command_sequence_ = 0;
-  // the glove's 32-bit microsecond clock, unwrapped
+  // the glove's 32-bit microsecond clock and 16-bit sample sequence, unwrapped
   bool has_time_ = false;
   uint32_t last_time_ = 0;
   int64_t time_base_ = 0;
+  uint16_t last_sequence_ = 0;
+  int64_t sequence_base_ = 0;
   DeviceSample sample_;
 };
 

@@ -135,6 +135,38 @@ bool all_zero(const DeviceCommand& c) {
   return true;
 }
 
+TEST(rateMeter, ByTheGlovesClockAndCountTheRateIsTheGlovesWhateverArrives) {
+  RateMeter meter;
+  meter.add(0, 0, true);
+  EXPECT_EQ(meter.rate_hz(), 0.0) << "one stamp is no rate";
+  for (int64_t i = 1; i < 200; ++i) {
+    if (i % 7 == 3) continue;  // lost on the way: the glove's count says so
+    meter.add(i * 2000000, i, true);  // 500 a second by the glove's clock
+    ASSERT_DOUBLE_EQ(meter.rate_hz(), 500.0) << i;
+  }
+  // the glove restarted (a reconnect, a reset): its clock starts over, and so does the window
+  for (int64_t i = 0; i < 3; ++i) meter.add(i * 10000000, i, true);
+  EXPECT_DOUBLE_EQ(meter.rate_hz(), 100.0);
+  // a glove without a clock is timed by arrival, in a window of its own
+  meter.add(7000000000, 1, false);
+  meter.add(7020000000, 2, false);
+  EXPECT_DOUBLE_EQ(meter.rate_hz(), 50.0);
+}
+
+TEST(rateMeter, ByArrivalABurstIsNoInfiniteRateAndLeavesWithTheWindow) {
+  // 100 a second, but 4 samples held up 40 ms and read at once with the 5th
+  RateMeter meter;
+  int64_t i = 0;
+  for (; i < 100; ++i) meter.add(i * 10000000, i, false);
+  EXPECT_DOUBLE_EQ(meter.rate_hz(), 100.0);
+  for (; i < 105; ++i) {
+    meter.add(104 * 10000000, i, false);
+    EXPECT_TRUE(std::isfinite(meter.rate_hz()) && meter.rate_hz() > 0.0) << i;
+  }
+  for (; i < 105 + RateMeter::kWindow; ++i) meter.add(i * 10000000, i, false);
+  EXPECT_DOUBLE_EQ(meter.rate_hz(), 100.0) << "the burst has left the window";
+}
+
 TEST(deviceLink, OpenGlovesGloveDrivesTheHandAndReadsBrakesBack) {
   Scene scene;
   OpenGlovesFirmware firmware;

@@ -283,5 +283,18 @@ TEST(binaryProfile, TheGlovesClockIsUnwrappedAcrossItsTurn) {
   for (size_t i = 0; i < 5; ++i) EXPECT_EQ(sink.samples[i].device_time_us, times[i]) << i;
 }
 
+TEST(binaryProfile, TheSampleSequenceIsUnwrappedAcrossItsTurn) {
+  FrustaProtocol host;
+  std::vector<uint8_t> wire;
+  host.start(&wire);
+  wire.clear();
+  const int64_t sequences[] = {65533, 65535, 65536 + 2, 65536 + 40000, 2 * 65536 + 1};
+  for (int64_t n : sequences) bp::encode_sample(DeviceSample{}, static_cast<uint16_t>(n), &wire);
+  Collect sink;
+  feed(host, wire, &sink);
+  ASSERT_EQ(sink.samples.size(), 5u);
+  for (size_t i = 0; i < 5; ++i) EXPECT_EQ(sink.samples[i].sequence, sequences[i]) << i;
+}
+
 }  // namespace
 }  // namespace frusta
