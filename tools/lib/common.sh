@@ -76,6 +76,26 @@ ensure_windows_packages() {
   ensure_packages "${FRUSTA_WINDOWS_PACKAGES[@]}"
 }
 
+# deb_src_sources DIR: the deb-src twin of every source the machine's apt uses (the
+# same URIs, suites, components and keys, one-line and deb822 files alike), written
+# into DIR, so sources come from wherever this machine gets its packages
+deb_src_sources() {
+  local dir="$1" SOURCELIST SOURCEPARTS f
+  eval "$(apt-config shell SOURCELIST Dir::Etc::sourcelist/f SOURCEPARTS Dir::Etc::sourceparts/d)"
+  for f in "$SOURCELIST" "$SOURCEPARTS"*.list; do
+    [ -f "$f" ] || continue
+    sed -n 's/^[[:space:]]*deb[[:space:]]/deb-src /p' "$f" >"$dir/$(basename "$f" .list)-src.list"
+  done
+  for f in "$SOURCEPARTS"*.sources; do
+    [ -f "$f" ] || continue
+    # paragraph by paragraph: binary types become deb-src, disabled ones stay out
+    awk 'BEGIN { RS = ""; ORS = "\n\n" }
+         /(^|\n)Enabled:[[:space:]]*no/ { next }
+         /(^|\n)Types:[^\n]*deb([[:space:]]|$)/ { sub(/Types:[^\n]*/, "Types: deb-src"); print }' \
+      "$f" >"$dir/$(basename "$f" .sources)-src.sources"
+  done
+}
+
 # build_windows_libraries PREFIX: hidapi (its Windows backend, with its own CMake) and
 # libusb (its Windows backend, with its own configure) from Debian's source packages
 # (bookworm's versions, as on Linux), static, into PREFIX. Done once per PREFIX.
@@ -85,12 +105,13 @@ build_windows_libraries() {
   local work="$prefix/src"
   rm -rf "$prefix" && mkdir -p "$work/apt/lists/partial" "$work/apt/sources"
   # a private source list: the machine's apt configuration is left as it was
-  printf 'Types: deb-src\nURIs: http://deb.debian.org/debian\nSuites: bookworm\nComponents: main\nSigned-By: /usr/share/keyrings/debian-archive-keyring.gpg\n' \
-    >"$work/apt/sources/debian-src.sources"
+  deb_src_sources "$work/apt/sources"
   local apt=(apt-get -qq -o Dir::Etc::SourceList=/dev/null -o Dir::Etc::SourceParts="$work/apt/sources"
              -o Dir::State::Lists="$work/apt/lists" -o APT::Sandbox::User=root)
   echo "frusta: fetching Debian's hidapi and libusb sources to build them for Windows" >&2
-  "${apt[@]}" update
+  # a repository of the machine's without sources fails its part only; apt-get source
+  # below says so if what it needs is missing
+  "${apt[@]}" update || echo "frusta: some deb-src indexes could not be fetched" >&2
   (cd "$work" && "${apt[@]}" source --download-only hidapi=0.13.1-1 libusb-1.0=2:1.0.26-1 >/dev/null)
   tar -xzf "$work/hidapi_0.13.1.orig.tar.gz" -C "$work"
   tar -xjf "$work/libusb-1.0_1.0.26.orig.tar.bz2" -C "$work"
