@@ -244,6 +244,8 @@ frusta_result World::set_haptic(int32_t hand, const HandState& haptic) {
   HandSlot& h = *hands_[static_cast<size_t>(hand)];
   TimedInput& slot = h.input.write_slot();
   slot.state = haptic;
+  // unit from here on: inputs are interpolated, and slerp assumes unit quaternions
+  slot.state.palm_rotation = glm::normalize(haptic.palm_rotation);
   slot.set_ns = steady_ns();
   h.input.publish();
   return FRUSTA_OK;

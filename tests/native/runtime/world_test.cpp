@@ -200,6 +200,23 @@ TEST(World, BadHapticInputIsRefusedAtTheDoorAndLeavesTheGraphicHand) {
   EXPECT_EQ(world.set_haptic(-1, scenes::open_hand()), FRUSTA_ERROR_OUT_OF_RANGE);
 }
 
+// The rule lets a quaternion's norm lie in [0.5, 2]; the world keeps it unit from the
+// door on, so the inputs it interpolates between (slerp wants unit ones) stay rotations.
+TEST(World, HapticRotationsAreUnitFromTheDoorOn) {
+  World world(WorldDef{});
+  const int32_t hand = add_hand(world, right_hand());
+  HandState h = scenes::open_hand();
+  h.palm_rotation = 2.0 * glm::angleAxis(0.4, vec3(0.0, 0.0, 1.0));
+  ASSERT_EQ(world.set_haptic(hand, h), FRUSTA_OK);
+  world.step();
+  h.palm_rotation = 0.5 * glm::angleAxis(-0.4, vec3(0.0, 1.0, 0.0));
+  ASSERT_EQ(world.set_haptic(hand, h), FRUSTA_OK);
+  world.step();
+  const WorldSnapshot& s = world.read();
+  EXPECT_NEAR(glm::length(s.hands[0].haptic.palm_rotation), 1.0, 1e-15);
+  EXPECT_NEAR(glm::length(s.hands[0].graphic.palm_rotation), 1.0, 1e-15);
+}
+
 TEST(World, TwoHandsAndTwentyObjectsStepWithoutAllocating) {
   World world(WorldDef{});
   const int32_t right = add_hand(world, right_hand());
