@@ -169,6 +169,7 @@ void DeviceLink::on_connected(int64_t now) {
   input_rate_.reset();
   samples_taken_ = 0;
   last_command_ns_ = now;
+  guard_.zero();
   out_.clear();
   protocol_->start(&out_);
   write_bytes(false);
@@ -181,6 +182,7 @@ void DeviceLink::on_disconnected(int64_t now) {
   working_.watchdog = WatchdogReason::kDisconnected;
   working_.state = LinkState::kDisconnected;
   ++working_.disconnects;
+  guard_.zero();
   publish_status(now);
 }
 
@@ -200,7 +202,7 @@ void DeviceLink::send_command(int64_t now) {
   const WatchdogReason reason = check_watchdog(now, feed);
   if (reason != WatchdogReason::kNone) {
     if (working_.watchdog == WatchdogReason::kNone) ++working_.watchdog_trips;
-    if (reason != WatchdogReason::kInputStalled) guard_.zero();
+    guard_.zero();
   } else {
     const double dt = std::min(static_cast<double>(now - last_command_ns_) / 1e9, 0.1);
     guard_.shape(feed.device, feed.haptic_palm_rotation, dt);
