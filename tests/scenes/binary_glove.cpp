@@ -2,10 +2,13 @@
 #include "scenes/binary_glove.h"
 
 #include <chrono>
+#include <cmath>
 
 namespace frusta::scenes {
 
-BinaryGlove::BinaryGlove(const DeviceCapabilities& capabilities) : capabilities_(capabilities) {}
+BinaryGlove::BinaryGlove(const DeviceCapabilities& capabilities, double sample_rate_hz)
+    : capabilities_(capabilities),
+      sample_rate_hz_(sample_rate_hz > 0.0 ? sample_rate_hz : capabilities.input_rate_hz) {}
 
 SimulatedGlove::Firmware BinaryGlove::firmware() {
   return [this](int64_t tick) {
@@ -14,7 +17,7 @@ SimulatedGlove::Firmware BinaryGlove::firmware() {
     if (caps_due_) binary_profile::encode_caps(capabilities_, &out);
     caps_due_ = false;
     DeviceSample sample = sample_;
-    sample.device_time_us = static_cast<int64_t>(static_cast<double>(tick) * 1e6 / capabilities_.input_rate_hz);
+    sample.device_time_us = std::llround(static_cast<double>(tick) * 1e6 / sample_rate_hz_);
     binary_profile::encode_sample(sample, sequence_++, &out);
     ++samples_sent_;
     return std::string(out.begin(), out.end());
@@ -42,6 +45,16 @@ int BinaryGlove::hellos() const {
   return hellos_;
 }
 
+int BinaryGlove::heartbeats() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return heartbeats_;
+}
+
+int BinaryGlove::hellos_after_heartbeat() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return hellos_after_heartbeat_;
+}
+
 int BinaryGlove::faults() const {
   std::lock_guard<std::mutex> lock(mutex_);
   return faults_;
@@ -62,6 +75,7 @@ std::vector<BinaryGlove::ReceivedCommand> BinaryGlove::commands(size_t from) con
 void BinaryGlove::on_hello(const binary_profile::Hello&) {
   std::lock_guard<std::mutex> lock(mutex_);
   ++hellos_;
+  if (heartbeats_ > 0) ++hellos_after_heartbeat_;
   caps_due_ = answering_;
 }
 
@@ -71,6 +85,11 @@ void BinaryGlove::on_command(const binary_profile::Command& command) {
                           .count();
   std::lock_guard<std::mutex> lock(mutex_);
   commands_.push_back(ReceivedCommand{now, command});
+}
+
+void BinaryGlove::on_heartbeat() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  ++heartbeats_;
 }
 
 void BinaryGlove::on_fault(FrameFault) {

@@ -70,7 +70,10 @@ void SimulatedGlove::unplug() {
 }
 
 void SimulatedGlove::set_rate(double rate_hz) { rate_hz_ = rate_hz; }
-void SimulatedGlove::set_sending(bool sending) { sending_ = sending; }
+void SimulatedGlove::set_sending(bool sending) {
+  std::lock_guard<std::mutex> lock(write_mutex_);  // waits out a frame being written
+  sending_ = sending;
+}
 
 void SimulatedGlove::write_raw(const std::string& bytes) {
   std::lock_guard<std::mutex> lock(write_mutex_);
@@ -84,11 +87,13 @@ void SimulatedGlove::run() {
   while (!stop_) {
     const int64_t now = now_ns();
     if (now >= next) {
-      if (sending_) {
-        const std::string frame = firmware_(tick++);
+      {
         std::lock_guard<std::mutex> lock(write_mutex_);
-        if (write(master_, frame.data(), frame.size()) == static_cast<ssize_t>(frame.size()))
-          ++frames_sent_;
+        if (sending_) {
+          const std::string frame = firmware_(tick++);
+          if (write(master_, frame.data(), frame.size()) == static_cast<ssize_t>(frame.size()))
+            ++frames_sent_;
+        }
       }
       next += static_cast<int64_t>(1e9 / rate_hz_.load());
       if (next < now) next = now;

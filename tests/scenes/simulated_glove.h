@@ -30,7 +30,9 @@ class SimulatedGlove {
 
   const std::string& path() const { return path_; }
   void set_rate(double rate_hz);
-  void set_sending(bool sending);  // stop sending (the glove froze) or go on
+  // Stop sending (the glove froze) or go on. Once set_sending(false) returns, no frame
+  // is on its way: frames_sent() is every frame the other end will ever read.
+  void set_sending(bool sending);
 
   // Raw bytes written now, between frames (corruption, handshakes).
   void write_raw(const std::string& bytes);
@@ -39,7 +41,8 @@ class SimulatedGlove {
   void plug_in();
   bool plugged_in() const { return master_ >= 0; }
 
-  // What the engine sent so far, and when each chunk arrived (steady clock, ns).
+  // What the engine sent so far, and when each chunk arrived (steady clock, ns, stamped
+  // after the read: no earlier than the engine wrote it).
   struct Chunk {
     int64_t time_ns;
     std::string bytes;
@@ -57,7 +60,7 @@ class SimulatedGlove {
   std::atomic<double> rate_hz_;
   Firmware firmware_;
   Listener listener_;
-  std::atomic<bool> sending_{true};
+  std::atomic<bool> sending_{true};  // changed under write_mutex_
   int master_ = -1;
   std::mutex write_mutex_;  // the glove thread's frames and write_raw's bytes
   mutable std::mutex received_mutex_;

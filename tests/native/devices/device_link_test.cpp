@@ -3,6 +3,9 @@
 // 1 kHz thread: samples in, brake commands read back on the glove's side, and every
 // way a glove fails: unplugged mid-stream, back again, garbage on the line, NaN and
 // absurd angles, too slow or too fast, frozen; and an engine or host that stops.
+// No check here holds a wall clock against a rate or a count: rates come from the
+// glove's own stamps, and each check waits for the state it checks, with a deadline
+// that only turns a hang into a failure. A loaded machine makes them slower, not red.
 #include "devices/device_link.h"
 
 #include <gtest/gtest.h>
@@ -11,7 +14,9 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <functional>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -22,11 +27,13 @@
 #include "devices/opengloves_protocol.h"
 #include "devices/serial_stream.h"
 #include "hand/hand_model.h"
+#include "runtime/periodic_clock.h"
 #include "scenes/binary_glove.h"
 #include "scenes/baked_objects.h"
 #include "scenes/hand_scenarios.h"
 #include "scenes/process_probe.h"
 #include "scenes/simulated_glove.h"
+#include "collecting_sink.h"
 
 namespace frusta {
 namespace {
@@ -35,8 +42,11 @@ using Clock = std::chrono::steady_clock;
 using scenes::SimulatedGlove;
 using scenes::temp_path;
 using scenes::thread_count;
+using scenes::thread_count_becomes;
 constexpr int kIndex = 1;
 constexpr int kIndexFlexion1 = kIndex * FRUSTA_JOINTS_PER_FINGER + 1;
+// seconds: a wait's deadline, which only a hang reaches
+constexpr double kPatience = 30.0;
 
 // A right hand over a 3 cm box whose face lies 2 mm from the open index fingertip, on
 // the side a curling index moves to: a curl presses the finger in, and the world asks
@@ -77,19 +87,29 @@ std::unique_ptr<DeviceLink> open_link(World& world, const std::string& path,
   return link;
 }
 
-// The host's loop: read snapshots (so the host watchdog sees a live host) until done.
-bool wait_until(World& world, const std::function<bool()>& done, double seconds) {
+// Until done(), at most `seconds`. With a world, the host's loop: it reads snapshots
+// meanwhile (so the host watchdog sees a live host); without, a host that stopped.
+bool wait(World* reading, const std::function<bool()>& done, double seconds = kPatience) {
   const auto end = Clock::now() + std::chrono::duration<double>(seconds);
-  while (Clock::now() < end) {
-    world.read();
+  for (;;) {
+    if (reading != nullptr) reading->read();
     if (done()) return true;
+    if (Clock::now() > end) return false;
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
-  return false;
 }
 
-void keep_reading(World& world, double seconds) {
-  wait_until(world, [] { return false; }, seconds);
+bool wait_until(World& world, const std::function<bool()>& done, double seconds = kPatience) {
+  return wait(&world, done, seconds);
+}
+
+// The first status (one snapshot: its fields agree with each other) that is `wanted`.
+bool wait_status(DeviceLink& link, World* reading,
+                 const std::function<bool(const DeviceLinkStatus&)>& wanted, DeviceLinkStatus* out) {
+  return wait(reading, [&] {
+    *out = link.status();
+    return wanted(*out);
+  });
 }
 
 // The last complete brake line the glove received.
@@ -108,31 +128,41 @@ double index_flexion(World& world) {
   return world.read().hands[0].haptic.angles[kIndexFlexion1];
 }
 
-// The glove speaks with the hand open, then curls the index into the box (a hand that
-// first appears inside an object is let out of it, not pushed: world_test). Done once
-// the host's view of the world shows the curl (a step or more after the world acted on
-// it) followed by a graphic hand that touches the box, and then the glove brakes. A
-// world behind its deadline (under
-// ThreadSanitizer, on a loaded machine) follows the curl over several steps, and the
-// finger leaves the face on the way while its distal joints curl round, its brake off
-// for those steps: the press is steady only once the hand has caught up.
-bool press(World& world, OpenGlovesFirmware& firmware, DeviceLink& link, const SimulatedGlove& glove) {
-  if (!wait_until(world, [&] { return link.status().frames_ok > 3; }, 2.0)) return false;
-  firmware.index_curl = 1500;
-  const double pressed = default_glove_calibration().flexion_closed[kIndex][0] * 1500 / 4095;
-  const auto caught_up = [&] {
-    const HandSnapshot& hand = world.read().hands[0];
-    return std::fabs(hand.haptic.angles[kIndexFlexion1] - pressed) < 1e-9 && !hand.stats.lagging &&
-           hand.contact_count > 0;
-  };
-  return wait_until(world, caught_up, 2.0) &&
-         wait_until(world, [&] { return last_brakes(glove)[kIndex] > 0; }, 2.0);
+// The index's first flexion for an OpenGloves curl reading.
+double curl_flexion(int64_t curl) {
+  return default_glove_calibration().flexion_closed[kIndex][0] * static_cast<double>(curl) / 4095;
 }
 
 bool all_zero(const DeviceCommand& c) {
   for (double r : c.finger_resistance)
     if (r != 0.0) return false;
   return true;
+}
+
+// A command that brakes is only sent with the watchdog clear, and the status published
+// with it says so.
+bool braking(const DeviceLinkStatus& s) {
+  return s.watchdog == WatchdogReason::kNone && s.last_command.finger_resistance[kIndex] > 0.0;
+}
+
+// The glove speaks with the hand open, then curls the index into the box (a hand that
+// first appears inside an object is let out of it, not pushed: world_test). Done once
+// the host's view of the world shows the curl (a step or more after the world acted on
+// it) followed by a graphic hand that touches the box, and then the glove brakes. A
+// world behind its deadline (under ThreadSanitizer, on a loaded machine) follows the
+// curl over several steps, and the finger leaves the face on the way while its distal
+// joints curl round, its brake off for those steps: the press is steady only once the
+// hand has caught up.
+bool press(World& world, OpenGlovesFirmware& firmware, DeviceLink& link, const SimulatedGlove& glove) {
+  if (!wait_until(world, [&] { return link.status().frames_ok > 3; })) return false;
+  firmware.index_curl = 1500;
+  const double pressed = curl_flexion(1500);
+  const auto caught_up = [&] {
+    const HandSnapshot& hand = world.read().hands[0];
+    return std::fabs(hand.haptic.angles[kIndexFlexion1] - pressed) < 1e-9 && !hand.stats.lagging &&
+           hand.contact_count > 0;
+  };
+  return wait_until(world, caught_up) && wait_until(world, [&] { return last_brakes(glove)[kIndex] > 0; });
 }
 
 TEST(rateMeter, ByTheGlovesClockAndCountTheRateIsTheGlovesWhateverArrives) {
@@ -173,11 +203,15 @@ TEST(deviceLink, OpenGlovesGloveDrivesTheHandAndReadsBrakesBack) {
   SimulatedGlove glove(temp_path("glove"), 100.0, firmware.firmware());
   auto link = open_link(scene.world, glove.path());
 
-  keep_reading(scene.world, 0.3);
-  const DeviceLinkStatus open = link->status();
+  // samples taken, and brake lines back: the hand is open, every brake released
+  DeviceLinkStatus open;
+  ASSERT_TRUE(wait_status(*link, &scene.world, [&](const DeviceLinkStatus& s) {
+    return s.frames_ok >= 20 && last_brakes(glove)[0] >= 0;
+  }, &open));
   EXPECT_EQ(open.state, LinkState::kConnected);
-  EXPECT_GE(open.frames_ok, 20);
-  EXPECT_NEAR(open.input_rate_hz, 100.0, 25.0);
+  // an OpenGloves line carries no clock: its rate is its arrival's, which a loaded
+  // machine bends (RateMeter's tests check the measuring); here, that it is measured
+  EXPECT_GT(open.input_rate_hz, 0.0);
   EXPECT_DOUBLE_EQ(open.output_rate_hz, 100.0);  // OpenGloves' line rate, under the world's
   EXPECT_EQ(last_brakes(glove), (std::array<int32_t, 5>{0, 0, 0, 0, 0}));
   EXPECT_NEAR(index_flexion(scene.world), 0.0, 1e-12);
@@ -187,16 +221,16 @@ TEST(deviceLink, OpenGlovesGloveDrivesTheHandAndReadsBrakesBack) {
   const std::array<int32_t, 5> brakes = last_brakes(glove);
   EXPECT_EQ(brakes[0] + brakes[2] + brakes[3] + brakes[4], 0) << "only the index touches";
   // (the status follows the command the glove read a moment later)
-  ASSERT_TRUE(wait_until(scene.world, [&] { return link->status().last_command.finger_resistance[kIndex] > 0.0; }, 1.0));
-  const DeviceLinkStatus pressing = link->status();
-  EXPECT_EQ(pressing.watchdog, WatchdogReason::kNone);
-  EXPECT_GT(pressing.commands_sent, 20);
+  DeviceLinkStatus pressing;
+  ASSERT_TRUE(wait_status(*link, &scene.world, [](const DeviceLinkStatus& s) {
+    return braking(s) && s.commands_sent > 20;
+  }, &pressing));
   EXPECT_EQ(pressing.frames_corrupt + pressing.frames_truncated + pressing.samples_rejected, 0);
 }
 
 // Our binary profile on the same line: the handshake announces a 500 Hz glove with
-// brakes and fingertip forces and lower limits than ours; samples come at its rate;
-// the commands it reads back carry both outputs, under its limits, at its rate.
+// brakes and fingertip forces and lower limits than ours; samples come at its rate, by
+// its clock; the commands it reads back carry both outputs, under its limits, in order.
 TEST(deviceLink, BinaryProfileGloveHandshakesDrivesTheHandAndReadsCommandsBack) {
   Scene scene;
   DeviceCapabilities caps;
@@ -214,100 +248,119 @@ TEST(deviceLink, BinaryProfileGloveHandshakesDrivesTheHandAndReadsCommandsBack) 
                                            std::make_unique<FrustaProtocol>(500, 0));
   ASSERT_EQ(link->open(), FRUSTA_OK);
 
-  ASSERT_TRUE(wait_until(scene.world, [&] { return link->status().capabilities.protocol_version != 0; }, 2.0));
-  EXPECT_EQ(firmware.hellos(), 1) << "answered at once: no HELLO again";
-  keep_reading(scene.world, 0.3);
-  const DeviceLinkStatus open = link->status();
+  DeviceLinkStatus open;
+  ASSERT_TRUE(wait_status(*link, &scene.world, [](const DeviceLinkStatus& s) {
+    return s.capabilities.protocol_version != 0 && s.frames_ok >= 2;
+  }, &open));
   EXPECT_EQ(open.capabilities.protocol_version, binary_profile::kVersion);
   EXPECT_EQ(open.capabilities.outputs, caps.outputs);
   EXPECT_DOUBLE_EQ(open.capabilities.max_finger_resistance, 6.0) << "the glove's, under ours";
   EXPECT_DOUBLE_EQ(open.output_rate_hz, 500.0) << "the glove's, under the world's 1 kHz";
-  EXPECT_NEAR(open.input_rate_hz, 500.0, 125.0);
+  EXPECT_DOUBLE_EQ(open.input_rate_hz, 500.0) << "by the glove's stamps, however late they were read";
   EXPECT_EQ(open.frames_corrupt + open.frames_truncated + open.frames_out_of_range, 0);
+  // the handshake: HELLO (again each heartbeat until CAPS comes), then HEARTBEATs only
+  ASSERT_TRUE(wait_until(scene.world, [&] { return firmware.heartbeats() > 0; }));
+  EXPECT_GE(firmware.hellos(), 1);
+  EXPECT_EQ(firmware.hellos_after_heartbeat(), 0);
 
   // curl the index into the box as the OpenGloves test does, in radians on the wire
   const GloveCalibration calibration = default_glove_calibration();
   for (int j = 0; j < 3; ++j)
     firmware.set_angle(kIndexFlexion1 + j, calibration.flexion_closed[kIndex][j] * 1500 / 4095);
-  const auto index_braked = [&] {
-    const auto commands = firmware.commands();
-    return !commands.empty() && commands.back().command.command.finger_resistance[kIndex] > 0.0;
-  };
-  ASSERT_TRUE(wait_until(scene.world, index_braked, 2.0));
   // the brake comes with the first touch; the host sees the whole curl a few steps on
-  const double curled = calibration.flexion_closed[kIndex][0] * 1500 / 4095;
+  const double curled = curl_flexion(1500);
   EXPECT_TRUE(wait_until(scene.world, [&] {
     return std::fabs(index_flexion(scene.world) - curled) <= 0.5 * binary_profile::kAngleUnit;
-  }, 2.0)) << index_flexion(scene.world) << " for " << curled;
-  keep_reading(scene.world, 0.3);  // past the rise-rate limit
-  const size_t before = firmware.commands().size();
-  keep_reading(scene.world, 0.5);
-  const auto commands = firmware.commands(before);
-  // 500 a second: the median spacing over ten commands, which a loaded machine's stall
-  // leaves alone (the link skips the commands it could not send in time, so a count
-  // over the window fell to 162 of 250 under ASan beside another test)
-  ASSERT_GT(commands.size(), 20u);
-  std::vector<double> spacing;
-  for (size_t i = 10; i < commands.size(); ++i)
-    spacing.push_back(static_cast<double>(commands[i].time_ns - commands[i - 10].time_ns) / 10e9);
-  std::nth_element(spacing.begin(), spacing.begin() + spacing.size() / 2, spacing.end());
-  EXPECT_NEAR(spacing[spacing.size() / 2], 1.0 / 500.0, 0.25 / 500.0) << "500 a second";
-  const binary_profile::Command& last = commands.back().command;
-  EXPECT_EQ(last.outputs, caps.outputs);
-  EXPECT_GT(last.command.finger_resistance[kIndex], 0.0);
-  EXPECT_LE(last.command.finger_resistance[kIndex], 6.0);
-  EXPECT_GT(glm::length(last.command.fingertip_force[kIndex]), 0.0);
-  // the limit, plus each component's rounding to the wire's 0.01 N
-  EXPECT_LE(glm::length(last.command.fingertip_force[kIndex]),
-            4.0 + std::sqrt(3.0) * 0.5 * binary_profile::kForceUnit);
-  for (int f : {0, 2, 3, 4}) EXPECT_EQ(last.command.finger_resistance[f], 0.0) << "only the index touches";
-  for (size_t i = 1; i < commands.size(); ++i)
-    EXPECT_EQ(static_cast<uint16_t>(commands[i].command.sequence - commands[i - 1].command.sequence), 1);
-  const DeviceLinkStatus pressing = link->status();
-  EXPECT_EQ(pressing.watchdog, WatchdogReason::kNone);
+  })) << index_flexion(scene.world) << " for " << curled;
+  // both outputs on (the tip force rises from zero at the rate limit)
+  ASSERT_TRUE(wait_until(scene.world, [&] {
+    const auto commands = firmware.commands();
+    if (commands.empty()) return false;
+    const DeviceCommand& c = commands.back().command.command;
+    return c.finger_resistance[kIndex] > 0.0 && glm::length(c.fingertip_force[kIndex]) > 0.0;
+  }));
+  DeviceLinkStatus pressing;
+  ASSERT_TRUE(wait_status(*link, &scene.world, braking, &pressing));
+
+  // every command it read: in sequence, the blocks it renders (once it has said which),
+  // under its limits (plus each component's rounding to the wire's 0.01 N), and only
+  // the index's
+  const auto commands = firmware.commands();
+  const double force_limit = 4.0 + std::sqrt(3.0) * 0.5 * binary_profile::kForceUnit;
+  bool announced = false;
+  size_t faults = 0;
+  for (size_t i = 0; i < commands.size(); ++i) {
+    const binary_profile::Command& c = commands[i].command;
+    announced |= c.outputs == caps.outputs;
+    bool ok = c.outputs == (announced ? caps.outputs : kOutputFingerResistance) &&
+              c.command.finger_resistance[kIndex] <= 6.0 &&
+              glm::length(c.command.fingertip_force[kIndex]) <= force_limit &&
+              (i == 0 || static_cast<uint16_t>(c.sequence - commands[i - 1].command.sequence) == 1);
+    for (int f : {0, 2, 3, 4})
+      ok &= c.command.finger_resistance[f] == 0.0 && glm::length(c.command.fingertip_force[f]) == 0.0;
+    if (!ok && faults++ == 0) ADD_FAILURE() << "command " << i << " of " << commands.size();
+  }
+  EXPECT_EQ(faults, 0u);
+  EXPECT_TRUE(announced);
   EXPECT_EQ(pressing.commands_dropped, 0);
   EXPECT_EQ(firmware.faults(), 0);
+  EXPECT_EQ(firmware.hellos_after_heartbeat(), 0);
 }
 
-TEST(deviceLink, UnplugZeroesWithinAWatchdogPeriodAndReplugResumes) {
+TEST(deviceLink, UnplugZeroesAndReplugResumesFromZeroAtTheRiseRate) {
   Scene scene;
   OpenGlovesFirmware firmware;
   SimulatedGlove glove(temp_path("glove"), 100.0, firmware.firmware());
   DeviceLinkDef def;
+  def.rates.max_force_rate = 50.0;    // newtons per second: a rise over several commands
+  def.reconnect_interval_s = 0.005;  // back soon after the glove is
   auto link = open_link(scene.world, glove.path(), def);
   ASSERT_TRUE(press(scene.world, firmware, *link, glove));
   const double held = index_flexion(scene.world);
 
-  const auto unplugged = Clock::now();
   glove.unplug();
-  ASSERT_TRUE(wait_until(scene.world, [&] { return link->status().state == LinkState::kDisconnected; }, 1.0));
-  const double seconds = std::chrono::duration<double>(Clock::now() - unplugged).count();
-  EXPECT_LT(seconds, def.watchdog_s) << "noticed within one watchdog period";
-  const DeviceLinkStatus gone = link->status();
+  // the line tells the link (its read fails), not the watchdog: it says disconnected
+  DeviceLinkStatus gone;
+  ASSERT_TRUE(wait_status(*link, &scene.world, [](const DeviceLinkStatus& s) {
+    return s.state == LinkState::kDisconnected;
+  }, &gone));
   EXPECT_TRUE(all_zero(gone.last_command));
   EXPECT_EQ(gone.watchdog, WatchdogReason::kDisconnected);
   EXPECT_EQ(gone.disconnects, 1);
-  // the world runs on with the hand where the glove left it (50 steps: 50 ms, far more
-  // under ThreadSanitizer)
+  // the world runs on with the hand where the glove left it
   const uint64_t step = scene.world.read().step;
-  EXPECT_TRUE(wait_until(scene.world, [&] { return scene.world.read().step > step + 50; }, 2.0));
+  EXPECT_TRUE(wait_until(scene.world, [&] { return scene.world.read().step > step + 50; }));
   EXPECT_DOUBLE_EQ(index_flexion(scene.world), held);
 
   glove.clear_received();
+  const int64_t plugged_ns = steady_ns();
   glove.plug_in();
-  ASSERT_TRUE(wait_until(scene.world, [&] { return link->status().reconnects == 1; }, 2.0));
-  EXPECT_EQ(link->status().state, LinkState::kConnected);
-  ASSERT_TRUE(wait_until(scene.world, [&] { return last_brakes(glove)[kIndex] > 0; }, 2.0));
-  // back from a disconnect the brake starts from zero and rises at the rate limit
-  // (500 N/s, 5 N = 500 units an output period), not at the force it had
-  std::istringstream lines(glove.received());
-  std::string line;
-  const int32_t rise = static_cast<int32_t>(def.rates.max_force_rate / 100.0 * 1000.0 / 10.0);
-  for (int32_t n = 1; n <= 3 && std::getline(lines, line); ++n) {
-    std::array<int32_t, 5> units{};
-    ASSERT_TRUE(decode_alpha_brakes(line, &units)) << line;
-    EXPECT_LE(units[kIndex], n * rise) << line;
+  DeviceLinkStatus back;
+  ASSERT_TRUE(wait_status(*link, &scene.world, [](const DeviceLinkStatus& s) { return s.reconnects == 1; }, &back));
+  EXPECT_EQ(back.state, LinkState::kConnected);
+  ASSERT_TRUE(wait_until(scene.world, [&] { return last_brakes(glove)[kIndex] > 0; }));
+  // back from a disconnect the brake starts from zero and rises at the rate limit, not
+  // at the force it had: the link connected after the plug-in and the glove read each
+  // line after it was sent, so no line may exceed the rate times the time since the
+  // plug-in (in brake units, rounded), however the threads were scheduled
+  const GloveCalibration calibration = default_glove_calibration();
+  const double units_per_newton = calibration.brake_units / calibration.brake_full_scale;
+  std::string pending;
+  int lines = 0;
+  for (const SimulatedGlove::Chunk& chunk : glove.chunks()) {
+    pending += chunk.bytes;
+    for (size_t end = pending.find('\n'); end != std::string::npos; end = pending.find('\n')) {
+      const std::string line = pending.substr(0, end);
+      pending.erase(0, end + 1);
+      std::array<int32_t, 5> units{};
+      ASSERT_TRUE(decode_alpha_brakes(line, &units)) << line;
+      const double since_s = static_cast<double>(chunk.time_ns - plugged_ns) / 1e9;
+      EXPECT_LE(units[kIndex], def.rates.max_force_rate * since_s * units_per_newton + 0.5)
+          << line << ", read " << since_s * 1e3 << " ms after the plug-in";
+      ++lines;
+    }
   }
+  EXPECT_GT(lines, 0);
 }
 
 TEST(deviceLink, CorruptAndTruncatedFramesAreCountedAndDropped) {
@@ -316,23 +369,34 @@ TEST(deviceLink, CorruptAndTruncatedFramesAreCountedAndDropped) {
   firmware.index_curl = 1000;
   SimulatedGlove glove(temp_path("glove"), 100.0, firmware.firmware());
   auto link = open_link(scene.world, glove.path());
-  keep_reading(scene.world, 0.1);
   const std::string garbage[] = {"A1x\n", "95C4095\n", std::string("\xff\xfe\x00\n", 4), "A99999\n",
                                  std::string(400, 'B') + "\n"};
-  for (int round = 0; round < 10; ++round) {
+  // what the decoder makes of these lines alone: the glove writes its frames and these
+  // whole, so on the wire each stays a line of its own
+  OpenGlovesProtocol alone(default_glove_calibration());
+  std::vector<uint8_t> handshake;
+  alone.start(&handshake);
+  Collect each;
+  for (const std::string& g : garbage)
+    alone.feed(reinterpret_cast<const uint8_t*>(g.data()), g.size(), &each);
+  ASSERT_GT(each.corrupt, 0);
+  ASSERT_GT(each.truncated, 0);
+  ASSERT_GT(each.out_of_range, 0);
+  ASSERT_TRUE(each.samples.empty());
+
+  for (int round = 0; round < 10; ++round)
     for (const std::string& g : garbage) glove.write_raw(g);
-    keep_reading(scene.world, 0.02);
-  }
-  keep_reading(scene.world, 0.1);
-  const DeviceLinkStatus s = link->status();
-  // a garbage line may fuse with a frame being written: at least one per round each
-  EXPECT_GE(s.frames_corrupt, 20);
-  EXPECT_GE(s.frames_truncated, 10);
-  EXPECT_GE(s.frames_out_of_range, 10);
-  EXPECT_GE(s.frames_ok, 30);
+  DeviceLinkStatus s;
+  ASSERT_TRUE(wait_status(*link, &scene.world, [&](const DeviceLinkStatus& t) {
+    return t.frames_corrupt >= 10 * each.corrupt && t.frames_truncated >= 10 * each.truncated &&
+           t.frames_out_of_range >= 10 * each.out_of_range && t.frames_ok >= 30;
+  }, &s));
+  EXPECT_EQ(s.frames_corrupt, 10 * each.corrupt);
+  EXPECT_EQ(s.frames_truncated, 10 * each.truncated);
+  EXPECT_EQ(s.frames_out_of_range, 10 * each.out_of_range);
   EXPECT_EQ(s.state, LinkState::kConnected);
-  EXPECT_NEAR(index_flexion(scene.world),
-              default_glove_calibration().flexion_closed[kIndex][0] * 1000 / 4095, 1e-9);
+  EXPECT_TRUE(wait_until(scene.world, [&] { return std::fabs(index_flexion(scene.world) - curl_flexion(1000)) < 1e-9; }))
+      << index_flexion(scene.world);
 }
 
 // Our own test of the link's last check: a protocol that passes angles through as
@@ -383,34 +447,73 @@ TEST(deviceLink, NaNAndAbsurdAnglesAreRejected) {
   ASSERT_EQ(link->open(), FRUSTA_OK);
   // the hand's first pose presses into the box: the world's first step with it moves
   // the graphic hand out (milliseconds; far more under the sanitizers), so wait for it
-  ASSERT_TRUE(wait_until(scene.world, [&] { return std::fabs(index_flexion(scene.world) - 0.1) < 1e-12; }, 10.0))
+  ASSERT_TRUE(wait_until(scene.world, [&] { return std::fabs(index_flexion(scene.world) - 0.1) < 1e-12; }))
       << index_flexion(scene.world);
   for (int k : {1, 2}) {
     kind = k;
     const int64_t rejected = link->status().samples_rejected;
-    ASSERT_TRUE(wait_until(scene.world, [&] { return link->status().samples_rejected > rejected + 5; }, 2.0));
+    ASSERT_TRUE(wait_until(scene.world, [&] { return link->status().samples_rejected > rejected + 5; }));
     EXPECT_NEAR(index_flexion(scene.world), 0.1, 1e-12) << "the hand kept its last good pose";
   }
-  keep_reading(scene.world, 0.1);  // no good sample for twice the watchdog period
-  EXPECT_EQ(link->status().watchdog, WatchdogReason::kInputStalled);
-  EXPECT_TRUE(all_zero(link->status().last_command));
+  // no good sample for a watchdog period: the glove is taken for stalled and released
+  DeviceLinkStatus stalled;
+  EXPECT_TRUE(wait_status(*link, &scene.world, [](const DeviceLinkStatus& s) {
+    return s.watchdog == WatchdogReason::kInputStalled && all_zero(s.last_command);
+  }, &stalled));
+  EXPECT_NEAR(index_flexion(scene.world), 0.1, 1e-12);
 }
 
-TEST(deviceLink, GloveAtHalfAndTwiceTheExpectedRate) {
+// A glove that samples at half or twice the rate it announced: the link measures the
+// rate it really sends at, by its own clock, and takes it as live either way.
+TEST(deviceLink, AGloveAtHalfOrTwiceItsAnnouncedRateIsMeasuredByItsClockAndDrivesTheHand) {
   for (double rate : {50.0, 200.0}) {
     Scene scene;
-    OpenGlovesFirmware firmware;
-    SimulatedGlove glove(temp_path("glove"), rate, firmware.firmware());
-    auto link = open_link(scene.world, glove.path());
-    ASSERT_TRUE(press(scene.world, firmware, *link, glove)) << rate;
-    const DeviceLinkStatus before = link->status();
-    keep_reading(scene.world, 0.5);
-    const DeviceLinkStatus after = link->status();
-    EXPECT_NEAR(after.input_rate_hz, rate, rate * 0.25) << rate;
-    EXPECT_NEAR(static_cast<double>(after.frames_ok - before.frames_ok), rate * 0.5, rate * 0.5 * 0.25) << rate;
-    EXPECT_EQ(after.watchdog_trips, before.watchdog_trips) << "no stall at " << rate << " Hz";
-    EXPECT_GT(after.last_command.finger_resistance[kIndex], 0.0) << rate;
+    DeviceCapabilities caps;  // brakes at 100 a second, both ways
+    caps.input_rate_hz = 100.0;
+    caps.output_rate_hz = 100.0;
+    scenes::BinaryGlove firmware(caps, rate);
+    SimulatedGlove glove(temp_path("glove"), rate, firmware.firmware(), firmware.listener());
+    DeviceLink link(scene.world, DeviceLinkDef{}, std::make_unique<SerialStream>(glove.path(), 921600),
+                    std::make_unique<FrustaProtocol>());
+    ASSERT_EQ(link.open(), FRUSTA_OK);
+    DeviceLinkStatus open;
+    ASSERT_TRUE(wait_status(link, &scene.world, [](const DeviceLinkStatus& s) {
+      return s.capabilities.protocol_version != 0 && s.frames_ok >= 2;
+    }, &open)) << rate;
+    EXPECT_DOUBLE_EQ(open.input_rate_hz, rate) << "not the announced 100";
+
+    const GloveCalibration calibration = default_glove_calibration();
+    for (int j = 0; j < 3; ++j)
+      firmware.set_angle(kIndexFlexion1 + j, calibration.flexion_closed[kIndex][j] * 1500 / 4095);
+    DeviceLinkStatus pressing;
+    ASSERT_TRUE(wait_status(link, &scene.world, braking, &pressing)) << rate;
+    EXPECT_DOUBLE_EQ(pressing.input_rate_hz, rate);
+    EXPECT_EQ(pressing.frames_corrupt + pressing.frames_truncated + pressing.frames_out_of_range, 0);
+    EXPECT_TRUE(wait_until(scene.world, [&] {
+      const auto commands = firmware.commands();
+      return !commands.empty() && commands.back().command.command.finger_resistance[kIndex] > 0.0;
+    })) << rate;
   }
+}
+
+// One stall: the command drops to zero for `reason` and the glove reads the zero; the
+// stall is one trip however many commands it holds at zero (while it lasts no command
+// goes out with the watchdog clear, so the count cannot move). `reading`: the world the
+// host reads meanwhile (none: the host stopped). `ready`: what else the first status
+// must show.
+void expect_held(DeviceLink& link, World* reading, const SimulatedGlove& glove, WatchdogReason reason,
+                 int64_t trips_before, const std::function<bool(const DeviceLinkStatus&)>& ready = nullptr) {
+  DeviceLinkStatus first, later;
+  ASSERT_TRUE(wait_status(link, reading, [&](const DeviceLinkStatus& s) {
+    return s.watchdog == reason && all_zero(s.last_command) && (!ready || ready(s));
+  }, &first)) << "reason " << static_cast<int>(reason) << ", now " << static_cast<int>(link.status().watchdog);
+  ASSERT_TRUE(wait(reading, [&] { return last_brakes(glove)[kIndex] == 0; }));
+  ASSERT_TRUE(wait_status(link, reading, [&](const DeviceLinkStatus& s) {
+    return s.commands_sent >= first.commands_sent + 10;
+  }, &later));
+  EXPECT_GT(first.watchdog_trips, trips_before) << static_cast<int>(reason);
+  EXPECT_NE(later.watchdog, WatchdogReason::kNone);
+  EXPECT_EQ(later.watchdog_trips, first.watchdog_trips) << "one trip per stall: " << static_cast<int>(reason);
 }
 
 TEST(deviceLink, FrozenGloveStoppedEngineAndAbsentHostReleaseTheGlove) {
@@ -419,31 +522,29 @@ TEST(deviceLink, FrozenGloveStoppedEngineAndAbsentHostReleaseTheGlove) {
   SimulatedGlove glove(temp_path("glove"), 100.0, firmware.firmware());
   auto link = open_link(scene.world, glove.path());
   ASSERT_TRUE(press(scene.world, firmware, *link, glove));
-  // the link publishes its status just after it writes the command, so the glove may
-  // read a command before the status says why it was sent
-  const auto sent = [&](bool braking, WatchdogReason reason) {
-    return (last_brakes(glove)[kIndex] > 0) == braking && link->status().watchdog == reason;
+  // braking again, as the glove reads it and the status says
+  const auto resumed = [&](DeviceLinkStatus* s) {
+    return wait_status(*link, &scene.world, braking, s) &&
+           wait_until(scene.world, [&] { return last_brakes(glove)[kIndex] > 0; });
   };
-  // (whether the start tripped it too depends on whether a sample beat the first command)
-  int64_t trips = link->status().watchdog_trips;
+  DeviceLinkStatus s;
+  ASSERT_TRUE(resumed(&s));
 
+  // the glove freezes: once the link has taken every frame it sent, none can come
   glove.set_sending(false);
-  ASSERT_TRUE(wait_until(scene.world, [&] { return sent(false, WatchdogReason::kInputStalled); }, 1.0));
-  EXPECT_EQ(link->status().watchdog_trips, ++trips) << "the glove";
+  expect_held(*link, &scene.world, glove, WatchdogReason::kInputStalled, s.watchdog_trips,
+              [&](const DeviceLinkStatus& t) { return t.frames_ok == glove.frames_sent(); });
   glove.set_sending(true);
-  ASSERT_TRUE(wait_until(scene.world, [&] { return sent(true, WatchdogReason::kNone); }, 2.0));
+  ASSERT_TRUE(resumed(&s));
 
   scene.world.stop();
-  ASSERT_TRUE(wait_until(scene.world, [&] { return sent(false, WatchdogReason::kEngineStalled); }, 1.0));
-  EXPECT_EQ(link->status().watchdog_trips, ++trips) << "the engine";
+  expect_held(*link, &scene.world, glove, WatchdogReason::kEngineStalled, s.watchdog_trips);
   ASSERT_EQ(scene.world.start(), FRUSTA_OK);
-  ASSERT_TRUE(wait_until(scene.world, [&] { return sent(true, WatchdogReason::kNone); }, 2.0));
+  ASSERT_TRUE(resumed(&s));
 
-  std::this_thread::sleep_for(std::chrono::milliseconds(400));  // the host stops reading
-  EXPECT_TRUE(sent(false, WatchdogReason::kHostStalled));
-  EXPECT_EQ(link->status().watchdog_trips, ++trips) << "the host";
-  ASSERT_TRUE(wait_until(scene.world, [&] { return sent(true, WatchdogReason::kNone); }, 2.0));
-  EXPECT_EQ(link->status().watchdog_trips, trips) << "and no trip since";
+  // the host stops reading the world (and the waits above stop reading it too)
+  expect_held(*link, nullptr, glove, WatchdogReason::kHostStalled, s.watchdog_trips);
+  ASSERT_TRUE(resumed(&s));
 }
 
 TEST(deviceLink, NoDeviceNoThread) {
@@ -460,7 +561,7 @@ TEST(deviceLink, NoDeviceNoThread) {
     auto link = open_link(world, glove.path());
     EXPECT_EQ(thread_count(), with_glove + 1);
     link->close();
-    EXPECT_EQ(thread_count(), with_glove);
+    EXPECT_TRUE(thread_count_becomes(with_glove)) << thread_count();
   }
   // a glove that is not there is an error at open, and leaves no thread behind
   DeviceLink missing(world, DeviceLinkDef{}, std::make_unique<SerialStream>(temp_path("none"), 115200),
@@ -469,64 +570,69 @@ TEST(deviceLink, NoDeviceNoThread) {
   EXPECT_EQ(thread_count(), with_glove);
 }
 
-// The hand's index flexion once the world has played the last sample through: inputs
-// are played a period late and interpolated by arrival time, so right after the last
-// sample the hand may still be between it and the one before.
-double settled_index_flexion(World& world) {
-  // (a replay read as fast as possible hands the world its last sample first: a hand
-  // that starts inside the box, whose placement takes the first step long under the
-  // sanitizers; so "settled" means many steps since, with the hand solved, unchanged)
-  double previous = index_flexion(world);
-  uint64_t since = world.read().step;  // the step since which the hand has not changed
-  for (int i = 0; i < 300; ++i) {
-    keep_reading(world, 0.03);
-    const WorldSnapshot& now = world.read();
-    const double flexion = now.hands[0].haptic.angles[kIndexFlexion1];
-    if (!now.hands[0].solved || flexion != previous) since = now.step;
-    else if (now.step > since + 10) return flexion;
-    previous = flexion;
+// When a recording's last record is due, seconds after the recording began.
+double recording_seconds(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  const std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)), {});
+  size_t at = static_cast<size_t>(std::find(bytes.begin(), bytes.end(), '\n') - bytes.begin()) + 1;
+  int64_t last_ns = 0;
+  for (; at + 12 <= bytes.size(); at += 12 + (bytes[at + 8] | bytes[at + 9] << 8 | bytes[at + 10] << 16)) {
+    last_ns = 0;
+    for (int i = 7; i >= 0; --i) last_ns = last_ns << 8 | bytes[at + static_cast<size_t>(i)];
   }
-  return previous;
+  return static_cast<double>(last_ns) / 1e9;
 }
 
 TEST(deviceLink, ARecordingReplaysTheSameHand) {
   const std::string recording = temp_path("recording.bin");
-  std::vector<double> live;
+  int64_t live_frames = 0;
+  double live_flexion = 0.0;
   {
     Scene scene;
-    std::atomic<int> tick{0};
     SimulatedGlove glove(temp_path("glove"), 100.0, [&](int64_t t) {
-      tick = static_cast<int>(t);
       return "A0B" + std::to_string(std::min<int64_t>(t * 40, 4000)) + "C0D0E0\n";
     });
     DeviceLinkDef def;
     def.record_path = recording;
     auto link = open_link(scene.world, glove.path(), def);
-    ASSERT_TRUE(wait_until(scene.world, [&] { return link->status().frames_ok >= 60; }, 3.0));
+    ASSERT_TRUE(wait_until(scene.world, [&] { return link->status().frames_ok >= 60; }));
+    // the glove stops; the link takes (and records) every frame it sent, then closes
     glove.set_sending(false);
-    live.push_back(settled_index_flexion(scene.world));
+    ASSERT_TRUE(wait_until(scene.world, [&] { return link->status().frames_ok == glove.frames_sent(); }));
     link->close();
-    live.insert(live.begin(), static_cast<double>(link->status().frames_ok));
+    live_frames = link->status().frames_ok;
+    // the hand settles on the glove's last frame
+    const double last = curl_flexion(std::min<int64_t>((glove.frames_sent() - 1) * 40, 4000));
+    ASSERT_TRUE(wait_until(scene.world, [&] { return std::fabs(index_flexion(scene.world) - last) < 1e-9; }))
+        << index_flexion(scene.world) << " for " << last;
+    live_flexion = index_flexion(scene.world);
   }
   std::string protocol;
   ASSERT_EQ(read_recording_protocol(recording, &protocol), FRUSTA_OK);
   EXPECT_EQ(protocol, "opengloves");
+  const double duration = recording_seconds(recording);
+  EXPECT_GT(duration, 0.0);
   for (bool real_time : {true, false}) {
     Scene scene;
     DeviceLinkDef def;
     def.reconnect_interval_s = 10.0;  // the end of the recording is the end
     DeviceLink link(scene.world, def, std::make_unique<ReplayStream>(recording, real_time, false),
                     std::make_unique<OpenGlovesProtocol>(default_glove_calibration()));
-    const auto start = Clock::now();
+    const int64_t start = steady_ns();
     ASSERT_EQ(link.open(), FRUSTA_OK);
-    ASSERT_TRUE(wait_until(scene.world, [&] { return link.status().state == LinkState::kDisconnected; }, 5.0));
-    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    EXPECT_EQ(static_cast<double>(link.status().frames_ok), live[0]) << real_time;
-    EXPECT_DOUBLE_EQ(settled_index_flexion(scene.world), live[1]) << real_time;
+    DeviceLinkStatus ended;
+    ASSERT_TRUE(wait_status(link, &scene.world, [](const DeviceLinkStatus& s) {
+      return s.state == LinkState::kDisconnected;
+    }, &ended));
+    const double seconds = static_cast<double>(steady_ns() - start) / 1e9;
+    EXPECT_EQ(ended.frames_ok, live_frames) << real_time;
+    EXPECT_TRUE(wait_until(scene.world, [&] { return std::fabs(index_flexion(scene.world) - live_flexion) < 1e-9; }))
+        << real_time;
+    EXPECT_DOUBLE_EQ(index_flexion(scene.world), live_flexion) << real_time;
+    // in real time each record is played when it is due, so the last not before its time
+    // (as fast as read, a replay does not wait: recording_test shows it record by record)
     if (real_time) {
-      EXPECT_GT(seconds, 0.5) << "about as long as the glove took";
-    } else {
-      EXPECT_LT(seconds, 0.3);
+      EXPECT_GE(seconds, duration);
     }
   }
   std::remove(recording.c_str());

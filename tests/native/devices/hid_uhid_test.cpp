@@ -11,6 +11,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstring>
+#include <functional>
 #include <thread>
 #include <vector>
 
@@ -118,7 +119,6 @@ TEST(hidStream, AVirtualHidGloveHandshakesAndReadsCommandsBack) {
   scenes::BinaryGlove firmware(caps);
   UhidGlove uhid(firmware);
   ASSERT_TRUE(uhid.created()) << std::strerror(errno);
-  std::this_thread::sleep_for(std::chrono::milliseconds(200));  // the kernel adds hidraw
 
   World world{WorldDef{}};
   int32_t hand = -1;
@@ -128,12 +128,25 @@ TEST(hidStream, AVirtualHidGloveHandshakesAndReadsCommandsBack) {
   def.host_timeout_s = 0.0;
   DeviceLink link(world, def, std::make_unique<HidStream>(kVendor, kProduct, "FR-0042"),
                   std::make_unique<FrustaProtocol>());
-  ASSERT_EQ(link.open(), FRUSTA_OK) << frusta_last_error();
-  std::this_thread::sleep_for(std::chrono::milliseconds(500));
-  const DeviceLinkStatus s = link.status();
+  // the kernel adds the hidraw node in its own time: open once it is there (the
+  // deadline only turns a hang into a failure)
+  const auto until = [](const std::function<bool()>& done) {
+    const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+    while (!done()) {
+      if (std::chrono::steady_clock::now() > end) return false;
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    return true;
+  };
+  ASSERT_TRUE(until([&] { return link.open() == FRUSTA_OK; })) << frusta_last_error();
+  DeviceLinkStatus s;
+  ASSERT_TRUE(until([&] {
+    s = link.status();
+    return s.capabilities.protocol_version != 0 && s.frames_ok >= 2;
+  }));
   EXPECT_EQ(s.capabilities.protocol_version, bp::kVersion);
-  EXPECT_NEAR(s.input_rate_hz, 500.0, 125.0);
-  EXPECT_GT(firmware.commands().size(), 100u);
+  EXPECT_DOUBLE_EQ(s.input_rate_hz, 500.0) << "by the glove's stamps";
+  EXPECT_TRUE(until([&] { return firmware.commands().size() > 100u; }));
   link.close();
   world.stop();
 }
