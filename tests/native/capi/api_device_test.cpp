@@ -2,13 +2,16 @@
 // The gloves' C ABI: defs and URIs checked with named fields, a glove on a real pseudo-
 // terminal opened by URI, its status, its palm, its hand closed to other input, ids
 // turning stale, a world taking its gloves with it, enumeration, record and replay, and
-// recordings that are not (a FIFO, /dev/zero, ...) refused by name.
+// recordings that are not (a FIFO, /dev/zero, ...) refused by name. Every check waits
+// for the state it checks (the deadline only turns a hang into a failure): none holds
+// a wall clock against a rate or a count.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <string>
 #include <functional>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -23,6 +26,8 @@ namespace {
 using scenes::SimulatedGlove;
 using scenes::temp_path;
 using scenes::thread_count;
+using scenes::thread_count_becomes;
+constexpr double kPatience = 30.0;  // seconds: a wait's deadline, which only a hang reaches
 
 SimulatedGlove::Firmware lucidgloves(int index_curl) {
   return [index_curl](int64_t) { return "A0B" + std::to_string(index_curl) + "C0D0E0\n"; };
@@ -89,12 +94,16 @@ TEST_F(DeviceApiTest, AGloveByUriDrivesItsHandAndReportsItsStatus) {
 
   const frusta_pose palm{{0.1, 0.2, 0.3}, {0.0, 0.0, 0.0, 1.0}};
   ASSERT_EQ(frusta_device_set_palm_pose(device, &palm), FRUSTA_OK);
-  ASSERT_TRUE(run_until([&] { return status(device).frames_ok > 10; }, 3.0));
+  ASSERT_TRUE(run_until([&] { return status(device).frames_ok > 10; }, kPatience));
+  // a step after a sample shows the glove's hand on the palm the host gave
   frusta_world_hand hand{};
   hand.struct_size = sizeof hand;
-  ASSERT_EQ(frusta_world_get_hand(world_, 0, &hand), FRUSTA_OK);
-  EXPECT_DOUBLE_EQ(hand.haptic_palm.position[1], 0.2);
-  EXPECT_NEAR(hand.haptic_angles[1 * 4 + 1], def.flexion_closed[1][0] * 2000 / 4095, 1e-9);
+  const double curled = def.flexion_closed[1][0] * 2000 / 4095;
+  EXPECT_TRUE(run_until([&] {
+    EXPECT_EQ(frusta_world_get_hand(world_, 0, &hand), FRUSTA_OK);
+    return std::fabs(hand.haptic_palm.position[1] - 0.2) < 1e-12 &&
+           std::fabs(hand.haptic_angles[1 * 4 + 1] - curled) < 1e-9;
+  }, kPatience)) << hand.haptic_palm.position[1] << ", " << hand.haptic_angles[1 * 4 + 1];
 
   const frusta_device_status s = status(device);
   EXPECT_EQ(s.state, FRUSTA_DEVICE_CONNECTED);
@@ -118,55 +127,69 @@ TEST_F(DeviceApiTest, AGloveByUriDrivesItsHandAndReportsItsStatus) {
 
   ASSERT_EQ(frusta_device_close(device), FRUSTA_OK);
   EXPECT_EQ(frusta_device_is_valid(device), 0);
-  EXPECT_EQ(thread_count(), base + 1);
+  EXPECT_TRUE(thread_count_becomes(base + 1)) << thread_count();
   ExpectError(frusta_device_close(device), FRUSTA_ERROR_STALE_ID, "closed");
   ExpectError(frusta_device_get_status(device, &small), FRUSTA_ERROR_STALE_ID, "closed");
   EXPECT_EQ(frusta_world_set_haptic(world_, 0, &palm, angles, FRUSTA_HAND_JOINT_COUNT), FRUSTA_OK);
-  // the glove got released as the last thing it heard
-  const std::string heard = glove.received();
-  EXPECT_EQ(heard.substr(heard.rfind('\n', heard.size() - 2) + 1), "A0B0C0D0E0\n");
+  // the glove got released as the last thing it heard (once its thread has read it)
+  const std::string released = "A0B0C0D0E0\n";
+  const auto last_line = [&] {
+    const std::string heard = glove.received();
+    const size_t start = heard.size() < 2 ? std::string::npos : heard.rfind('\n', heard.size() - 2);
+    return heard.substr(start == std::string::npos ? 0 : start + 1);
+  };
+  EXPECT_TRUE(run_until([&] { return last_line() == released; }, kPatience)) << last_line();
 
   // opened again, the same hand has a new id; destroying the world closes the glove
   ASSERT_EQ(frusta_world_open_device(world_, uri.c_str(), &def, &second), FRUSTA_OK);
   EXPECT_NE(second.generation, device.generation);
   ASSERT_EQ(frusta_destroy_world(world_), FRUSTA_OK);
   EXPECT_EQ(frusta_device_is_valid(second), 0);
-  EXPECT_EQ(thread_count(), base + 1);
+  EXPECT_TRUE(thread_count_becomes(base + 1)) << thread_count();
   ExpectError(frusta_device_get_status(second, &small), FRUSTA_ERROR_STALE_ID, "device");
 }
 
 TEST_F(DeviceApiTest, ARecordedGloveReplaysThroughItsUri) {
   const std::string recording = temp_path("recording");
   const frusta_device_def def = frusta_default_device_def();
+  const auto curl_at = [](int64_t tick) { return std::min<int64_t>(tick * 30, 4000); };
+  frusta_world_hand hand{};
+  hand.struct_size = sizeof hand;
+  const auto index_angle = [&] {
+    EXPECT_EQ(frusta_world_get_hand(world_, 0, &hand), FRUSTA_OK);
+    return hand.haptic_angles[1 * 4 + 1];
+  };
   double live_angle = 0.0;
   int64_t live_frames = 0;
   {
-    SimulatedGlove glove(temp_path("glove"), 200.0, [](int64_t t) {
-      return "A0B" + std::to_string(std::min<int64_t>(t * 30, 4000)) + "C0D0E0\n";
+    SimulatedGlove glove(temp_path("glove"), 200.0, [&](int64_t t) {
+      return "A0B" + std::to_string(curl_at(t)) + "C0D0E0\n";
     });
     frusta_device_id device{};
     const std::string uri = "opengloves:" + glove.path() + "?record=" + recording;
     ASSERT_EQ(frusta_world_open_device(world_, uri.c_str(), &def, &device), FRUSTA_OK) << frusta_last_error();
-    ASSERT_TRUE(run_until([&] { return status(device).frames_ok >= 100; }, 3.0));
+    ASSERT_TRUE(run_until([&] { return status(device).frames_ok >= 100; }, kPatience));
+    // the glove stops; the device takes (and records) every frame it sent, then closes
     glove.set_sending(false);
-    run_until([] { return false; }, 0.05);
-    live_frames = status(device).frames_ok;
+    live_frames = glove.frames_sent();
+    ASSERT_TRUE(run_until([&] { return status(device).frames_ok == live_frames; }, kPatience));
     ASSERT_EQ(frusta_device_close(device), FRUSTA_OK);
-    frusta_world_hand hand{};
-    hand.struct_size = sizeof hand;
-    ASSERT_EQ(frusta_world_get_hand(world_, 0, &hand), FRUSTA_OK);
-    live_angle = hand.haptic_angles[1 * 4 + 1];
+    // the host's next step takes the glove's last frame
+    const double last = def.flexion_closed[1][0] * static_cast<double>(curl_at(live_frames - 1)) / 4095;
+    ASSERT_TRUE(run_until([&] { return std::fabs(index_angle() - last) < 1e-9; }, kPatience)) << index_angle();
+    live_angle = index_angle();
   }
   frusta_device_id replay{};
   const std::string uri = "replay:" + recording + "?speed=max";
   ASSERT_EQ(frusta_world_open_device(world_, uri.c_str(), &def, &replay), FRUSTA_OK) << frusta_last_error();
-  ASSERT_TRUE(run_until([&] { return status(replay).state == FRUSTA_DEVICE_DISCONNECTED; }, 3.0));
-  run_until([] { return false; }, 0.01);
-  EXPECT_EQ(status(replay).frames_ok, live_frames);
-  frusta_world_hand hand{};
-  hand.struct_size = sizeof hand;
-  ASSERT_EQ(frusta_world_get_hand(world_, 0, &hand), FRUSTA_OK);
-  EXPECT_DOUBLE_EQ(hand.haptic_angles[1 * 4 + 1], live_angle);
+  frusta_device_status ended{};
+  ASSERT_TRUE(run_until([&] {
+    ended = status(replay);
+    return ended.state == FRUSTA_DEVICE_DISCONNECTED;
+  }, kPatience));
+  EXPECT_EQ(ended.frames_ok, live_frames);
+  EXPECT_TRUE(run_until([&] { return std::fabs(index_angle() - live_angle) < 1e-9; }, kPatience));
+  EXPECT_DOUBLE_EQ(index_angle(), live_angle);
   std::remove(recording.c_str());
 }
 
