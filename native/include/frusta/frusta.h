@@ -15,6 +15,10 @@
  * - Ids are small values passed by value. Zero-initialised means null. A stale id
  *   (its object destroyed) is refused with FRUSTA_ERROR_STALE_ID, never a crash.
  * - No C++ type, exception or abort crosses this header.
+ * - Struct fields are fixed-width. An int32_t holding an enum names the enum first in
+ *   its comment; a 0/1 flag's comment starts "1:" or "1 if". A double[3] is an
+ *   (x, y, z) vector, a double[4] a unit quaternion (x, y, z, w). The C# binding is
+ *   generated from this header by tools/bindings/generate_cs.py, which reads these.
  */
 #ifndef FRUSTA_FRUSTA_H
 #define FRUSTA_FRUSTA_H
@@ -464,7 +468,7 @@ typedef struct frusta_world_def {
  *  reactions and gravity. From frusta_default_object_def(). */
 typedef struct frusta_object_def {
   int32_t struct_size;          /* sizeof(frusta_object_def) */
-  int32_t dynamic;              /* 0 kinematic (default), 1 dynamic */
+  int32_t dynamic;              /* 1: dynamic; 0: kinematic (default) */
   frusta_pose pose;             /* the object frame (its origin is the centre of mass) */
   double stiffness[3];          /* G of seed eq. 12, diagonal in the object frame, N/m,
                                    0..1e9; default 400 */
@@ -510,7 +514,7 @@ typedef struct frusta_world_state {
 /** One hand as the latched step left it. World frame. */
 typedef struct frusta_world_hand {
   int32_t struct_size;          /* sizeof(frusta_world_hand); set it before the call */
-  int32_t solved;               /* 0 until the hand's first valid input */
+  int32_t solved;               /* 1: the hand has had a valid input (0 until then) */
   frusta_pose graphic_palm;     /* the displayed hand: palm pose */
   double graphic_angles[FRUSTA_HAND_JOINT_COUNT]; /* and joint angles, radians */
   frusta_pose haptic_palm;      /* the input the step used */
@@ -550,7 +554,7 @@ typedef struct frusta_world_contact {
 /** One object as the latched step left it. */
 typedef struct frusta_object_state {
   int32_t struct_size;          /* sizeof(frusta_object_state); set it before the call */
-  int32_t dynamic;
+  int32_t dynamic;              /* 1: the world moves it (see frusta_object_def) */
   frusta_pose pose;             /* where the hands met it this step */
   double linear_velocity[3];    /* m/s */
   double angular_velocity[3];   /* rad/s */
