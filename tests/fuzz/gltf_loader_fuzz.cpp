@@ -5,10 +5,13 @@
 // input's folder: every open during a load is checked against it.
 //
 // Each input is written into a private folder, as model.glb when it starts with
-// the GLB magic and model.gltf otherwise. Beside it are the buffers the hand-made
-// seeds name (triangle.bin, sub/cube.bin) and what a hostile file would reach
-// for: a FIFO (fifo.bin), a symlink (link.bin) to a buffer outside the folder
-// (../outside.bin). gltf.dict names them all.
+// the GLB magic and model.gltf otherwise. The folder is laid out as the loader
+// tests' hostile corpus (tests/tools/bake/corpus, also a seed folder) expects:
+// in/ holds the buffers seeds name (triangle.bin, sub/cube.bin, tetra.bin), a
+// symlink inside (alias.bin), symlinks out (link.bin to ../outside.bin, zero.bin
+// to /dev/zero), a FIFO (fifo.bin) and a file over the size limit (huge.bin,
+// sparse). Outside in/ lie copies of the buffers, so that "../" put in front of a
+// seed's URI names a file that exists. gltf.dict names them all.
 #include <dlfcn.h>
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -52,6 +55,20 @@ void check_opened(int fd, const char* asked) {
   std::abort();
 }
 
+// an open about to block: opening a FIFO for reading waits for a writer that never
+// comes (libFuzzer's alarm interrupts the wait, so without this it is only slow)
+void check_blocking(int dir, const char* path, int flags) {
+  struct stat st {};
+  if (!g_watching || (flags & O_NONBLOCK) || (flags & O_ACCMODE) != O_RDONLY ||
+      fstatat(dir, path, &st, 0) != 0 || !S_ISFIFO(st.st_mode))
+    return;
+  std::fprintf(stderr,
+               "==gltf_loader_fuzz== the loader opens the FIFO \"%s\" blocking: it "
+               "hangs until something writes to it\n",
+               path);
+  std::abort();
+}
+
 template <class F>
 F real(const char* name) {
   return reinterpret_cast<F>(dlsym(RTLD_NEXT, name));
@@ -71,6 +88,7 @@ void append(std::vector<uint8_t>& out, const std::vector<T>& values) {
 
 // triangle.bin: 3 float VEC3 at 0, 3 uint16 indices at 36 (44 bytes with padding).
 // cube.bin: 8 float VEC3 at 0, 36 uint16 indices at 96 (168 bytes).
+// tetra.bin: 4 float VEC3 at 0, 12 uint16 indices at 48 (72 bytes), as the corpus's.
 std::vector<uint8_t> triangle_bin() {
   std::vector<uint8_t> b;
   append(b, std::vector<float>{0, 0, 0, 0.1f, 0, 0, 0, 0.1f, 0});
@@ -89,23 +107,38 @@ std::vector<uint8_t> cube_bin() {
   return b;
 }
 
+std::vector<uint8_t> tetra_bin() {
+  std::vector<uint8_t> b;
+  append(b, std::vector<float>{0, 0, 0, 0.05f, 0, 0, 0, 0.05f, 0, 0, 0, 0.05f});
+  append(b, std::vector<uint16_t>{0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3});
+  return b;
+}
+
 void remove_root() {
   std::error_code ignored;
   std::filesystem::remove_all(g_root, ignored);
 }
 
 void make_folder() {
-  std::string pattern =
-      std::filesystem::temp_directory_path().string() + "/frusta-gltf-fuzz.XXXXXX";
+  namespace fs = std::filesystem;
+  std::string pattern = fs::temp_directory_path().string() + "/frusta-gltf-fuzz.XXXXXX";
   if (!mkdtemp(pattern.data())) std::abort();
-  g_root = std::filesystem::canonical(pattern).string();
+  g_root = fs::canonical(pattern).string();
   g_folder = g_root + "/in";
-  std::filesystem::create_directories(g_folder + "/sub");
-  write_file(g_folder + "/triangle.bin", triangle_bin());
-  write_file(g_folder + "/sub/cube.bin", cube_bin());
-  write_file(g_root + "/outside.bin", triangle_bin());
-  std::filesystem::create_symlink("../outside.bin", g_folder + "/link.bin");
+  for (const std::string& dir : {g_root, g_folder}) {
+    fs::create_directories(dir + "/sub");
+    write_file(dir + "/triangle.bin", triangle_bin());
+    write_file(dir + "/sub/cube.bin", cube_bin());
+    write_file(dir + "/tetra.bin", tetra_bin());
+  }
+  write_file(g_root + "/outside.bin", tetra_bin());
+  write_file(g_root + "/outside.png", {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'});
+  fs::create_symlink("tetra.bin", g_folder + "/alias.bin");
+  fs::create_symlink("../outside.bin", g_folder + "/link.bin");
+  fs::create_symlink("/dev/zero", g_folder + "/zero.bin");
   if (mkfifo((g_folder + "/fifo.bin").c_str(), 0600) != 0) std::abort();
+  write_file(g_folder + "/huge.bin", {});
+  fs::resize_file(g_folder + "/huge.bin", frusta::GltfLimits::kMaxFileBytes + 1);
   std::atexit(remove_root);
 }
 
@@ -117,9 +150,11 @@ mode_t open_mode(int flags, va_list args) {
 }  // namespace
 
 // The opens the loader can reach (tinygltf: fopen and std::ifstream, which opens with
-// fopen64), wrapped while g_watching. These replace ASan's interceptors, which are weak.
+// fopen64; open and openat), checked while g_watching. They replace ASan's
+// interceptors, which are weak.
 extern "C" FILE* fopen(const char* path, const char* mode) {
   static const auto next = real<FILE* (*)(const char*, const char*)>("fopen");
+  check_blocking(AT_FDCWD, path, mode[0] == 'r' && !std::strchr(mode, '+') ? O_RDONLY : O_RDWR);
   FILE* f = next(path, mode);
   if (f) check_opened(fileno(f), path);
   return f;
@@ -127,6 +162,7 @@ extern "C" FILE* fopen(const char* path, const char* mode) {
 
 extern "C" FILE* fopen64(const char* path, const char* mode) {
   static const auto next = real<FILE* (*)(const char*, const char*)>("fopen64");
+  check_blocking(AT_FDCWD, path, mode[0] == 'r' && !std::strchr(mode, '+') ? O_RDONLY : O_RDWR);
   FILE* f = next(path, mode);
   if (f) check_opened(fileno(f), path);
   return f;
@@ -138,6 +174,7 @@ extern "C" int open(const char* path, int flags, ...) {
   va_start(args, flags);
   const mode_t mode = open_mode(flags, args);
   va_end(args);
+  check_blocking(AT_FDCWD, path, flags);
   const int fd = next(path, flags, mode);
   check_opened(fd, path);
   return fd;
@@ -149,6 +186,7 @@ extern "C" int open64(const char* path, int flags, ...) {
   va_start(args, flags);
   const mode_t mode = open_mode(flags, args);
   va_end(args);
+  check_blocking(AT_FDCWD, path, flags);
   const int fd = next(path, flags, mode);
   check_opened(fd, path);
   return fd;
@@ -160,6 +198,7 @@ extern "C" int openat(int dir, const char* path, int flags, ...) {
   va_start(args, flags);
   const mode_t mode = open_mode(flags, args);
   va_end(args);
+  check_blocking(dir, path, flags);
   const int fd = next(dir, path, flags, mode);
   check_opened(fd, path);
   return fd;
@@ -171,6 +210,7 @@ extern "C" int openat64(int dir, const char* path, int flags, ...) {
   va_start(args, flags);
   const mode_t mode = open_mode(flags, args);
   va_end(args);
+  check_blocking(dir, path, flags);
   const int fd = next(dir, path, flags, mode);
   check_opened(fd, path);
   return fd;
