@@ -34,7 +34,8 @@ using Limits = GltfLimits;
 constexpr int kTriangles = TINYGLTF_MODE_TRIANGLES;
 
 uint64_t add_saturated(uint64_t a, uint64_t b) {
-  return a > std::numeric_limits<uint64_t>::max() - b ? std::numeric_limits<uint64_t>::max() : a + b;
+  return a > std::numeric_limits<uint64_t>::max() - b ? std::numeric_limits<uint64_t>::max()
+                                                      : a + b;
 }
 
 // ------------------------------------------------------------------ files
@@ -43,7 +44,8 @@ uint64_t add_saturated(uint64_t a, uint64_t b) {
 // writes to returns at once (then fstat refuses it) instead of waiting forever.
 bool read_regular_file(const std::string& path, size_t limit, bool follow_symlinks,
                        std::vector<unsigned char>* out, std::string* why) {
-  const int flags = O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY | (follow_symlinks ? 0 : O_NOFOLLOW);
+  const int flags =
+      O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY | (follow_symlinks ? 0 : O_NOFOLLOW);
   const int fd = ::open(path.c_str(), flags);
   if (fd < 0) {
     *why = std::strerror(errno);
@@ -389,16 +391,18 @@ class ScenePlan {
       if (const Json* pos = member(*attributes, "POSITION")) integer(*pos, &position);
       const uint64_t vertices = accessor_count(position);
       if (vertices > Limits::kMaxVertices)
-        return bad("mesh %d primitive %d: POSITION accessor %d has %llu elements, more than the "
-                   "%llu vertices the loader takes", mesh, k, position,
-                   static_cast<unsigned long long>(vertices),
-                   static_cast<unsigned long long>(Limits::kMaxVertices));
+        return bad(
+            "mesh %d primitive %d: POSITION accessor %d has %llu elements, more than the "
+            "%llu vertices the loader takes",
+            mesh, k, position, static_cast<unsigned long long>(vertices),
+            static_cast<unsigned long long>(Limits::kMaxVertices));
       const uint64_t triangles = (indices >= 0 ? accessor_count(indices) : vertices) / 3;
       if (triangles > Limits::kMaxTriangles)
-        return bad("mesh %d primitive %d: index accessor %d has %llu elements, more than the "
-                   "%llu triangles the loader takes", mesh, k, indices,
-                   static_cast<unsigned long long>(accessor_count(indices)),
-                   static_cast<unsigned long long>(Limits::kMaxTriangles));
+        return bad(
+            "mesh %d primitive %d: index accessor %d has %llu elements, more than the "
+            "%llu triangles the loader takes",
+            mesh, k, indices, static_cast<unsigned long long>(accessor_count(indices)),
+            static_cast<unsigned long long>(Limits::kMaxTriangles));
       t->vertices = add_saturated(t->vertices, vertices);
       t->triangles = add_saturated(t->triangles, triangles);
     }
@@ -441,9 +445,10 @@ class ScenePlan {
     const std::string count = asked == std::numeric_limits<uint64_t>::max()
                                   ? std::string("2^64 or more")
                                   : std::to_string(asked);
-    return bad("the scene asks for %s %s once its nodes are instanced (nodes used more than "
-               "once repeat their meshes), over the loader's budget of %llu",
-               count.c_str(), what, static_cast<unsigned long long>(budget));
+    return bad(
+        "the scene asks for %s %s once its nodes are instanced (nodes used more than "
+        "once repeat their meshes), over the loader's budget of %llu",
+        count.c_str(), what, static_cast<unsigned long long>(budget));
   }
 
   template <class... Args>
@@ -640,7 +645,8 @@ frusta_result load(const std::string& path, GltfLoadResult* out) {
     return fail(FRUSTA_ERROR_IO, "%s: cannot read it: %s", path.c_str(), why.c_str());
   char folder[PATH_MAX];
   if (::realpath(folder_of(path).c_str(), folder) == nullptr)
-    return fail(FRUSTA_ERROR_IO, "%s: cannot resolve its folder: %s", path.c_str(), std::strerror(errno));
+    return fail(FRUSTA_ERROR_IO, "%s: cannot resolve its folder: %s", path.c_str(),
+                std::strerror(errno));
   auto not_gltf = [&](const std::string& detail) {
     return fail(FRUSTA_ERROR_FILE_FORMAT, "%s: not readable as glTF 2.0: %s", path.c_str(),
                 detail.c_str());

@@ -134,10 +134,18 @@ int parse(int argc, char** argv, Options* o) {
         int64_t v = 0;
         if (!integer(value, &v)) return usage(a + " needs an integer, got '" + value + "'");
         switch (field->second) {
-          case BakeField::kLeaves: o->params.max_leaves = v; break;
-          case BakeField::kBranching: o->params.branching = v; break;
-          case BakeField::kDepth: o->params.max_depth = v; break;
-          default: o->params.error_samples = v; break;
+          case BakeField::kLeaves:
+            o->params.max_leaves = v;
+            break;
+          case BakeField::kBranching:
+            o->params.branching = v;
+            break;
+          case BakeField::kDepth:
+            o->params.max_depth = v;
+            break;
+          default:
+            o->params.error_samples = v;
+            break;
         }
         o->given[field->second] = given;
       } else {

@@ -140,8 +140,8 @@ MeshQueries::Closest MeshQueries::closest(const vec3& point, double max_distance
     // beyond what Embree accepts: every triangle, by hand (NaN finds nothing)
     const TriangleMesh& mesh = *impl_->mesh;
     for (const auto& t : mesh.triangles) {
-      const vec3 q = closest_on_triangle(point, mesh.vertices[t[0]], mesh.vertices[t[1]],
-                                         mesh.vertices[t[2]]);
+      const vec3 q =
+          closest_on_triangle(point, mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]);
       const double d = glm::length(q - point);
       if (d < search.best && d <= max_distance) search.best = d, search.nearest = q;
     }

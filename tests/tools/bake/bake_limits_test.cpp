@@ -40,23 +40,36 @@ TEST(BakeLimits, TheCAbiRefusesEveryParameterOutsideItsRange) {
   };
   const Bad cases[] = {
       // 1e38 and 1e300 passed the old "> 0" rule, then Embree aborted the process
-      {"target_error", [](frusta_bake_def* d) { d->target_error = 1e38; }, FRUSTA_ERROR_OUT_OF_RANGE},
-      {"target_error", [](frusta_bake_def* d) { d->target_error = 1e300; }, FRUSTA_ERROR_OUT_OF_RANGE},
-      {"target_error", [](frusta_bake_def* d) { d->target_error = 1.0001; }, FRUSTA_ERROR_OUT_OF_RANGE},
-      {"target_error", [](frusta_bake_def* d) { d->target_error = 9e-6; }, FRUSTA_ERROR_OUT_OF_RANGE},
-      {"target_error", [](frusta_bake_def* d) { d->target_error = 1e-300; }, FRUSTA_ERROR_OUT_OF_RANGE},
-      {"target_error", [](frusta_bake_def* d) { d->target_error = -1.0; }, FRUSTA_ERROR_OUT_OF_RANGE},
+      {"target_error", [](frusta_bake_def* d) { d->target_error = 1e38; },
+       FRUSTA_ERROR_OUT_OF_RANGE},
+      {"target_error", [](frusta_bake_def* d) { d->target_error = 1e300; },
+       FRUSTA_ERROR_OUT_OF_RANGE},
+      {"target_error", [](frusta_bake_def* d) { d->target_error = 1.0001; },
+       FRUSTA_ERROR_OUT_OF_RANGE},
+      {"target_error", [](frusta_bake_def* d) { d->target_error = 9e-6; },
+       FRUSTA_ERROR_OUT_OF_RANGE},
+      {"target_error", [](frusta_bake_def* d) { d->target_error = 1e-300; },
+       FRUSTA_ERROR_OUT_OF_RANGE},
+      {"target_error", [](frusta_bake_def* d) { d->target_error = -1.0; },
+       FRUSTA_ERROR_OUT_OF_RANGE},
       {"target_error", [](frusta_bake_def* d) { d->target_error = NAN; }, FRUSTA_ERROR_NOT_FINITE},
-      {"target_error", [](frusta_bake_def* d) { d->target_error = -INFINITY; }, FRUSTA_ERROR_NOT_FINITE},
+      {"target_error", [](frusta_bake_def* d) { d->target_error = -INFINITY; },
+       FRUSTA_ERROR_NOT_FINITE},
       {"max_leaves", [](frusta_bake_def* d) { d->max_leaves = 0; }, FRUSTA_ERROR_OUT_OF_RANGE},
-      {"max_leaves", [](frusta_bake_def* d) { d->max_leaves = INT64_MAX; }, FRUSTA_ERROR_OUT_OF_RANGE},
-      {"branching", [](frusta_bake_def* d) { d->branching = INT32_MIN; }, FRUSTA_ERROR_OUT_OF_RANGE},
+      {"max_leaves", [](frusta_bake_def* d) { d->max_leaves = INT64_MAX; },
+       FRUSTA_ERROR_OUT_OF_RANGE},
+      {"branching", [](frusta_bake_def* d) { d->branching = INT32_MIN; },
+       FRUSTA_ERROR_OUT_OF_RANGE},
       {"branching", [](frusta_bake_def* d) { d->branching = 17; }, FRUSTA_ERROR_OUT_OF_RANGE},
       {"max_depth", [](frusta_bake_def* d) { d->max_depth = 0; }, FRUSTA_ERROR_OUT_OF_RANGE},
-      {"max_depth", [](frusta_bake_def* d) { d->max_depth = INT32_MAX; }, FRUSTA_ERROR_OUT_OF_RANGE},
-      {"error_samples", [](frusta_bake_def* d) { d->error_samples = 999; }, FRUSTA_ERROR_OUT_OF_RANGE},
-      {"error_samples", [](frusta_bake_def* d) { d->error_samples = 10000001; }, FRUSTA_ERROR_OUT_OF_RANGE},
-      {"error_samples", [](frusta_bake_def* d) { d->error_samples = INT64_MIN; }, FRUSTA_ERROR_OUT_OF_RANGE},
+      {"max_depth", [](frusta_bake_def* d) { d->max_depth = INT32_MAX; },
+       FRUSTA_ERROR_OUT_OF_RANGE},
+      {"error_samples", [](frusta_bake_def* d) { d->error_samples = 999; },
+       FRUSTA_ERROR_OUT_OF_RANGE},
+      {"error_samples", [](frusta_bake_def* d) { d->error_samples = 10000001; },
+       FRUSTA_ERROR_OUT_OF_RANGE},
+      {"error_samples", [](frusta_bake_def* d) { d->error_samples = INT64_MIN; },
+       FRUSTA_ERROR_OUT_OF_RANGE},
   };
   for (const Bad& c : cases) {
     frusta_bake_def def = frusta_default_bake_def();
@@ -64,7 +77,8 @@ TEST(BakeLimits, TheCAbiRefusesEveryParameterOutsideItsRange) {
     const frusta_tree_id sentinel{77, 0, 5};
     frusta_tree_id tree = sentinel;
     EXPECT_EQ(frusta_bake_sphere_tree(kVertices, 8, kIndices, 36, &def, &tree), c.code) << c.field;
-    EXPECT_NE(std::string(frusta_last_error()).find(c.field), std::string::npos) << frusta_last_error();
+    EXPECT_NE(std::string(frusta_last_error()).find(c.field), std::string::npos)
+        << frusta_last_error();
     expect_code_once(c.code);
     EXPECT_EQ(tree.index1, sentinel.index1);
   }
@@ -92,8 +106,10 @@ TEST(BakeLimits, TheEdgesOfTheRangesBake) {
 TEST(BakeLimits, TheBakerLibrarysMessagesSayTheirCodeOnce) {
   frusta_bake_def def = frusta_default_bake_def();
   frusta_tree_id tree{};
-  EXPECT_EQ(frusta_bake_sphere_tree(nullptr, 8, kIndices, 36, &def, &tree), FRUSTA_ERROR_NULL_POINTER);
-  EXPECT_NE(std::string(frusta_last_error()).find("vertices"), std::string::npos) << frusta_last_error();
+  EXPECT_EQ(frusta_bake_sphere_tree(nullptr, 8, kIndices, 36, &def, &tree),
+            FRUSTA_ERROR_NULL_POINTER);
+  EXPECT_NE(std::string(frusta_last_error()).find("vertices"), std::string::npos)
+      << frusta_last_error();
   expect_code_once(FRUSTA_ERROR_NULL_POINTER);
   const int32_t bad[] = {0, 1, 9};
   EXPECT_EQ(frusta_bake_sphere_tree(kVertices, 8, bad, 3, &def, &tree), FRUSTA_ERROR_OUT_OF_RANGE);

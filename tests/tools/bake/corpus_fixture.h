@@ -42,7 +42,8 @@ inline std::vector<unsigned char> tetra_bin() {
 }
 
 inline void write_file(const std::string& path, const std::string& bytes) {
-  std::ofstream(path, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  std::ofstream(path, std::ios::binary)
+      .write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
 }
 
 // {"a": ... 0 ...} (or [[...0...]]) `depth` levels deep in the extras of a glTF whose
@@ -96,7 +97,8 @@ class Folder {
     write_file(in_ + "/huge.bin", "");
     std::filesystem::resize_file(in_ + "/huge.bin", GltfLimits::kMaxFileBytes + 1);
     for (const Case& c : cases())
-      std::filesystem::copy_file(std::string(FRUSTA_GLTF_CORPUS_DIR) + "/" + c.file, in_ + "/" + c.file);
+      std::filesystem::copy_file(std::string(FRUSTA_GLTF_CORPUS_DIR) + "/" + c.file,
+                                 in_ + "/" + c.file);
     write_file(in_ + "/deep_extras_objects.gltf", deep_gltf(kDeep, false));
     write_file(in_ + "/deep_extras_arrays.gltf", deep_gltf(kDeep, true));
     write_file(in_ + "/deep_json_chunk.glb", glb_of(deep_gltf(kDeep, false), tetra));
@@ -131,7 +133,8 @@ class Folder {
   static std::vector<Case> all_cases() {
     std::vector<Case> out = cases();
     const char* deep = "JSON nested more than 64 levels deep (in \"extras\")";
-    for (const char* f : {"deep_extras_objects.gltf", "deep_extras_arrays.gltf", "deep_json_chunk.glb"})
+    for (const char* f :
+         {"deep_extras_objects.gltf", "deep_extras_arrays.gltf", "deep_json_chunk.glb"})
       out.push_back({f, "FRUSTA_ERROR_FILE_FORMAT", deep});
     return out;
   }

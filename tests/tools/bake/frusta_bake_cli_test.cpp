@@ -73,7 +73,9 @@ TEST(FrustaBakeCli, ExitCodesSeparateTheFailures) {
   const std::string junk = ::testing::TempDir() + "junk.gltf";
   std::ofstream(junk) << "not gltf";
   EXPECT_EQ(run(junk).code, 3);
-  EXPECT_EQ(run("--branching 99 " + kObjects + "/box.glb -o " + ::testing::TempDir() + "b.frtree").code, 2);
+  EXPECT_EQ(
+      run("--branching 99 " + kObjects + "/box.glb -o " + ::testing::TempDir() + "b.frtree").code,
+      2);
   const Process deep = run("--max-depth 1 --branching 2 " + kObjects + "/box.glb -o " +
                            ::testing::TempDir() + "d.frtree");
   EXPECT_EQ(deep.code, 4) << deep.out;
@@ -97,21 +99,32 @@ TEST(FrustaBakeCli, OptionsOutOfRangeAreUsageErrorsNamingTheOption) {
     const char* arguments;
     const char* fragment;
   };
-  const Bad cases[] = {
-      {"--max-error 1e300", "--max-error 1e300"}, {"--max-error 1001", "--max-error"},
-      {"--max-error 0.001", "--max-error"},       {"--max-error 0", "--max-error"},
-      {"--max-error -1", "--max-error"},          {"--max-error nan", "--max-error"},
-      {"--max-error inf", "--max-error"},         {"--branching 99", "--branching 99"},
-      {"--branching 1", "--branching"},           {"--branching 1e30", "--branching"},
-      {"--branching nan", "--branching"},         {"--branching 2.5", "--branching"},
-      {"--branching 4294967298", "4294967298"},   {"--max-leaves 0", "--max-leaves"},
-      {"--max-leaves 16777217", "--max-leaves"},  {"--max-leaves 1e30", "--max-leaves"},
-      {"--max-leaves 99999999999999999999", "--max-leaves"},
-      {"--max-depth 41", "--max-depth"},          {"--max-depth -1", "--max-depth"},
-      {"--samples 999", "--samples"},             {"--samples 10000001", "--samples"},
-      {"--samples 1e30", "--samples"},            {"--samples nan", "--samples"},
-      {"--seed -1", "--seed"},                    {"--seed 1e3", "--seed"},
-      {"--seed 18446744073709551616", "--seed"}};
+  const Bad cases[] = {{"--max-error 1e300", "--max-error 1e300"},
+                       {"--max-error 1001", "--max-error"},
+                       {"--max-error 0.001", "--max-error"},
+                       {"--max-error 0", "--max-error"},
+                       {"--max-error -1", "--max-error"},
+                       {"--max-error nan", "--max-error"},
+                       {"--max-error inf", "--max-error"},
+                       {"--branching 99", "--branching 99"},
+                       {"--branching 1", "--branching"},
+                       {"--branching 1e30", "--branching"},
+                       {"--branching nan", "--branching"},
+                       {"--branching 2.5", "--branching"},
+                       {"--branching 4294967298", "4294967298"},
+                       {"--max-leaves 0", "--max-leaves"},
+                       {"--max-leaves 16777217", "--max-leaves"},
+                       {"--max-leaves 1e30", "--max-leaves"},
+                       {"--max-leaves 99999999999999999999", "--max-leaves"},
+                       {"--max-depth 41", "--max-depth"},
+                       {"--max-depth -1", "--max-depth"},
+                       {"--samples 999", "--samples"},
+                       {"--samples 10000001", "--samples"},
+                       {"--samples 1e30", "--samples"},
+                       {"--samples nan", "--samples"},
+                       {"--seed -1", "--seed"},
+                       {"--seed 1e3", "--seed"},
+                       {"--seed 18446744073709551616", "--seed"}};
   for (const Bad& c : cases) {
     const Process r = run(std::string(c.arguments) + " -o " + ::testing::TempDir() + "r.frtree " +
                           kObjects + "/box.glb");
@@ -132,7 +145,8 @@ TEST(FrustaBakeCli, TheHostileCorpusEndsInExitCode3NamingTheFile) {
   frusta::corpus::OpenWatch outside(folder.root());
   for (const frusta::corpus::Case& c : frusta::corpus::Folder::all_cases()) {
     const std::string path = folder.in(c.file);
-    const Process r = run("-q --max-error 2 --samples 1000 -o " + folder.in("out.frtree") + " " + path);
+    const Process r =
+        run("-q --max-error 2 --samples 1000 -o " + folder.in("out.frtree") + " " + path);
     if (c.result == "FRUSTA_OK") {
       EXPECT_TRUE(r.code == 0 || r.code == 6) << c.file << ": " << r.out;
     } else {

@@ -175,7 +175,8 @@ TEST(GltfLoaderCorpus, EveryFileEndsInItsResultAndNothingOutsideTheFolderIsOpene
     } else {
       EXPECT_NE(message.find(c.fragment), std::string::npos) << c.file << ": " << message;
       EXPECT_NE(message.find(path), std::string::npos) << c.file << ": " << message;
-      EXPECT_EQ(message.find("FRUSTA_ERROR", 1), std::string::npos) << "the code twice: " << message;
+      EXPECT_EQ(message.find("FRUSTA_ERROR", 1), std::string::npos)
+          << "the code twice: " << message;
     }
     for (const std::string& name : outside.take())
       ADD_FAILURE() << c.file << ": " << name << " beside the input's folder was opened";
@@ -203,9 +204,10 @@ TEST(GltfLoaderCorpus, TheInputMustBeARegularFileWithinTheLimit) {
     std::string path;
     const char* fragment;
   };
-  for (const Input& input : {Input{fifo, "not a regular file"}, Input{"/dev/zero", "not a regular file"},
-                             Input{folder.in("sub"), "not a regular file"},
-                             Input{folder.in("huge.bin"), "bytes the loader reads"}}) {
+  for (const Input& input :
+       {Input{fifo, "not a regular file"}, Input{"/dev/zero", "not a regular file"},
+        Input{folder.in("sub"), "not a regular file"},
+        Input{folder.in("huge.bin"), "bytes the loader reads"}}) {
     GltfLoadResult r;
     EXPECT_EQ(load_gltf_triangles(input.path, &r), FRUSTA_ERROR_IO) << input.path;
     const std::string message = frusta_last_error();
@@ -222,7 +224,8 @@ TEST(GltfLoaderCorpus, LimitsHoldAtTheirEdges) {
   GltfLoadResult r;
   // 64 levels (the root object is one) load
   const std::string at_limit = folder.in("depth_64.glb");
-  corpus::write_file(at_limit, corpus::glb_of(corpus::deep_gltf(GltfLimits::kMaxJsonDepth - 1, true), tetra));
+  corpus::write_file(at_limit,
+                     corpus::glb_of(corpus::deep_gltf(GltfLimits::kMaxJsonDepth - 1, true), tetra));
   EXPECT_EQ(load_gltf_triangles(at_limit, &r), FRUSTA_OK) << frusta_last_error();
   // too many values, however flat
   std::string values = "[0";
