@@ -4,8 +4,9 @@
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 
-# Debian packages the build needs (docs: /work/shared/deps.md, README "Dependencies").
-FRUSTA_PACKAGES=(cmake ninja-build g++ pkg-config libglm-dev libhidapi-dev libusb-1.0-0-dev
+# Debian packages the build needs (docs: /work/shared/deps.md, README "Dependencies");
+# python3 runs the C# binding's generator and the test that it is up to date.
+FRUSTA_PACKAGES=(cmake ninja-build g++ pkg-config python3 libglm-dev libhidapi-dev libusb-1.0-0-dev
                  libembree-dev libtinygltf-dev nlohmann-json3-dev libbenchmark-dev libgtest-dev)
 
 # ensure_packages [PACKAGE...]: those (default: FRUSTA_PACKAGES) installed
