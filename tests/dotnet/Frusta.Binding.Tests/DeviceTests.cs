@@ -75,9 +75,9 @@ namespace Frusta.Binding.Tests
         public void DefaultsAreTheHeadersDocumentedDefaults()
         {
             FrustaDeviceDef d = FrustaDeviceDef.Default;
-            Assert.Equal(720, d.StructSize);
-            Assert.NotEqual(0, d.InternalValue);
-            Assert.Equal(0, d.Reserved0);
+            Assert.Equal(720, d.struct_size);
+            Assert.NotEqual(0, d.internal_value);
+            Assert.Equal(0, d.reserved0);
             Assert.Equal(0, d.Hand);
             Assert.Equal(0.0, d.OutputRateHz);
             Assert.Equal((0.05, 0.05, 0.25, 0.2), (d.WatchdogS, d.EngineTimeoutS, d.HostTimeoutS, d.ReconnectIntervalS));
@@ -102,7 +102,7 @@ namespace Frusta.Binding.Tests
             }
             // a fist bends the fingers more than the thumb, whose first segment is the metacarpal
             Assert.True(d.GetFlexionClosed(FrustaFinger.Index, 0) > d.GetFlexionClosed(FrustaFinger.Thumb, 0));
-            Assert.Equal(FrustaLibrary.GetNativeStructSize("frusta_device_def"), d.StructSize);
+            Assert.Equal(FrustaLibrary.GetNativeStructSize("frusta_device_def"), d.struct_size);
         }
 
         [Fact]

@@ -27,15 +27,15 @@ namespace Frusta.Binding.Tests
         [Fact]
         public void ADefNotFromTheDefaultsIsRefused()
         {
-            var def = new FrustaWorldDef { StructSize = 128 }; // built by hand: no cookie
+            var def = new FrustaWorldDef { struct_size = 128 }; // built by hand: no cookie
             Fails(FrustaResult.DefNotDefaulted, () => new World(def), "frusta_default_world_def");
             FrustaObjectDef objectDef = FrustaObjectDef.Default;
-            objectDef.InternalValue = 0;
+            objectDef.internal_value = 0;
             using var world = new World();
             using var tree = Box.Bake();
             Fails(FrustaResult.DefNotDefaulted, () => world.AddObject(tree, objectDef), "internal_value");
             FrustaWorldDef drifted = FrustaWorldDef.Default;
-            drifted.StructSize -= 8; // what a drifted mirror would send
+            drifted.struct_size -= 8; // what a drifted mirror would send
             Fails(FrustaResult.StructSize, () => new World(drifted), "frusta_world_def");
         }
 

@@ -94,6 +94,22 @@ namespace Frusta.Binding.Tests
         }
 
         [Fact]
+        public void EveryInternalFieldTheBindingDoesNotFillHasAPublicFace()
+        {
+            // the generator makes flags and fixed buffers internal under their C names; a new one
+            // in the header stays out of users' reach until Structs.cs wraps it
+            foreach (var m in FrustaLibrary.Mirrors)
+                foreach (FieldInfo f in Fields(m.Type).Where(f => !f.IsPublic))
+                {
+                    if (Regex.IsMatch(f.Name, @"^(struct_size|internal_value|reserved\d*)$")) continue;
+                    string pascal = string.Concat(f.Name.Split('_').Select(w => char.ToUpperInvariant(w[0]) + w.Substring(1)));
+                    var faces = new[] { pascal, "Get" + pascal, "Copy" + pascal };
+                    Assert.True(m.Type.GetMembers(BindingFlags.Public | BindingFlags.Instance).Any(x => faces.Contains(x.Name)),
+                        $"{m.Type.Name}.{f.Name} has no public {string.Join(", ", faces)}");
+                }
+        }
+
+        [Fact]
         public void MirrorsAreBlittable()
         {
             foreach (var m in FrustaLibrary.Mirrors)
@@ -111,14 +127,14 @@ namespace Frusta.Binding.Tests
         [Fact]
         public void DefaultsCarryTheirSizeAndCookie()
         {
-            Assert.Equal(896, FrustaHandDef.Default.StructSize);
-            Assert.Equal(56, FrustaBakeDef.Default.StructSize);
-            Assert.Equal(128, FrustaWorldDef.Default.StructSize);
-            Assert.Equal(224, FrustaObjectDef.Default.StructSize);
-            Assert.Equal(720, FrustaDeviceDef.Default.StructSize);
-            Assert.NotEqual(0, FrustaWorldDef.Default.InternalValue);
-            Assert.NotEqual(0, FrustaObjectDef.Default.InternalValue);
-            Assert.NotEqual(0, FrustaDeviceDef.Default.InternalValue);
+            Assert.Equal(896, FrustaHandDef.Default.struct_size);
+            Assert.Equal(56, FrustaBakeDef.Default.struct_size);
+            Assert.Equal(128, FrustaWorldDef.Default.struct_size);
+            Assert.Equal(224, FrustaObjectDef.Default.struct_size);
+            Assert.Equal(720, FrustaDeviceDef.Default.struct_size);
+            Assert.NotEqual(0, FrustaWorldDef.Default.internal_value);
+            Assert.NotEqual(0, FrustaObjectDef.Default.internal_value);
+            Assert.NotEqual(0, FrustaDeviceDef.Default.internal_value);
         }
 
         [Fact]
@@ -138,7 +154,7 @@ namespace Frusta.Binding.Tests
             Assert.Equal(256, w.CommandCapacity);
             Assert.Equal((10.0, 10.0, 0.5, 20.0, 1.0),
                 (w.MaxFingertipForce, w.MaxFingerResistance, w.MaxJointTorque, w.MaxPalmForce, w.MaxPalmTorque));
-            Assert.Equal(0, w.Reserved0);
+            Assert.Equal(0, w.reserved0);
 
             FrustaObjectDef o = FrustaObjectDef.Default;
             Assert.False(o.Dynamic);

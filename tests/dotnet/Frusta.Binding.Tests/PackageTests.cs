@@ -90,7 +90,7 @@ namespace Frusta.Binding.Tests
         [Fact]
         public void TheBindingFolderHoldsNoUnityEngineCode()
         {
-            foreach (string file in Directory.EnumerateFiles(Path.Combine(TestEnv.Package, "Runtime", "Binding"), "*.cs"))
+            foreach (string file in Directory.EnumerateFiles(Path.Combine(TestEnv.Package, "Runtime", "Binding"), "*.cs", SearchOption.AllDirectories))
                 Assert.DoesNotMatch(@"using\s+UnityEngine|UnityEngine\.[A-Z]\w*\s*[.(]", File.ReadAllText(file));
         }
 

@@ -194,7 +194,7 @@ namespace Frusta.Binding
         public static int Enumerate(Span<FrustaDeviceInfo> destination)
         {
             FrustaLibrary.EnsureCompatible();
-            for (int i = 0; i < destination.Length; ++i) destination[i].StructSize = sizeof(FrustaDeviceInfo);
+            for (int i = 0; i < destination.Length; ++i) destination[i].struct_size = sizeof(FrustaDeviceInfo);
             int count;
             fixed (FrustaDeviceInfo* p = destination)
                 Errors.Check(Native.frusta_enumerate_devices(p, destination.Length, &count), "frusta_enumerate_devices");
@@ -209,7 +209,7 @@ namespace Frusta.Binding
         // worldGone: the world was disposed (it closed the glove), so native was not called
         FrustaResult ReadStatus(ref FrustaDeviceStatus status, out bool worldGone)
         {
-            status.StructSize = sizeof(FrustaDeviceStatus);
+            status.struct_size = sizeof(FrustaDeviceStatus);
             using (var use = new DeviceUse(handle))
             {
                 worldGone = !use.WorldAlive;

@@ -12,7 +12,7 @@ namespace Frusta.Binding
     /// <see cref="EnsureCompatible"/> first, so a mismatched library fails loudly at the first
     /// call instead of corrupting memory.
     /// </summary>
-    public static unsafe class FrustaLibrary
+    public static unsafe partial class FrustaLibrary
     {
         /// <summary>One mirrored struct: its C name, its C# type and its C# size.</summary>
         internal readonly struct Mirror
@@ -28,34 +28,6 @@ namespace Frusta.Binding
                 Sizeof = size;
             }
         }
-
-        /// <summary>Every struct of frusta.h this binding mirrors.</summary>
-        internal static readonly Mirror[] Mirrors =
-        {
-            new Mirror("frusta_hand_id", typeof(FrustaHandId), sizeof(FrustaHandId)),
-            new Mirror("frusta_pose", typeof(FrustaPose), sizeof(FrustaPose)),
-            new Mirror("frusta_sphere", typeof(FrustaSphere), sizeof(FrustaSphere)),
-            new Mirror("frusta_segment", typeof(FrustaSegment), sizeof(FrustaSegment)),
-            new Mirror("frusta_hand_def", typeof(FrustaHandDef), sizeof(FrustaHandDef)),
-            new Mirror("frusta_contact_query", typeof(FrustaContactQuery), sizeof(FrustaContactQuery)),
-            new Mirror("frusta_constraint", typeof(FrustaConstraint), sizeof(FrustaConstraint)),
-            new Mirror("frusta_tree_id", typeof(FrustaTreeId), sizeof(FrustaTreeId)),
-            new Mirror("frusta_bake_def", typeof(FrustaBakeDef), sizeof(FrustaBakeDef)),
-            new Mirror("frusta_sphere_tree_info", typeof(FrustaSphereTreeInfo), sizeof(FrustaSphereTreeInfo)),
-            new Mirror("frusta_tree_hit", typeof(FrustaTreeHit), sizeof(FrustaTreeHit)),
-            new Mirror("frusta_world_id", typeof(FrustaWorldId), sizeof(FrustaWorldId)),
-            new Mirror("frusta_object_id", typeof(FrustaObjectId), sizeof(FrustaObjectId)),
-            new Mirror("frusta_world_def", typeof(FrustaWorldDef), sizeof(FrustaWorldDef)),
-            new Mirror("frusta_object_def", typeof(FrustaObjectDef), sizeof(FrustaObjectDef)),
-            new Mirror("frusta_world_state", typeof(FrustaWorldState), sizeof(FrustaWorldState)),
-            new Mirror("frusta_world_hand", typeof(FrustaWorldHand), sizeof(FrustaWorldHand)),
-            new Mirror("frusta_world_contact", typeof(FrustaWorldContact), sizeof(FrustaWorldContact)),
-            new Mirror("frusta_object_state", typeof(FrustaObjectState), sizeof(FrustaObjectState)),
-            new Mirror("frusta_device_id", typeof(FrustaDeviceId), sizeof(FrustaDeviceId)),
-            new Mirror("frusta_device_def", typeof(FrustaDeviceDef), sizeof(FrustaDeviceDef)),
-            new Mirror("frusta_device_status", typeof(FrustaDeviceStatus), sizeof(FrustaDeviceStatus)),
-            new Mirror("frusta_device_info", typeof(FrustaDeviceInfo), sizeof(FrustaDeviceInfo)),
-        };
 
         static readonly object Gate = new object();
         static int checkedOk;

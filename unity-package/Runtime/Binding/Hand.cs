@@ -137,7 +137,7 @@ namespace Frusta.Binding
         public static FrustaContactQuery QueryContact(in FrustaSegment segment, in FrustaSphere sphere)
         {
             FrustaLibrary.EnsureCompatible();
-            var q = new FrustaContactQuery { StructSize = sizeof(FrustaContactQuery) };
+            var q = new FrustaContactQuery { struct_size = sizeof(FrustaContactQuery) };
             fixed (FrustaSegment* s = &segment)
             fixed (FrustaSphere* o = &sphere)
                 Errors.Check(Native.frusta_query_contact(s, o, &q), "frusta_query_contact");
@@ -152,7 +152,7 @@ namespace Frusta.Binding
         public static FrustaConstraint EvaluateConstraint(in FrustaSegment segment, in FrustaSphere sphere, FrustaConstraintForm form)
         {
             FrustaLibrary.EnsureCompatible();
-            var c = new FrustaConstraint { StructSize = sizeof(FrustaConstraint) };
+            var c = new FrustaConstraint { struct_size = sizeof(FrustaConstraint) };
             fixed (FrustaSegment* s = &segment)
             fixed (FrustaSphere* o = &sphere)
                 Errors.Check(Native.frusta_constraint_eval(s, o, (int)form, &c), "frusta_constraint_eval");

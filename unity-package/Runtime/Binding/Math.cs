@@ -34,6 +34,16 @@ namespace Frusta.Binding
         /// <summary>The zero vector.</summary>
         public static Vector3d Zero => default;
 
+        // three consecutive doubles of a mirror's fixed buffer (a row of a C double[N][3])
+        internal static unsafe Vector3d Read(double* p) => new Vector3d(p[0], p[1], p[2]);
+
+        internal readonly unsafe void Write(double* p)
+        {
+            p[0] = X;
+            p[1] = Y;
+            p[2] = Z;
+        }
+
         /// <summary>The Euclidean length.</summary>
         public double Length => Math.Sqrt(X * X + Y * Y + Z * Z);
 

@@ -104,7 +104,7 @@ namespace Frusta.Binding
         {
             get
             {
-                var info = new FrustaSphereTreeInfo { StructSize = sizeof(FrustaSphereTreeInfo) };
+                var info = new FrustaSphereTreeInfo { struct_size = sizeof(FrustaSphereTreeInfo) };
                 using (new HandleUse(handle))
                     Errors.Check(Native.frusta_sphere_tree_get_info(handle.Id, &info), "frusta_sphere_tree_get_info");
                 return info;

@@ -197,7 +197,7 @@ namespace Frusta.Binding
         /// <param name="state">Filled; its previous contents do not matter.</param>
         public void Read(ref FrustaWorldState state)
         {
-            state.StructSize = sizeof(FrustaWorldState);
+            state.struct_size = sizeof(FrustaWorldState);
             using (new HandleUse(handle))
             lock (readGate)
             fixed (FrustaWorldState* s = &state)
@@ -211,7 +211,7 @@ namespace Frusta.Binding
         /// <see cref="FrustaResult.OutOfRange"/> for a hand the world does not have.</exception>
         public void GetHand(int hand, ref FrustaWorldHand output)
         {
-            output.StructSize = sizeof(FrustaWorldHand);
+            output.struct_size = sizeof(FrustaWorldHand);
             using (new HandleUse(handle))
             lock (readGate)
             fixed (FrustaWorldHand* h = &output)
@@ -272,7 +272,7 @@ namespace Frusta.Binding
         /// the latched step.</exception>
         public void GetObject(FrustaObjectId id, ref FrustaObjectState output)
         {
-            output.StructSize = sizeof(FrustaObjectState);
+            output.struct_size = sizeof(FrustaObjectState);
             using (new HandleUse(handle))
             lock (readGate)
             fixed (FrustaObjectState* o = &output)
@@ -298,14 +298,14 @@ namespace Frusta.Binding
             lock (readGate)
             {
                 FrustaWorldId id = handle.Id;
-                snapshot.state.StructSize = sizeof(FrustaWorldState);
+                snapshot.state.struct_size = sizeof(FrustaWorldState);
                 fixed (FrustaWorldState* s = &snapshot.state)
                     Errors.Check(Native.frusta_world_read(id, s), "frusta_world_read");
                 int hands = snapshot.state.HandCount;
                 snapshot.EnsureHands(hands);
                 for (int h = 0; h < hands; ++h)
                 {
-                    snapshot.hands[h].StructSize = sizeof(FrustaWorldHand);
+                    snapshot.hands[h].struct_size = sizeof(FrustaWorldHand);
                     fixed (FrustaWorldHand* p = &snapshot.hands[h])
                         Errors.Check(Native.frusta_world_get_hand(id, h, p), "frusta_world_get_hand");
                     int count;
