@@ -44,8 +44,11 @@
 
 /* ---------------------------------------------------------------- version */
 
+/** This header's version, major.minor.patch: the major part. */
 #define FRUSTA_VERSION_MAJOR 0
+/** The minor part. */
 #define FRUSTA_VERSION_MINOR 3
+/** The patch part. */
 #define FRUSTA_VERSION_PATCH 0
 /** major*1000000 + minor*1000 + patch; frusta_version() returns the library's. */
 #define FRUSTA_VERSION \
@@ -60,8 +63,9 @@ FRUSTA_API int32_t frusta_abi_version(void);
 
 /* ---------------------------------------------------------------- errors */
 
+/** What a call returns: FRUSTA_OK, or why it failed (frusta_last_error() says more). */
 typedef enum frusta_result {
-  FRUSTA_OK = 0,
+  FRUSTA_OK = 0,                     /* success */
   FRUSTA_ERROR_NULL_POINTER = 1,     /* a required pointer argument was null */
   FRUSTA_ERROR_STRUCT_SIZE = 2,      /* struct_size differs from this library's sizeof */
   FRUSTA_ERROR_DEF_NOT_DEFAULTED = 3,/* a def not obtained from frusta_default_*_def() */
@@ -71,7 +75,7 @@ typedef enum frusta_result {
   FRUSTA_ERROR_OUT_OF_RANGE = 7,     /* a finite value outside its documented range */
   FRUSTA_ERROR_CAPACITY = 8,         /* a caller buffer or an internal pool is too small */
   FRUSTA_ERROR_ABI_MISMATCH = 9,     /* header and library disagree; see frusta_check_abi() */
-  FRUSTA_ERROR_OUT_OF_MEMORY = 10,
+  FRUSTA_ERROR_OUT_OF_MEMORY = 10,   /* the library ran out of memory */
   FRUSTA_ERROR_INTERNAL = 11,        /* a bug: please report frusta_last_error() */
   FRUSTA_ERROR_IO = 12,              /* a file could not be opened, read or written */
   FRUSTA_ERROR_FILE_FORMAT = 13,     /* not a Frusta file, or a format version we cannot read */
@@ -111,14 +115,14 @@ typedef struct frusta_hand_id {
 
 /** A rigid pose: position in metres and a unit quaternion (x, y, z, w). */
 typedef struct frusta_pose {
-  double position[3];
-  double rotation[4];
+  double position[3];  /* metres */
+  double rotation[4];  /* unit quaternion (x, y, z, w) */
 } frusta_pose;
 
 /** A sphere: centre in metres and radius in metres (>= 0). */
 typedef struct frusta_sphere {
-  double center[3];
-  double radius;
+  double center[3];  /* metres */
+  double radius;     /* metres, >= 0 */
 } frusta_sphere;
 
 /** One frustum segment of a finger with its end balls. The proximal end D carries
@@ -133,20 +137,29 @@ typedef struct frusta_segment {
 
 /* ---------------------------------------------------------------- hand */
 
-typedef enum frusta_hand_side { FRUSTA_HAND_RIGHT = 0, FRUSTA_HAND_LEFT = 1 } frusta_hand_side;
+/** Which hand; a left hand mirrors a right one through the hand frame's x-z plane. */
+typedef enum frusta_hand_side {
+  FRUSTA_HAND_RIGHT = 0, /* a right hand (the default) */
+  FRUSTA_HAND_LEFT = 1   /* a left hand */
+} frusta_hand_side;
+/** A finger, thumb first; it indexes every per-finger array. */
 typedef enum frusta_finger {
-  FRUSTA_FINGER_THUMB = 0,
-  FRUSTA_FINGER_INDEX = 1,
-  FRUSTA_FINGER_MIDDLE = 2,
-  FRUSTA_FINGER_RING = 3,
-  FRUSTA_FINGER_LITTLE = 4
+  FRUSTA_FINGER_THUMB = 0,  /* its first segment is the metacarpal */
+  FRUSTA_FINGER_INDEX = 1,  /* the index finger */
+  FRUSTA_FINGER_MIDDLE = 2, /* the middle finger */
+  FRUSTA_FINGER_RING = 3,   /* the ring finger */
+  FRUSTA_FINGER_LITTLE = 4  /* the little finger */
 } frusta_finger;
 
+/** Fingers per hand, thumb first (frusta_finger). */
 #define FRUSTA_FINGER_COUNT 5
+/** Segments per finger, proximal to distal. */
 #define FRUSTA_SEGMENTS_PER_FINGER 3
 /** Per finger: abduction, then flexion of the first, second and third joint. */
 #define FRUSTA_JOINTS_PER_FINGER 4
+/** Segments per hand, finger-major. */
 #define FRUSTA_HAND_SEGMENT_COUNT (FRUSTA_FINGER_COUNT * FRUSTA_SEGMENTS_PER_FINGER)
+/** Joint angles per hand, finger-major. */
 #define FRUSTA_HAND_JOINT_COUNT (FRUSTA_FINGER_COUNT * FRUSTA_JOINTS_PER_FINGER)
 /** The largest |joint angle| any input may carry, radians (4 pi): beyond it a reading
  *  is corrupt and refused; within it, angles beyond the hand's limits are clamped. */
@@ -331,17 +344,17 @@ typedef struct frusta_bake_def {
 /** What a tree holds and how well it fits the mesh it was baked from. */
 typedef struct frusta_sphere_tree_info {
   int32_t struct_size;       /* sizeof(frusta_sphere_tree_info); set it before the call */
-  int32_t branching;
+  int32_t branching;         /* children per node */
   int32_t depth;             /* levels below the root */
-  int32_t leaf_count;
-  int32_t node_count;
+  int32_t leaf_count;        /* leaf spheres */
+  int32_t node_count;        /* all nodes, leaves included */
   int32_t triangle_count;    /* of the baked mesh */
   double bounds_min[3];      /* metres, of the leaves, object frame */
-  double bounds_max[3];
+  double bounds_max[3];      /* metres, the upper corner */
   double target_error;       /* metres, as baked */
   double uncovered_error;    /* metres: largest distance from the surface to the leaves */
   double protruding_error;   /* metres: largest height of the leaves above the surface */
-  double bake_seconds;
+  double bake_seconds;       /* how long the bake took */
   int64_t error_samples;     /* points behind each figure */
   int32_t target_met;        /* 1 if both figures are within target_error */
   int32_t reserved0;         /* explicit padding */
@@ -350,8 +363,8 @@ typedef struct frusta_sphere_tree_info {
 /** One node a tree query found: a leaf (leaf >= 0), or with max_level an inner node
  *  standing in for its subtree (leaf = -1). */
 typedef struct frusta_tree_hit {
-  int32_t node;
-  int32_t leaf;
+  int32_t node;          /* the node's index in the tree */
+  int32_t leaf;          /* the leaf's stable number, or -1 for an inner node */
   frusta_sphere sphere;  /* world frame (through the pose given to the query) */
 } frusta_tree_hit;
 
@@ -496,7 +509,7 @@ typedef struct frusta_object_def {
 /** What frusta_world_read latches: the newest step's summary. */
 typedef struct frusta_world_state {
   int32_t struct_size;          /* sizeof(frusta_world_state); set it before the call */
-  int32_t hand_count;
+  int32_t hand_count;           /* hands in the world */
   uint64_t step;                /* steps so far; 0 before the first */
   double time;                  /* seconds: steps times 1/rate_hz */
   double step_us;               /* this step's time, microseconds */
@@ -518,7 +531,7 @@ typedef struct frusta_world_hand {
   frusta_pose graphic_palm;     /* the displayed hand: palm pose */
   double graphic_angles[FRUSTA_HAND_JOINT_COUNT]; /* and joint angles, radians */
   frusta_pose haptic_palm;      /* the input the step used */
-  double haptic_angles[FRUSTA_HAND_JOINT_COUNT];
+  double haptic_angles[FRUSTA_HAND_JOINT_COUNT]; /* and its joint angles, radians */
   int32_t contact_count;        /* all contacts, even beyond max_contacts_per_hand */
   int32_t pressing;             /* contacts whose haptic point lies inside */
   int32_t slipping;             /* pressing contacts sliding (friction at mu |F|) */
@@ -538,7 +551,7 @@ typedef struct frusta_world_hand {
 
 /** One contact of a hand and the force on the hand there. World frame. */
 typedef struct frusta_world_contact {
-  frusta_object_id object;
+  frusta_object_id object;      /* the object touched */
   int32_t body;                 /* finger * 3 + segment, or 15 for the palm */
   int32_t leaf;                 /* the object's leaf, or -1 for an inner node */
   int32_t slipping;             /* 1: friction at mu |F| */
@@ -674,17 +687,18 @@ typedef enum frusta_device_output {
   FRUSTA_DEVICE_OUTPUT_JOINT_TORQUE = 4       /* a torque per finger joint */
 } frusta_device_output;
 
+/** Whether a glove is connected (frusta_device_status.state). */
 typedef enum frusta_device_state {
-  FRUSTA_DEVICE_CONNECTED = 1,
+  FRUSTA_DEVICE_CONNECTED = 1,    /* open, and its stream is up */
   FRUSTA_DEVICE_DISCONNECTED = 2, /* retrying every reconnect_interval_s */
-  FRUSTA_DEVICE_CLOSED = 3
+  FRUSTA_DEVICE_CLOSED = 3        /* closed (frusta_device_close, or its world destroyed) */
 } frusta_device_state;
 
 /** Why the glove's output is held at zero now (frusta_device_status.watchdog). */
 typedef enum frusta_watchdog_reason {
-  FRUSTA_WATCHDOG_NONE = 0,
+  FRUSTA_WATCHDOG_NONE = 0,           /* not held: the glove renders the world's outputs */
   FRUSTA_WATCHDOG_INPUT_STALLED = 1,  /* no valid sample for watchdog_s (or none yet) */
-  FRUSTA_WATCHDOG_DISCONNECTED = 2,
+  FRUSTA_WATCHDOG_DISCONNECTED = 2,   /* the glove is disconnected */
   FRUSTA_WATCHDOG_ENGINE_STALLED = 3, /* the world has not stepped for engine_timeout_s */
   FRUSTA_WATCHDOG_HOST_STALLED = 4    /* no frusta_world_read for host_timeout_s */
 } frusta_watchdog_reason;
@@ -736,10 +750,10 @@ typedef struct frusta_device_status {
   int64_t frames_truncated;      /* cut short: dropped */
   int64_t frames_out_of_range;   /* well formed, impossible values: dropped */
   int64_t samples_rejected;      /* decoded, but NaN or beyond any joint: dropped */
-  int64_t commands_sent;
+  int64_t commands_sent;         /* commands written to the glove */
   int64_t commands_dropped;      /* the glove did not drain its input in time */
-  int64_t reconnects;
-  int64_t disconnects;
+  int64_t reconnects;            /* times the glove came back */
+  int64_t disconnects;           /* times it went away */
   int64_t watchdog_trips;        /* times the output was forced to zero */
   double input_rate_hz;          /* measured */
   double output_rate_hz;         /* in use */
@@ -751,6 +765,7 @@ typedef struct frusta_device_status {
   double fingertip_force[FRUSTA_FINGER_COUNT][3]; /* newtons, palm frame */
 } frusta_device_status;
 
+/** What frusta_enumerate_devices found (frusta_device_info.kind). */
 typedef enum frusta_device_kind {
   FRUSTA_DEVICE_KIND_SERIAL = 1, /* a serial port: open as opengloves: or serial: */
   FRUSTA_DEVICE_KIND_HID = 2,    /* a vendor-defined HID device: hid: */
@@ -762,7 +777,7 @@ typedef struct frusta_device_info {
   int32_t struct_size;           /* sizeof(frusta_device_info) */
   int32_t kind;                  /* frusta_device_kind */
   int32_t vendor_id;             /* USB/HID ids; -1 when unknown */
-  int32_t product_id;
+  int32_t product_id;            /* -1 when unknown */
   uint8_t uri[256];              /* UTF-8, NUL-terminated: a URI to open (serial ports
                                     as serial:PATH; use opengloves:PATH for those) */
 } frusta_device_info;

@@ -5,10 +5,10 @@ using System;
 
 namespace Frusta.Binding
 {
-    /// <summary><c>frusta_result</c></summary>
+    /// <summary>What a call returns: FRUSTA_OK, or why it failed (frusta_last_error() says more).</summary>
     public enum FrustaResult
     {
-        /// <summary><c>FRUSTA_OK</c></summary>
+        /// <summary>success</summary>
         Ok = 0,
         /// <summary>a required pointer argument was null</summary>
         NullPointer = 1,
@@ -28,7 +28,7 @@ namespace Frusta.Binding
         Capacity = 8,
         /// <summary>header and library disagree; see frusta_check_abi()</summary>
         AbiMismatch = 9,
-        /// <summary><c>FRUSTA_ERROR_OUT_OF_MEMORY</c></summary>
+        /// <summary>the library ran out of memory</summary>
         OutOfMemory = 10,
         /// <summary>a bug: please report frusta_last_error()</summary>
         Internal = 11,
@@ -44,27 +44,27 @@ namespace Frusta.Binding
         Unavailable = 16,
     }
 
-    /// <summary><c>frusta_hand_side</c></summary>
+    /// <summary>Which hand; a left hand mirrors a right one through the hand frame's x-z plane.</summary>
     public enum FrustaHandSide
     {
-        /// <summary><c>FRUSTA_HAND_RIGHT</c></summary>
+        /// <summary>a right hand (the default)</summary>
         Right = 0,
-        /// <summary><c>FRUSTA_HAND_LEFT</c></summary>
+        /// <summary>a left hand</summary>
         Left = 1,
     }
 
-    /// <summary><c>frusta_finger</c></summary>
+    /// <summary>A finger, thumb first; it indexes every per-finger array.</summary>
     public enum FrustaFinger
     {
-        /// <summary><c>FRUSTA_FINGER_THUMB</c></summary>
+        /// <summary>its first segment is the metacarpal</summary>
         Thumb = 0,
-        /// <summary><c>FRUSTA_FINGER_INDEX</c></summary>
+        /// <summary>the index finger</summary>
         Index = 1,
-        /// <summary><c>FRUSTA_FINGER_MIDDLE</c></summary>
+        /// <summary>the middle finger</summary>
         Middle = 2,
-        /// <summary><c>FRUSTA_FINGER_RING</c></summary>
+        /// <summary>the ring finger</summary>
         Ring = 3,
-        /// <summary><c>FRUSTA_FINGER_LITTLE</c></summary>
+        /// <summary>the little finger</summary>
         Little = 4,
     }
 
@@ -100,25 +100,25 @@ namespace Frusta.Binding
         JointTorque = 4,
     }
 
-    /// <summary><c>frusta_device_state</c></summary>
+    /// <summary>Whether a glove is connected (frusta_device_status.state).</summary>
     public enum FrustaDeviceState
     {
-        /// <summary><c>FRUSTA_DEVICE_CONNECTED</c></summary>
+        /// <summary>open, and its stream is up</summary>
         Connected = 1,
         /// <summary>retrying every reconnect_interval_s</summary>
         Disconnected = 2,
-        /// <summary><c>FRUSTA_DEVICE_CLOSED</c></summary>
+        /// <summary>closed (frusta_device_close, or its world destroyed)</summary>
         Closed = 3,
     }
 
     /// <summary>Why the glove's output is held at zero now (frusta_device_status.watchdog).</summary>
     public enum FrustaWatchdogReason
     {
-        /// <summary><c>FRUSTA_WATCHDOG_NONE</c></summary>
+        /// <summary>not held: the glove renders the world's outputs</summary>
         None = 0,
         /// <summary>no valid sample for watchdog_s (or none yet)</summary>
         InputStalled = 1,
-        /// <summary><c>FRUSTA_WATCHDOG_DISCONNECTED</c></summary>
+        /// <summary>the glove is disconnected</summary>
         Disconnected = 2,
         /// <summary>the world has not stepped for engine_timeout_s</summary>
         EngineStalled = 3,
@@ -126,7 +126,7 @@ namespace Frusta.Binding
         HostStalled = 4,
     }
 
-    /// <summary><c>frusta_device_kind</c></summary>
+    /// <summary>What frusta_enumerate_devices found (frusta_device_info.kind).</summary>
     public enum FrustaDeviceKind
     {
         /// <summary>a serial port: open as opengloves: or serial:</summary>
@@ -140,25 +140,25 @@ namespace Frusta.Binding
     /// <summary>The header's constants (<c>FRUSTA_*</c>).</summary>
     public static partial class FrustaConstants
     {
-        /// <summary><c>FRUSTA_VERSION_MAJOR</c></summary>
+        /// <summary>This header's version, major.minor.patch: the major part.</summary>
         public const int VersionMajor = 0;
-        /// <summary><c>FRUSTA_VERSION_MINOR</c></summary>
+        /// <summary>The minor part.</summary>
         public const int VersionMinor = 3;
-        /// <summary><c>FRUSTA_VERSION_PATCH</c></summary>
+        /// <summary>The patch part.</summary>
         public const int VersionPatch = 0;
         /// <summary>major*1000000 + minor*1000 + patch; frusta_version() returns the library's.</summary>
         public const int Version = VersionMajor * 1000000 + VersionMinor * 1000 + VersionPatch;
         /// <summary>Bumped whenever a struct layout or a signature changes; see frusta_check_abi().</summary>
         public const int AbiVersion = 2;
-        /// <summary><c>FRUSTA_FINGER_COUNT</c></summary>
+        /// <summary>Fingers per hand, thumb first (frusta_finger).</summary>
         public const int FingerCount = 5;
-        /// <summary><c>FRUSTA_SEGMENTS_PER_FINGER</c></summary>
+        /// <summary>Segments per finger, proximal to distal.</summary>
         public const int SegmentsPerFinger = 3;
         /// <summary>Per finger: abduction, then flexion of the first, second and third joint.</summary>
         public const int JointsPerFinger = 4;
-        /// <summary><c>FRUSTA_HAND_SEGMENT_COUNT</c></summary>
+        /// <summary>Segments per hand, finger-major.</summary>
         public const int HandSegmentCount = FingerCount * SegmentsPerFinger;
-        /// <summary><c>FRUSTA_HAND_JOINT_COUNT</c></summary>
+        /// <summary>Joint angles per hand, finger-major.</summary>
         public const int HandJointCount = FingerCount * JointsPerFinger;
         /// <summary>
         /// The largest |joint angle| any input may carry, radians (4 pi): beyond it a reading

@@ -9,9 +9,9 @@ namespace Frusta.Binding
     [StructLayout(LayoutKind.Sequential)]
     public partial struct FrustaPose
     {
-        /// <summary><c>frusta_pose.position</c></summary>
+        /// <summary>metres</summary>
         public Vector3d Position;
-        /// <summary><c>frusta_pose.rotation</c></summary>
+        /// <summary>unit quaternion (x, y, z, w)</summary>
         public Quaterniond Rotation;
     }
 
@@ -19,9 +19,9 @@ namespace Frusta.Binding
     [StructLayout(LayoutKind.Sequential)]
     public partial struct FrustaSphere
     {
-        /// <summary><c>frusta_sphere.center</c></summary>
+        /// <summary>metres</summary>
         public Vector3d Center;
-        /// <summary><c>frusta_sphere.radius</c></summary>
+        /// <summary>metres, &gt;= 0</summary>
         public double Radius;
     }
 
@@ -195,19 +195,19 @@ namespace Frusta.Binding
     {
         /// <summary>sizeof(frusta_sphere_tree_info); set it before the call</summary>
         internal int struct_size;
-        /// <summary><c>frusta_sphere_tree_info.branching</c></summary>
+        /// <summary>children per node</summary>
         public int Branching;
         /// <summary>levels below the root</summary>
         public int Depth;
-        /// <summary><c>frusta_sphere_tree_info.leaf_count</c></summary>
+        /// <summary>leaf spheres</summary>
         public int LeafCount;
-        /// <summary><c>frusta_sphere_tree_info.node_count</c></summary>
+        /// <summary>all nodes, leaves included</summary>
         public int NodeCount;
         /// <summary>of the baked mesh</summary>
         public int TriangleCount;
         /// <summary>metres, of the leaves, object frame</summary>
         public Vector3d BoundsMin;
-        /// <summary><c>frusta_sphere_tree_info.bounds_max</c></summary>
+        /// <summary>metres, the upper corner</summary>
         public Vector3d BoundsMax;
         /// <summary>metres, as baked</summary>
         public double TargetError;
@@ -215,7 +215,7 @@ namespace Frusta.Binding
         public double UncoveredError;
         /// <summary>metres: largest height of the leaves above the surface</summary>
         public double ProtrudingError;
-        /// <summary><c>frusta_sphere_tree_info.bake_seconds</c></summary>
+        /// <summary>how long the bake took</summary>
         public double BakeSeconds;
         /// <summary>points behind each figure</summary>
         public long ErrorSamples;
@@ -232,9 +232,9 @@ namespace Frusta.Binding
     [StructLayout(LayoutKind.Sequential)]
     public partial struct FrustaTreeHit
     {
-        /// <summary><c>frusta_tree_hit.node</c></summary>
+        /// <summary>the node's index in the tree</summary>
         public int Node;
-        /// <summary><c>frusta_tree_hit.leaf</c></summary>
+        /// <summary>the leaf's stable number, or -1 for an inner node</summary>
         public int Leaf;
         /// <summary>world frame (through the pose given to the query)</summary>
         public FrustaSphere Sphere;
@@ -370,7 +370,7 @@ namespace Frusta.Binding
     {
         /// <summary>sizeof(frusta_world_state); set it before the call</summary>
         internal int struct_size;
-        /// <summary><c>frusta_world_state.hand_count</c></summary>
+        /// <summary>hands in the world</summary>
         public int HandCount;
         /// <summary>steps so far; 0 before the first</summary>
         public ulong Step;
@@ -420,7 +420,7 @@ namespace Frusta.Binding
         internal fixed double graphic_angles[FrustaConstants.HandJointCount];
         /// <summary>the input the step used</summary>
         public FrustaPose HapticPalm;
-        /// <summary><c>frusta_world_hand.haptic_angles</c></summary>
+        /// <summary>and its joint angles, radians</summary>
         internal fixed double haptic_angles[FrustaConstants.HandJointCount];
         /// <summary>all contacts, even beyond max_contacts_per_hand</summary>
         public int ContactCount;
@@ -460,7 +460,7 @@ namespace Frusta.Binding
     [StructLayout(LayoutKind.Sequential)]
     public partial struct FrustaWorldContact
     {
-        /// <summary><c>frusta_world_contact.object</c></summary>
+        /// <summary>the object touched</summary>
         public FrustaObjectId Object;
         /// <summary>finger * 3 + segment, or 15 for the palm</summary>
         public int Body;
@@ -600,13 +600,13 @@ namespace Frusta.Binding
         public long FramesOutOfRange;
         /// <summary>decoded, but NaN or beyond any joint: dropped</summary>
         public long SamplesRejected;
-        /// <summary><c>frusta_device_status.commands_sent</c></summary>
+        /// <summary>commands written to the glove</summary>
         public long CommandsSent;
         /// <summary>the glove did not drain its input in time</summary>
         public long CommandsDropped;
-        /// <summary><c>frusta_device_status.reconnects</c></summary>
+        /// <summary>times the glove came back</summary>
         public long Reconnects;
-        /// <summary><c>frusta_device_status.disconnects</c></summary>
+        /// <summary>times it went away</summary>
         public long Disconnects;
         /// <summary>times the output was forced to zero</summary>
         public long WatchdogTrips;
@@ -638,7 +638,7 @@ namespace Frusta.Binding
         public FrustaDeviceKind Kind;
         /// <summary>USB/HID ids; -1 when unknown</summary>
         public int VendorId;
-        /// <summary><c>frusta_device_info.product_id</c></summary>
+        /// <summary>-1 when unknown</summary>
         public int ProductId;
         /// <summary>
         /// UTF-8, NUL-terminated: a URI to open (serial ports
