@@ -824,7 +824,10 @@ def main():
             os.remove(os.path.join(args.out, name))
     for name, text in files.items():
         path = os.path.join(args.out, name)
-        old = open(path, encoding="utf-8").read() if os.path.exists(path) else ""
+        old = ""
+        if os.path.exists(path):
+            with open(path, encoding="utf-8") as f:
+                old = f.read()
         if old == text:
             continue
         stale.append(name)
