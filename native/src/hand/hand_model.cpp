@@ -65,8 +65,9 @@ frusta_result check_hand_def(const frusta_hand_def& def) {
   if (frusta_result r = check_part(def.palm_length, "hand_def.palm_length")) return r;
   if (frusta_result r = check_part(def.palm_breadth, "hand_def.palm_breadth")) return r;
   if (frusta_result r = check_part(def.palm_thickness, "hand_def.palm_thickness")) return r;
-  const double r = 0.5 * def.palm_thickness;
-  const double spheres = palm_grid(def.palm_length, r) * palm_grid(def.palm_breadth, r);
+  const double radius = 0.5 * def.palm_thickness;
+  const double spheres =
+      palm_grid(def.palm_length, radius) * palm_grid(def.palm_breadth, radius);
   if (spheres > kMaxPalmSpheres)
     return fail(FRUSTA_ERROR_OUT_OF_RANGE,
                 "hand_def.palm_thickness is %g m: a %g x %g m palm would take %.0f spheres of that "
