@@ -203,15 +203,15 @@ TEST(deviceLink, OpenGlovesGloveDrivesTheHandAndReadsBrakesBack) {
   SimulatedGlove glove(temp_path("glove"), 100.0, firmware.firmware());
   auto link = open_link(scene.world, glove.path());
 
-  // samples taken, and brake lines back: the hand is open, every brake released
+  // samples taken, and brake lines back: the hand is open, every brake released. An
+  // OpenGloves line carries no clock: its rate is its arrival's, which a loaded machine
+  // bends (RateMeter's tests check the measuring), and lines read in one go share an
+  // arrival, so here only that a rate comes once they have not all come at once
   DeviceLinkStatus open;
   ASSERT_TRUE(wait_status(*link, &scene.world, [&](const DeviceLinkStatus& s) {
-    return s.frames_ok >= 20 && last_brakes(glove)[0] >= 0;
+    return s.frames_ok >= 20 && s.input_rate_hz > 0.0 && last_brakes(glove)[0] >= 0;
   }, &open));
   EXPECT_EQ(open.state, LinkState::kConnected);
-  // an OpenGloves line carries no clock: its rate is its arrival's, which a loaded
-  // machine bends (RateMeter's tests check the measuring); here, that it is measured
-  EXPECT_GT(open.input_rate_hz, 0.0);
   EXPECT_DOUBLE_EQ(open.output_rate_hz, 100.0);  // OpenGloves' line rate, under the world's
   EXPECT_EQ(last_brakes(glove), (std::array<int32_t, 5>{0, 0, 0, 0, 0}));
   EXPECT_NEAR(index_flexion(scene.world), 0.0, 1e-12);
@@ -282,29 +282,35 @@ TEST(deviceLink, BinaryProfileGloveHandshakesDrivesTheHandAndReadsCommandsBack) 
   DeviceLinkStatus pressing;
   ASSERT_TRUE(wait_status(*link, &scene.world, braking, &pressing));
 
-  // every command it read: in sequence, the blocks it renders (once it has said which),
-  // under its limits (plus each component's rounding to the wire's 0.01 N), and only
-  // the index's
+  // every command it read: the blocks it renders (once it has said which), under its
+  // limits (plus each component's rounding to the wire's 0.01 N), only the index's, and
+  // in sequence but for those the link dropped: a glove thread that a loaded machine
+  // leaves unscheduled stops draining its line, and the link drops a command rather
+  // than wait (counted; what part of one went out is a bad frame to the glove, which
+  // frusta_protocol_test shows the reader skips)
   const auto commands = firmware.commands();
   const double force_limit = 4.0 + std::sqrt(3.0) * 0.5 * binary_profile::kForceUnit;
   bool announced = false;
-  size_t faults = 0;
+  size_t bad = 0;
+  int64_t skipped = 0;
   for (size_t i = 0; i < commands.size(); ++i) {
     const binary_profile::Command& c = commands[i].command;
     announced |= c.outputs == caps.outputs;
+    const uint16_t step = i == 0 ? 1 : static_cast<uint16_t>(c.sequence - commands[i - 1].command.sequence);
+    skipped += step - 1;
     bool ok = c.outputs == (announced ? caps.outputs : kOutputFingerResistance) &&
               c.command.finger_resistance[kIndex] <= 6.0 &&
-              glm::length(c.command.fingertip_force[kIndex]) <= force_limit &&
-              (i == 0 || static_cast<uint16_t>(c.sequence - commands[i - 1].command.sequence) == 1);
+              glm::length(c.command.fingertip_force[kIndex]) <= force_limit && step >= 1;
     for (int f : {0, 2, 3, 4})
       ok &= c.command.finger_resistance[f] == 0.0 && glm::length(c.command.fingertip_force[f]) == 0.0;
-    if (!ok && faults++ == 0) ADD_FAILURE() << "command " << i << " of " << commands.size();
+    if (!ok && bad++ == 0) ADD_FAILURE() << "command " << i << " of " << commands.size();
   }
-  EXPECT_EQ(faults, 0u);
+  EXPECT_EQ(bad, 0u);
   EXPECT_TRUE(announced);
-  EXPECT_EQ(pressing.commands_dropped, 0);
-  EXPECT_EQ(firmware.faults(), 0);
+  const DeviceLinkStatus after = link->status();  // counts at least those the glove missed
+  EXPECT_LE(skipped, after.commands_dropped);
   EXPECT_EQ(firmware.hellos_after_heartbeat(), 0);
+  EXPECT_EQ(pressing.frames_corrupt + pressing.frames_truncated + pressing.frames_out_of_range, 0);
 }
 
 TEST(deviceLink, UnplugZeroesAndReplugResumesFromZeroAtTheRiseRate) {
@@ -346,14 +352,17 @@ TEST(deviceLink, UnplugZeroesAndReplugResumesFromZeroAtTheRiseRate) {
   const GloveCalibration calibration = default_glove_calibration();
   const double units_per_newton = calibration.brake_units / calibration.brake_full_scale;
   std::string pending;
-  int lines = 0;
+  int lines = 0, broken = 0;  // broken: a command the link dropped part of (counted)
   for (const SimulatedGlove::Chunk& chunk : glove.chunks()) {
     pending += chunk.bytes;
     for (size_t end = pending.find('\n'); end != std::string::npos; end = pending.find('\n')) {
       const std::string line = pending.substr(0, end);
       pending.erase(0, end + 1);
       std::array<int32_t, 5> units{};
-      ASSERT_TRUE(decode_alpha_brakes(line, &units)) << line;
+      if (!decode_alpha_brakes(line, &units)) {
+        ++broken;
+        continue;
+      }
       const double since_s = static_cast<double>(chunk.time_ns - plugged_ns) / 1e9;
       EXPECT_LE(units[kIndex], def.rates.max_force_rate * since_s * units_per_newton + 0.5)
           << line << ", read " << since_s * 1e3 << " ms after the plug-in";
@@ -361,6 +370,7 @@ TEST(deviceLink, UnplugZeroesAndReplugResumesFromZeroAtTheRiseRate) {
     }
   }
   EXPECT_GT(lines, 0);
+  EXPECT_LE(broken, link->status().commands_dropped);
 }
 
 TEST(deviceLink, CorruptAndTruncatedFramesAreCountedAndDropped) {
