@@ -17,10 +17,13 @@ add_link_options(-fsanitize=address,undefined)
 # parsing happens. Build it here from its header instead (as its README.Debian allows,
 # with the same nlohmann-json and stb), under the name the loader links, so that
 # find_package(TinyGLTF) in tools/bake takes this one.
-find_path(FRUSTA_STB_INCLUDE stb_image.h PATH_SUFFIXES stb REQUIRED)
-find_library(FRUSTA_STB_LIBRARY stb REQUIRED)
-find_package(nlohmann_json 3 CONFIG REQUIRED)
-add_library(frusta_fuzz_tinygltf STATIC ${CMAKE_CURRENT_LIST_DIR}/tinygltf_impl.cpp)
-target_include_directories(frusta_fuzz_tinygltf SYSTEM PRIVATE ${FRUSTA_STB_INCLUDE})
-target_link_libraries(frusta_fuzz_tinygltf PUBLIC nlohmann_json::nlohmann_json ${FRUSTA_STB_LIBRARY})
-add_library(TinyGLTF::TinyGLTF ALIAS frusta_fuzz_tinygltf)
+if(FRUSTA_BUILD_TOOLS)
+  find_path(FRUSTA_STB_INCLUDE stb_image.h PATH_SUFFIXES stb REQUIRED)
+  find_library(FRUSTA_STB_LIBRARY stb REQUIRED)
+  find_package(nlohmann_json 3 CONFIG REQUIRED)
+  add_library(frusta_fuzz_tinygltf STATIC ${CMAKE_CURRENT_LIST_DIR}/tinygltf_impl.cpp)
+  target_include_directories(frusta_fuzz_tinygltf SYSTEM PRIVATE ${FRUSTA_STB_INCLUDE})
+  target_link_libraries(frusta_fuzz_tinygltf PUBLIC nlohmann_json::nlohmann_json
+                                                    ${FRUSTA_STB_LIBRARY})
+  add_library(TinyGLTF::TinyGLTF ALIAS frusta_fuzz_tinygltf)
+endif()
