@@ -14,9 +14,11 @@
 // seed's URI names a file that exists. gltf.dict names them all.
 #include <dlfcn.h>
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdarg>
 #include <cstddef>
 #include <cstdint>
@@ -37,9 +39,10 @@ std::string g_root;    // private, canonical; holds outside.bin
 std::string g_folder;  // g_root + "/in": the input's folder
 bool g_watching = false;
 
-// an open that succeeded while the loader ran: where did it land?
-void check_opened(int fd, const char* asked) {
-  if (!g_watching || fd < 0) return;
+// an open for reading that succeeded while the loader ran: where did it land? (Opens
+// for writing are libFuzzer's own, saving the input after a crash in the loader.)
+void check_opened(int fd, const char* asked, int flags) {
+  if (!g_watching || fd < 0 || (flags & O_ACCMODE) != O_RDONLY) return;
   char link[64], target[4096];
   std::snprintf(link, sizeof link, "/proc/self/fd/%d", fd);
   const ssize_t n = readlink(link, target, sizeof target - 1);
@@ -52,6 +55,7 @@ void check_opened(int fd, const char* asked) {
                "==gltf_loader_fuzz== the loader opened %s (as \"%s\"), outside the input's "
                "folder %s\n",
                target, asked, g_folder.c_str());
+  g_watching = false;
   std::abort();
 }
 
@@ -66,6 +70,7 @@ void check_blocking(int dir, const char* path, int flags) {
                "==gltf_loader_fuzz== the loader opens the FIFO \"%s\" blocking: it "
                "hangs until something writes to it\n",
                path);
+  g_watching = false;
   std::abort();
 }
 
@@ -119,9 +124,25 @@ void remove_root() {
   std::filesystem::remove_all(g_root, ignored);
 }
 
+// A run that crashed never removed its folder: remove those whose process is gone.
+void remove_stale_folders(const std::filesystem::path& temp) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  for (const fs::directory_entry& e : fs::directory_iterator(temp, error)) {
+    const std::string name = e.path().filename().string();
+    const std::string prefix = "frusta-gltf-fuzz.";
+    if (name.compare(0, prefix.size(), prefix) != 0) continue;
+    const long pid = std::strtol(name.c_str() + prefix.size(), nullptr, 10);
+    if (pid > 0 && kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH)
+      fs::remove_all(e.path(), error);
+  }
+}
+
 void make_folder() {
   namespace fs = std::filesystem;
-  std::string pattern = fs::temp_directory_path().string() + "/frusta-gltf-fuzz.XXXXXX";
+  remove_stale_folders(fs::temp_directory_path());
+  std::string pattern = fs::temp_directory_path().string() + "/frusta-gltf-fuzz." +
+                        std::to_string(getpid()) + ".XXXXXX";
   if (!mkdtemp(pattern.data())) std::abort();
   g_root = fs::canonical(pattern).string();
   g_folder = g_root + "/in";
@@ -142,6 +163,11 @@ void make_folder() {
   std::atexit(remove_root);
 }
 
+// what matters here of an fopen mode: reading only, or not
+int fopen_flags(const char* mode) {
+  return mode[0] == 'r' && !std::strchr(mode, '+') ? O_RDONLY : O_RDWR;
+}
+
 // open's mode argument is there only when the flags create a file
 mode_t open_mode(int flags, va_list args) {
   return (flags & (O_CREAT | O_TMPFILE)) ? static_cast<mode_t>(va_arg(args, unsigned int)) : 0;
@@ -154,17 +180,19 @@ mode_t open_mode(int flags, va_list args) {
 // interceptors, which are weak.
 extern "C" FILE* fopen(const char* path, const char* mode) {
   static const auto next = real<FILE* (*)(const char*, const char*)>("fopen");
-  check_blocking(AT_FDCWD, path, mode[0] == 'r' && !std::strchr(mode, '+') ? O_RDONLY : O_RDWR);
+  const int flags = fopen_flags(mode);
+  check_blocking(AT_FDCWD, path, flags);
   FILE* f = next(path, mode);
-  if (f) check_opened(fileno(f), path);
+  if (f) check_opened(fileno(f), path, flags);
   return f;
 }
 
 extern "C" FILE* fopen64(const char* path, const char* mode) {
   static const auto next = real<FILE* (*)(const char*, const char*)>("fopen64");
-  check_blocking(AT_FDCWD, path, mode[0] == 'r' && !std::strchr(mode, '+') ? O_RDONLY : O_RDWR);
+  const int flags = fopen_flags(mode);
+  check_blocking(AT_FDCWD, path, flags);
   FILE* f = next(path, mode);
-  if (f) check_opened(fileno(f), path);
+  if (f) check_opened(fileno(f), path, flags);
   return f;
 }
 
@@ -176,7 +204,7 @@ extern "C" int open(const char* path, int flags, ...) {
   va_end(args);
   check_blocking(AT_FDCWD, path, flags);
   const int fd = next(path, flags, mode);
-  check_opened(fd, path);
+  check_opened(fd, path, flags);
   return fd;
 }
 
@@ -188,7 +216,7 @@ extern "C" int open64(const char* path, int flags, ...) {
   va_end(args);
   check_blocking(AT_FDCWD, path, flags);
   const int fd = next(path, flags, mode);
-  check_opened(fd, path);
+  check_opened(fd, path, flags);
   return fd;
 }
 
@@ -200,7 +228,7 @@ extern "C" int openat(int dir, const char* path, int flags, ...) {
   va_end(args);
   check_blocking(dir, path, flags);
   const int fd = next(dir, path, flags, mode);
-  check_opened(fd, path);
+  check_opened(fd, path, flags);
   return fd;
 }
 
@@ -212,7 +240,7 @@ extern "C" int openat64(int dir, const char* path, int flags, ...) {
   va_end(args);
   check_blocking(dir, path, flags);
   const int fd = next(dir, path, flags, mode);
-  check_opened(fd, path);
+  check_opened(fd, path, flags);
   return fd;
 }
 
