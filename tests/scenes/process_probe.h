@@ -37,7 +37,7 @@ inline int thread_count() {
 
 // Waits (at most `seconds`, which only turns a hang into a failure) for the thread count
 // to be `expected`: a joined thread leaves /proc/self/task a moment after join returns.
-inline bool thread_count_becomes(int expected, double seconds = 20.0) {
+inline bool thread_count_becomes(int expected, double seconds = 120.0) {
   const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
   while (thread_count() != expected) {
     if (std::chrono::steady_clock::now() > end) return false;
@@ -80,7 +80,7 @@ inline int64_t resident_bytes(pid_t pid) {
 // `memory_cap` bytes, is killed: a call that hangs or reads without end fails the test
 // instead of hanging it or exhausting the machine. Fork from a test with no other
 // threads running.
-inline ChildOutcome run_in_child(const std::function<int(std::string*)>& call, double deadline_s = 30.0,
+inline ChildOutcome run_in_child(const std::function<int(std::string*)>& call, double deadline_s = 60.0,
                                  int64_t memory_cap = int64_t{256} << 20) {
   ChildOutcome outcome;
   int fds[2];

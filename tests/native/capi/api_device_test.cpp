@@ -27,7 +27,7 @@ using scenes::SimulatedGlove;
 using scenes::temp_path;
 using scenes::thread_count;
 using scenes::thread_count_becomes;
-constexpr double kPatience = 30.0;  // seconds: a wait's deadline, which only a hang reaches
+constexpr double kPatience = 120.0;  // seconds: a wait's deadline, which only a hang reaches
 
 SimulatedGlove::Firmware lucidgloves(int index_curl) {
   return [index_curl](int64_t) { return "A0B" + std::to_string(index_curl) + "C0D0E0\n"; };

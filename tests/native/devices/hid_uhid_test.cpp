@@ -131,7 +131,7 @@ TEST(hidStream, AVirtualHidGloveHandshakesAndReadsCommandsBack) {
   // the kernel adds the hidraw node in its own time: open once it is there (the
   // deadline only turns a hang into a failure)
   const auto until = [](const std::function<bool()>& done) {
-    const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+    const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(120);
     while (!done()) {
       if (std::chrono::steady_clock::now() > end) return false;
       std::this_thread::sleep_for(std::chrono::milliseconds(5));
