@@ -1,12 +1,41 @@
 // SPDX-License-Identifier: MIT
 // frusta-make-test-objects OUTDIR: bakes the test boxes (scenes/baked_objects.h) into
-// OUTDIR/<name>.frtree and writes OUTDIR/test_objects.json, each box's bake figures,
-// last: the build's mark that every file is there.
+// OUTDIR/<name>.frtree, writes OUTDIR/million_leaves.frtree (a generated plate, not
+// baked) and then OUTDIR/test_objects.json, each object's figures, last: the build's
+// mark that every file is there.
 #include <cstdio>
 #include <fstream>
+#include <random>
 #include <string>
 
+#include <glm/common.hpp>
+
 #include "scenes/baked_objects.h"
+#include "scenes/random_trees.h"
+#include "spheretree/tree_builder.h"
+
+namespace {
+
+// 10^6 leaves, 1 mm apart on a 1 x 1 m plate, for the hostile ABI test (a hand lies on
+// it); generated in about a second where baking as many would take minutes
+bool write_million_leaves(const std::string& path) {
+  std::mt19937_64 rng(16);
+  const std::vector<frusta::Sphere> leaves = frusta::testing::plate_leaves(rng, 1000, 1000, 0.001, 0.0008);
+  frusta::TreeFile file;
+  if (frusta::build_sphere_tree(leaves, frusta::TreeBuildOptions{}, &file.tree) != FRUSTA_OK)
+    return false;
+  file.bounds_min = frusta::vec3(1e30);
+  file.bounds_max = frusta::vec3(-1e30);
+  for (const frusta::Sphere& s : leaves) {
+    file.bounds_min = glm::min(file.bounds_min, s.center - s.radius);
+    file.bounds_max = glm::max(file.bounds_max, s.center + s.radius);
+  }
+  file.bake.max_leaves = static_cast<int64_t>(leaves.size());
+  file.bake.max_depth = file.tree.depth;
+  return frusta::save_tree_file(path, file) == FRUSTA_OK;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   if (argc != 2) {
@@ -32,6 +61,11 @@ int main(int argc, char** argv) {
                   file->tree.leaves.size(), file->bake.bake_seconds);
     json += std::string(json.size() > 2 ? ",\n" : "") + line;
   }
+  if (!write_million_leaves(dir + "/million_leaves.frtree")) {
+    std::fprintf(stderr, "frusta-make-test-objects: million_leaves: %s\n", frusta_last_error());
+    return 1;
+  }
+  json += ",\n  {\"name\": \"million_leaves\", \"leaves\": 1000000, \"generated\": true}";
   std::ofstream out(dir + "/test_objects.json");
   out << json << "\n]\n";
   if (!out) {
