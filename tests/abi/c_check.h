@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* The C tests' reporting: each check prints "ok   <what>" or "FAIL <what>" and counts
- * it; main prints the tally. Included by each C test (one translation unit each). */
+ * it; main prints the tally. Included by each C test (one translation unit each); the
+ * helpers are inline so a test that uses only some of them compiles without warnings. */
 #ifndef FRUSTA_TESTS_ABI_C_CHECK_H
 #define FRUSTA_TESTS_ABI_C_CHECK_H
 
@@ -43,7 +44,7 @@ static int contains(const char* haystack, const char* needle) {
 
 /* One check: the call returned `want`, and frusta_last_error() names `field` and
  * (unless null) `value`, the text %g or %d prints for the offending number. */
-static int expect_error(const char* what, frusta_result got, frusta_result want, const char* field,
+static inline int expect_error(const char* what, frusta_result got, frusta_result want, const char* field,
                         const char* value) {
   const char* message = frusta_last_error();
   const int ok = got == want && contains(message, field) && (!value || contains(message, value));
@@ -52,11 +53,11 @@ static int expect_error(const char* what, frusta_result got, frusta_result want,
                message ? message : "(null)");
 }
 
-static int expect_ok(const char* what, frusta_result got) {
+static inline int expect_ok(const char* what, frusta_result got) {
   return check(got == FRUSTA_OK, "%s -> %s%s%s", what, frusta_result_name(got),
                got == FRUSTA_OK ? "" : ": ", got == FRUSTA_OK ? "" : frusta_last_error());
 }
 
-static int near(double a, double b, double tolerance) { return fabs(a - b) <= tolerance; }
+static inline int near(double a, double b, double tolerance) { return fabs(a - b) <= tolerance; }
 
 #endif /* FRUSTA_TESTS_ABI_C_CHECK_H */
