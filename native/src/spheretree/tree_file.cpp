@@ -23,6 +23,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 
@@ -271,6 +272,16 @@ frusta_result save_tree_file(const std::string& path, const TreeFile& file) {
 }
 
 frusta_result load_tree_file(const std::string& path, TreeFile* out) {
+  // a regular file only: opening a FIFO waits for a writer for ever, and a directory
+  // or a device has no size to read (a directory once read as 2^63 - 1 bytes)
+  std::error_code error;
+  const std::filesystem::file_status status = std::filesystem::status(path, error);
+  if (error)
+    return fail(FRUSTA_ERROR_IO, "%s: cannot open it for reading (%s)", path.c_str(),
+                error.message().c_str());
+  if (!std::filesystem::is_regular_file(status))
+    return fail(FRUSTA_ERROR_IO, "%s: not a regular file (a directory, a device or a pipe)",
+                path.c_str());
   std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) return fail(FRUSTA_ERROR_IO, "%s: cannot open it for reading", path.c_str());
   const std::streamoff size = in.tellg();
