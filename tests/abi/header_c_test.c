@@ -673,8 +673,9 @@ static void test_hand_inputs(void) {
   expect_error("get_segments(capacity 14)",
                frusta_hand_get_segments(hand, segments, FRUSTA_HAND_SEGMENT_COUNT - 1, &count),
                FRUSTA_ERROR_CAPACITY, "14", "15");
+  /* a negative capacity is a wrong argument, as for every call with a capacity */
   expect_error("get_segments(capacity -1)", frusta_hand_get_segments(hand, segments, -1, &count),
-               FRUSTA_ERROR_CAPACITY, "capacity", NULL);
+               FRUSTA_ERROR_OUT_OF_RANGE, "capacity", NULL);
   check(memcmp(segments, segment_pattern, sizeof segments) == 0 && count == -7,
         "failed get_segments writes neither out nor out_count");
 

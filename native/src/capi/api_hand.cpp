@@ -19,7 +19,15 @@ namespace {
 constexpr double kDefaultHandLength = 0.19;   // metres, about the adult 50th percentile
 constexpr double kDefaultHandBreadth = 0.085;
 
+// A negative capacity is a wrong argument, not a small buffer: OUT_OF_RANGE, as every
+// other call with a capacity says
+frusta_result check_capacity(int32_t capacity) {
+  if (capacity >= 0) return FRUSTA_OK;
+  return fail(FRUSTA_ERROR_OUT_OF_RANGE, "capacity is %d, must be >= 0", capacity);
+}
+
 frusta_result check_output(int32_t capacity, int32_t needed, const char* what) {
+  if (frusta_result r = check_capacity(capacity)) return r;
   if (capacity >= needed) return FRUSTA_OK;
   return fail(FRUSTA_ERROR_CAPACITY, "capacity is %d but %s needs %d", capacity, what, needed);
 }
@@ -127,6 +135,7 @@ FRUSTA_API frusta_result frusta_hand_get_palm_spheres(frusta_hand_id hand, frust
   HandObject* h = nullptr;
   if (frusta_result r = hand_registry().find(hand, &h)) return r;
   if (frusta_result r = check_pointer(out_count, "out_count")) return r;
+  if (frusta_result r = check_capacity(capacity)) return r;
   const int32_t count = static_cast<int32_t>(h->model.palm_spheres.size());
   if (capacity == 0 && !out) {  // a size query
     *out_count = count;

@@ -78,6 +78,8 @@ FRUSTA_API frusta_result frusta_sphere_tree_get_leaves(frusta_tree_id tree, frus
   TreeObject* t = nullptr;
   if (frusta_result r = tree_registry().find(tree, &t)) return r;
   if (frusta_result r = check_pointer(out_count, "out_count")) return r;
+  if (capacity < 0)  // a wrong argument, not a small buffer (as in every call with a capacity)
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "capacity is %d, must be >= 0", capacity);
   const std::vector<Sphere>& leaves = t->file.tree.leaves;
   const int32_t count = static_cast<int32_t>(leaves.size());
   if (capacity == 0 && !out) {  // a size query
