@@ -211,8 +211,10 @@ FRUSTA_API frusta_hand_def frusta_default_hand_def(void);
 
 /** Refill def's geometry (segment lengths, joint radii, bases, palm) from a hand
  *  length and breadth with the anthropometric proportions documented in
- *  native/src/hand/anthropometry.cpp (each 0.01..5 m). Joint limits and side are
- *  kept. On error def is unchanged. Thread: any. */
+ *  native/src/hand/anthropometry.cpp (each 0.01..5 m). Sizes whose proportions give
+ *  a part outside the def's ranges (a hand of a few centimetres, or one far broader
+ *  than long) are refused with FRUSTA_ERROR_OUT_OF_RANGE naming both sizes and the
+ *  part. Joint limits and side are kept. On error def is unchanged. Thread: any. */
 FRUSTA_API frusta_result frusta_hand_def_set_size(frusta_hand_def* def, double hand_length,
                                                   double hand_breadth);
 

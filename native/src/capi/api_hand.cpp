@@ -2,6 +2,7 @@
 // C ABI: hands. Each function checks every input before it changes anything.
 #include <cmath>
 #include <cstring>
+#include <string>
 
 #include <glm/geometric.hpp>
 
@@ -54,7 +55,15 @@ FRUSTA_API frusta_result frusta_hand_def_set_size(frusta_hand_def* def, double h
     return r;
   frusta_hand_def sized = *def;
   fill_hand_geometry(sized, hand_length, hand_breadth);
-  if (frusta_result r = check_hand_def(sized)) return r;
+  if (frusta_result r = check_hand_def(sized)) {
+    // each size is in range, but together they make no hand (a 1 cm hand's fingertip
+    // segment is 30 um; one 5 m broad and 1 cm long has negative ones): name the
+    // arguments the caller gave, then the part at fault
+    const std::string part = last_error_message();
+    const size_t colon = part.find(": ");
+    return fail(r, "hand_length %g m and hand_breadth %g m give no valid hand: %s", hand_length,
+                hand_breadth, colon == std::string::npos ? part.c_str() : part.c_str() + colon + 2);
+  }
   *def = sized;
   return FRUSTA_OK;
 }

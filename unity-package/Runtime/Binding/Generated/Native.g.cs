@@ -53,8 +53,10 @@ namespace Frusta.Binding
         /// <summary>
         /// Refill def's geometry (segment lengths, joint radii, bases, palm) from a hand
         /// length and breadth with the anthropometric proportions documented in
-        /// native/src/hand/anthropometry.cpp (each 0.01..5 m). Joint limits and side are
-        /// kept. On error def is unchanged. Thread: any.
+        /// native/src/hand/anthropometry.cpp (each 0.01..5 m). Sizes whose proportions give
+        /// a part outside the def's ranges (a hand of a few centimetres, or one far broader
+        /// than long) are refused with FRUSTA_ERROR_OUT_OF_RANGE naming both sizes and the
+        /// part. Joint limits and side are kept. On error def is unchanged. Thread: any.
         /// </summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern FrustaResult frusta_hand_def_set_size(FrustaHandDef* def, double handLength, double handBreadth);
