@@ -709,20 +709,24 @@ typedef enum frusta_watchdog_reason {
 typedef struct frusta_device_def {
   int32_t struct_size;           /* sizeof(frusta_device_def) */
   int32_t hand;                  /* the world's hand it drives; default 0 */
-  double output_rate_hz;         /* commands per second; 0: the world's rate, never above
-                                    what the glove takes (100 for OpenGloves); default 0 */
+  double output_rate_hz;         /* commands per second, 0 or 1..100000; 0: the world's rate,
+                                    never above what the glove takes (100 for OpenGloves);
+                                    default 0 */
   double watchdog_s;             /* 0.001..10; default 0.05 */
   double engine_timeout_s;       /* 0.001..10; default 0.05 */
   double host_timeout_s;         /* 0 (not watched) or 0.001..60; default 0.25 */
   double reconnect_interval_s;   /* 0.001..60; default 0.2 */
   double max_force_rate;         /* newtons per second a resistance or fingertip force
-                                    may rise (falls are immediate); default 500 */
-  double max_torque_rate;        /* newton-metres per second; default 25 */
-  double max_finger_resistance;  /* newtons; the glove's own limit if lower; default 10 */
-  double max_fingertip_force;    /* newtons; default 10 */
-  double max_joint_torque;       /* newton-metres; default 0.5 */
+                                    may rise (falls are immediate), 0..1e9; default 500 */
+  double max_torque_rate;        /* newton-metres per second, 0..1e9; default 25 */
+  double max_finger_resistance;  /* newtons, 0..1e9; the glove's own limit if lower;
+                                    default 10 */
+  double max_fingertip_force;    /* newtons, 0..1e9; default 10 */
+  double max_joint_torque;       /* newton-metres, 0..1e9; default 0.5 */
   /* OpenGloves calibration: raw units (0..analog_max) to radians, newtons to brake
-     units. Per finger (thumb first) and flexion joint (first, second, third): */
+     units. Per finger (thumb first) and flexion joint (first, second, third). Raw
+     readings lie in 0..analog_max, curl_open and curl_closed at least 1 apart; flexions
+     within +-pi, splay_span 1..analog_max, abduction_range 0..pi/2: */
   double curl_open[FRUSTA_FINGER_COUNT][3];      /* raw reading, finger straight; default 0 */
   double curl_closed[FRUSTA_FINGER_COUNT][3];    /* raw reading in a fist; default 4095 */
   double flexion_open[FRUSTA_FINGER_COUNT][3];   /* radians at curl_open; default 0 */
@@ -730,9 +734,10 @@ typedef struct frusta_device_def {
   double splay_center[FRUSTA_FINGER_COUNT];      /* raw splay of a straight finger; 2048 */
   double splay_span[FRUSTA_FINGER_COUNT];        /* raw splay for abduction_range; 2047 */
   double abduction_range[FRUSTA_FINGER_COUNT];   /* radians; default 15 degrees */
-  double brake_full_scale;       /* newtons that set a brake to brake_units; default 10 */
-  double brake_units;            /* the glove's full brake; default 1000 */
-  double analog_max;             /* the largest raw reading; default 4095 */
+  double brake_full_scale;       /* newtons that set a brake to brake_units, > 0 and
+                                    <= 1e6; default 10 */
+  double brake_units;            /* the glove's full brake, 1..65535; default 1000 */
+  double analog_max;             /* the largest raw reading, 1..1e9; default 4095 */
   int32_t internal_value;        /* set by frusta_default_device_def; do not touch */
   int32_t reserved0;
 } frusta_device_def;

@@ -49,8 +49,63 @@ frusta_result in_range(double value, double low, double high, const char* field)
   return FRUSTA_OK;
 }
 
+// Every double of the def, named as the header names it: NaN or infinity anywhere is
+// FRUSTA_ERROR_NOT_FINITE before any range is looked at (the calibration's own checks
+// would call a NaN out of range).
+frusta_result check_def_finite(const frusta_device_def& in) {
+  struct Doubles {
+    const char* name;
+    const double* values;
+    int count;
+  };
+  const Doubles fields[] = {
+      {"output_rate_hz", &in.output_rate_hz, 1},
+      {"watchdog_s", &in.watchdog_s, 1},
+      {"engine_timeout_s", &in.engine_timeout_s, 1},
+      {"host_timeout_s", &in.host_timeout_s, 1},
+      {"reconnect_interval_s", &in.reconnect_interval_s, 1},
+      {"max_force_rate", &in.max_force_rate, 1},
+      {"max_torque_rate", &in.max_torque_rate, 1},
+      {"max_finger_resistance", &in.max_finger_resistance, 1},
+      {"max_fingertip_force", &in.max_fingertip_force, 1},
+      {"max_joint_torque", &in.max_joint_torque, 1},
+      {"curl_open", &in.curl_open[0][0], FRUSTA_FINGER_COUNT * kFlexions},
+      {"curl_closed", &in.curl_closed[0][0], FRUSTA_FINGER_COUNT * kFlexions},
+      {"flexion_open", &in.flexion_open[0][0], FRUSTA_FINGER_COUNT * kFlexions},
+      {"flexion_closed", &in.flexion_closed[0][0], FRUSTA_FINGER_COUNT * kFlexions},
+      {"splay_center", in.splay_center, FRUSTA_FINGER_COUNT},
+      {"splay_span", in.splay_span, FRUSTA_FINGER_COUNT},
+      {"abduction_range", in.abduction_range, FRUSTA_FINGER_COUNT},
+      {"brake_full_scale", &in.brake_full_scale, 1},
+      {"brake_units", &in.brake_units, 1},
+      {"analog_max", &in.analog_max, 1},
+  };
+  for (const Doubles& f : fields) {
+    for (int i = 0; i < f.count; ++i) {
+      if (std::isfinite(f.values[i])) continue;
+      if (f.count == 1)
+        return fail(FRUSTA_ERROR_NOT_FINITE, "frusta_device_def.%s is %g", f.name, f.values[i]);
+      if (f.count == FRUSTA_FINGER_COUNT)
+        return fail(FRUSTA_ERROR_NOT_FINITE, "frusta_device_def.%s[%d] is %g", f.name, i, f.values[i]);
+      return fail(FRUSTA_ERROR_NOT_FINITE, "frusta_device_def.%s[%d][%d] is %g", f.name,
+                  i / kFlexions, i % kFlexions, f.values[i]);
+    }
+  }
+  return FRUSTA_OK;
+}
+
+// 0 (`zero_means`) or within [low, high]: a value between 0 and low is no setting
+// (a command period of 1e300 s overflowed the glove thread's clock)
+frusta_result zero_or_in_range(double value, double low, double high, const char* field,
+                               const char* zero_means) {
+  if (value == 0.0 || (value >= low && value <= high)) return FRUSTA_OK;
+  return fail(FRUSTA_ERROR_OUT_OF_RANGE, "frusta_device_def.%s is %g, must be 0 (%s) or in [%g, %g]",
+              field, value, zero_means, low, high);
+}
+
 frusta_result read_device_def(const frusta_device_def& in, DeviceLinkDef* link,
                               GloveCalibration* calibration) {
+  if (frusta_result r = check_def_finite(in)) return r;
   DeviceLinkDef d;
   d.hand = in.hand;
   d.output_rate_hz = in.output_rate_hz;
@@ -63,10 +118,14 @@ frusta_result read_device_def(const frusta_device_def& in, DeviceLinkDef* link,
   d.max_finger_resistance = in.max_finger_resistance;
   d.max_fingertip_force = in.max_fingertip_force;
   d.max_joint_torque = in.max_joint_torque;
-  if (frusta_result r = in_range(d.output_rate_hz, 0.0, 100000.0, "output_rate_hz")) return r;
+  if (frusta_result r = zero_or_in_range(d.output_rate_hz, 1.0, 100000.0, "output_rate_hz",
+                                         "the world's rate"))
+    return r;
   if (frusta_result r = in_range(d.watchdog_s, 0.001, 10.0, "watchdog_s")) return r;
   if (frusta_result r = in_range(d.engine_timeout_s, 0.001, 10.0, "engine_timeout_s")) return r;
-  if (frusta_result r = in_range(d.host_timeout_s, 0.0, 60.0, "host_timeout_s")) return r;
+  if (frusta_result r = zero_or_in_range(d.host_timeout_s, 0.001, 60.0, "host_timeout_s",
+                                         "not watched"))
+    return r;
   if (frusta_result r = in_range(d.reconnect_interval_s, 0.001, 60.0, "reconnect_interval_s")) return r;
   if (frusta_result r = in_range(d.rates.max_force_rate, 0.0, 1e9, "max_force_rate")) return r;
   if (frusta_result r = in_range(d.rates.max_torque_rate, 0.0, 1e9, "max_torque_rate")) return r;

@@ -513,8 +513,9 @@ namespace Frusta.Binding
         /// <summary>the world's hand it drives; default 0</summary>
         public int Hand;
         /// <summary>
-        /// commands per second; 0: the world's rate, never above
-        /// what the glove takes (100 for OpenGloves); default 0
+        /// commands per second, 0 or 1..100000; 0: the world's rate,
+        /// never above what the glove takes (100 for OpenGloves);
+        /// default 0
         /// </summary>
         public double OutputRateHz;
         /// <summary>0.001..10; default 0.05</summary>
@@ -527,23 +528,28 @@ namespace Frusta.Binding
         public double ReconnectIntervalS;
         /// <summary>
         /// newtons per second a resistance or fingertip force
-        /// may rise (falls are immediate); default 500
+        /// may rise (falls are immediate), 0..1e9; default 500
         /// </summary>
         public double MaxForceRate;
-        /// <summary>newton-metres per second; default 25</summary>
+        /// <summary>newton-metres per second, 0..1e9; default 25</summary>
         public double MaxTorqueRate;
-        /// <summary>newtons; the glove's own limit if lower; default 10</summary>
+        /// <summary>
+        /// newtons, 0..1e9; the glove's own limit if lower;
+        /// default 10
+        /// </summary>
         public double MaxFingerResistance;
-        /// <summary>newtons; default 10</summary>
+        /// <summary>newtons, 0..1e9; default 10</summary>
         public double MaxFingertipForce;
-        /// <summary>newton-metres; default 0.5</summary>
+        /// <summary>newton-metres, 0..1e9; default 0.5</summary>
         public double MaxJointTorque;
         /// <summary>
         /// raw reading, finger straight; default 0
         /// </summary>
         /// <remarks>
         /// OpenGloves calibration: raw units (0..analog_max) to radians, newtons to brake
-        /// units. Per finger (thumb first) and flexion joint (first, second, third):
+        /// units. Per finger (thumb first) and flexion joint (first, second, third). Raw
+        /// readings lie in 0..analog_max, curl_open and curl_closed at least 1 apart; flexions
+        /// within +-pi, splay_span 1..analog_max, abduction_range 0..pi/2:
         /// </remarks>
         internal fixed double curl_open[FrustaConstants.FingerCount * 3];
         /// <summary>raw reading in a fist; default 4095</summary>
@@ -558,11 +564,14 @@ namespace Frusta.Binding
         internal fixed double splay_span[FrustaConstants.FingerCount];
         /// <summary>radians; default 15 degrees</summary>
         internal fixed double abduction_range[FrustaConstants.FingerCount];
-        /// <summary>newtons that set a brake to brake_units; default 10</summary>
+        /// <summary>
+        /// newtons that set a brake to brake_units, &gt; 0 and
+        /// &lt;= 1e6; default 10
+        /// </summary>
         public double BrakeFullScale;
-        /// <summary>the glove's full brake; default 1000</summary>
+        /// <summary>the glove's full brake, 1..65535; default 1000</summary>
         public double BrakeUnits;
-        /// <summary>the largest raw reading; default 4095</summary>
+        /// <summary>the largest raw reading, 1..1e9; default 4095</summary>
         public double AnalogMax;
         /// <summary>set by frusta_default_device_def; do not touch</summary>
         internal int internal_value;
