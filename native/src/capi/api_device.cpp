@@ -191,9 +191,9 @@ FRUSTA_API frusta_device_def frusta_default_device_def(void) {
 FRUSTA_API frusta_result frusta_enumerate_devices(frusta_device_info* out, int32_t capacity,
                                                   int32_t* out_count) {
   if (frusta_result r = check_pointer(out_count, "out_count")) return r;
-  if (capacity < 0 || (capacity > 0 && out == nullptr))
-    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "capacity is %d with out %s", capacity,
-                out ? "set" : "null");
+  if (capacity < 0) return fail(FRUSTA_ERROR_OUT_OF_RANGE, "capacity is %d, must be >= 0", capacity);
+  if (capacity > 0)  // a buffer promised but not given: as every other call says it
+    if (frusta_result r = check_pointer(out, "out")) return r;
   for (int32_t i = 0; i < capacity; ++i) {
     if (frusta_result r = check_struct_size(out[i].struct_size, static_cast<int32_t>(sizeof(frusta_device_info)),
                                             "frusta_device_info"))
