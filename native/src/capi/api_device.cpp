@@ -147,8 +147,9 @@ frusta_result find_device(frusta_device_id id, WorldObject** world, DeviceLink**
   if (id.index1 == 0) return fail(FRUSTA_ERROR_NULL_ID, "device id is null (zero-initialised)");
   frusta_world_id world_id;
   if (frusta_result r = world_registry().find_by_tag(id.world0, "device", world, &world_id)) return r;
-  const int32_t h = id.index1 - 1;
-  if (h < 0 || h >= kMaxGloves || !(*world)->gloves[static_cast<size_t>(h)] ||
+  // index1 is checked before 1 is taken off it: INT32_MIN - 1 overflows
+  const int32_t h = id.index1 >= 1 && id.index1 <= kMaxGloves ? id.index1 - 1 : -1;
+  if (h < 0 || !(*world)->gloves[static_cast<size_t>(h)] ||
       (*world)->glove_generation[static_cast<size_t>(h)] != id.generation)
     return fail(FRUSTA_ERROR_STALE_ID,
                 "device id {index1=%d, generation=%u} names no open glove: it was closed",
@@ -269,8 +270,9 @@ FRUSTA_API int32_t frusta_device_is_valid(frusta_device_id device) {
   WorldObject* w = nullptr;
   frusta_world_id world;
   if (world_registry().find_by_tag(device.world0, nullptr, &w, &world) != FRUSTA_OK) return 0;
+  if (device.index1 < 1 || device.index1 > kMaxGloves) return 0;  // before taking 1 off it
   const int32_t h = device.index1 - 1;
-  return h >= 0 && h < kMaxGloves && w->gloves[static_cast<size_t>(h)] &&
+  return w->gloves[static_cast<size_t>(h)] &&
                  w->glove_generation[static_cast<size_t>(h)] == device.generation
              ? 1
              : 0;
