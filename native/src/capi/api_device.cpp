@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // C ABI: force-feedback gloves, each driving one hand of a world on a thread of its own.
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <vector>
@@ -159,6 +160,19 @@ frusta_result find_device(frusta_device_id id, WorldObject** world, DeviceLink**
   return FRUSTA_OK;
 }
 
+// A glove id's generation, from one counter for every world: world0 keeps only the
+// low byte of its world's generation, so with a count per world, a glove id of a world
+// destroyed 256 generations of its slot ago named the new world's glove on that hand
+// (and frusta_device_close through it closed that glove). Never 0.
+uint16_t next_glove_generation() {
+  static std::atomic<uint32_t> count{0};
+  uint16_t generation;
+  do {
+    generation = static_cast<uint16_t>(count.fetch_add(1, std::memory_order_relaxed) + 1);
+  } while (generation == 0);
+  return generation;
+}
+
 void store_uri(const std::string& uri, uint8_t* out, size_t capacity) {
   const size_t n = std::min(uri.size(), capacity - 1);
   std::memcpy(out, uri.data(), n);
@@ -245,7 +259,7 @@ FRUSTA_API frusta_result frusta_world_open_device(frusta_world_id world, const c
                                              std::move(glove.protocol));
     if (frusta_result r = link->open()) return r;
     uint16_t& generation = w->glove_generation[static_cast<size_t>(hand)];
-    generation = static_cast<uint16_t>(generation == UINT16_MAX ? 1 : generation + 1);
+    generation = next_glove_generation();
     w->gloves[static_cast<size_t>(hand)] = std::move(link);
     w->glove_driven[static_cast<size_t>(hand)].store(true, std::memory_order_release);
     *out_device = frusta_device_id{hand + 1, world_tag(world), generation};

@@ -62,6 +62,17 @@ frusta_result read_object_def(const frusta_object_def& in, ObjectDef* out) {
   return FRUSTA_OK;
 }
 
+// An object id's generation from its slot's and back: the world generation's high byte
+// is mixed in, as world0 holds only its low byte. Otherwise an object id of a world
+// destroyed 256 generations of its slot ago named the slot's new world's object.
+uint16_t id_generation(frusta_world_id world, uint32_t slot_generation) {
+  return static_cast<uint16_t>(slot_generation ^ (world.generation & 0xFF00u));
+}
+
+frusta_object_id object_id(frusta_world_id world, int32_t slot, uint32_t slot_generation) {
+  return {slot + 1, world_tag(world), id_generation(world, slot_generation)};
+}
+
 // The object slot of id in this world (checked against the host's view: live now).
 frusta_result object_handle(frusta_world_id world, frusta_object_id id, ObjectHandle* out) {
   if (id.index1 == 0) return fail(FRUSTA_ERROR_NULL_ID, "object id is null (zero-initialised)");
@@ -72,7 +83,7 @@ frusta_result object_handle(frusta_world_id world, frusta_object_id id, ObjectHa
   if (id.index1 < 0)  // never issued; and index1 - 1 would overflow for INT32_MIN
     return fail(FRUSTA_ERROR_STALE_ID, "object id {index1=%d, generation=%u} names no object",
                 id.index1, id.generation);
-  *out = {id.index1 - 1, id.generation};
+  *out = {id.index1 - 1, id_generation(world, id.generation)};  // the mix undone
   return FRUSTA_OK;
 }
 
@@ -209,8 +220,7 @@ FRUSTA_API frusta_result frusta_world_add_object(frusta_world_id world, frusta_t
     std::shared_ptr<const TreeFile> file(shape, &shape->file);
     ObjectHandle handle;
     if (frusta_result r = w->world.add_object(std::move(file), d, &handle)) return r;
-    *out_object = {handle.slot + 1, world_tag(world),
-                   static_cast<uint16_t>(handle.generation)};
+    *out_object = object_id(world, handle.slot, handle.generation);
     return FRUSTA_OK;
   });
 }
@@ -349,8 +359,7 @@ FRUSTA_API frusta_result frusta_world_get_contacts(frusta_world_id world, int32_
       const ContactForce& f = h->forces[static_cast<size_t>(i)];
       frusta_world_contact& o = out[i];
       const ObjectSnapshot& object = snap->objects[static_cast<size_t>(c.object)];
-      o.object = {c.object + 1, world_tag(world),
-                  static_cast<uint16_t>(object.generation)};
+      o.object = object_id(world, c.object, object.generation);
       o.body = c.body;
       o.leaf = c.leaf;
       o.slipping = f.slipping ? 1 : 0;
