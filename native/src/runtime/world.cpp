@@ -29,8 +29,13 @@ constexpr double kMaxAngularSpeed = 1000.0; // rad/s
 constexpr double kStepBudget = 0.7;
 
 vec3 clamp_length(const vec3& v, double limit) {
-  const double length = glm::length(v);
-  return length > limit ? v * (limit / length) : v;
+  // scaled by the largest component first: a length past 1e154 squares to infinity,
+  // and limit / infinity would zero a finite vector (or turn an infinite one into NaN)
+  const double largest = std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
+  if (!(largest > limit / 2.0)) return v;  // also 0 and NaN, which stay as they are
+  const vec3 unit = v / largest;
+  const double length = largest * glm::length(unit);
+  return length > limit ? unit * (limit / glm::length(unit)) : v;
 }
 
 }  // namespace
@@ -455,12 +460,14 @@ void World::move_dynamic_objects(double dt) {
     // stable for the contact springs at the world's rate (stiffness / mass << rate^2)
     const vec3 force = slot.reaction.force + o.mass * def_.gravity;
     o.linear_velocity += dt / o.mass * force;
+    // Euler's equations in the body frame, where the inertia is the diagonal it was
+    // given: the world-frame tensor of moments 1e-13 and 1e4 turned off the axes is
+    // singular in doubles, and its inverse turned the spin into NaN
     const glm::dmat3& r = o.pose.rotation;
-    const glm::dmat3 inertia = r * glm::dmat3(o.inertia.x, 0, 0, 0, o.inertia.y, 0, 0, 0, o.inertia.z) *
-                               glm::transpose(r);
-    const vec3 spin = inertia * o.angular_velocity;
-    const vec3 torque = slot.reaction.torque - glm::cross(o.angular_velocity, spin);
-    o.angular_velocity += dt * (glm::inverse(inertia) * torque);
+    const vec3 body_spin = glm::transpose(r) * o.angular_velocity;
+    const vec3 body_torque =
+        glm::transpose(r) * slot.reaction.torque - glm::cross(body_spin, o.inertia * body_spin);
+    o.angular_velocity += dt * (r * (body_torque / o.inertia));
     o.linear_velocity = clamp_length(o.linear_velocity * std::max(0.0, 1.0 - o.linear_damping * dt),
                                      kMaxLinearSpeed);
     o.angular_velocity = clamp_length(
