@@ -227,13 +227,12 @@ namespace Frusta.Binding.Tests
             Fails(FrustaResult.WrongState, () => world.AddHand(FrustaHandDef.Default), "first step");
 
             var state = new FrustaWorldState();
-            var deadline = DateTime.UtcNow.AddSeconds(5);
-            do
+            Waiting.Until(() =>
             {
-                Thread.Sleep(10);
                 world.SetHaptic(hand, Lowered(0.002), angles);
                 world.Read(ref state);
-            } while (state.Step < 20 && DateTime.UtcNow < deadline);
+                return state.Step >= 20;
+            }, "20 steps on the world's own thread", () => $"step {state.Step}");
             world.Stop();
             Assert.False(world.IsRunning);
             world.Read(ref state);
@@ -243,6 +242,8 @@ namespace Frusta.Binding.Tests
             var h = new FrustaWorldHand();
             world.GetHand(hand, ref h);
             Assert.True(h.Solved && h.Pressing > 0, $"{h.Pressing} pressing");
+            // Stop joined the thread, so no step can follow it: the pause only gives a thread that
+            // wrongly outlived Stop the time to show itself (however long it lasts, this can't flake)
             Thread.Sleep(10);
             world.Read(ref state);
             Assert.Equal(stoppedAt, state.Step);
