@@ -3,7 +3,6 @@
 // host feeds input.
 using System;
 using System.Collections.Generic;
-using System.Diagnostics;
 using System.Linq;
 using System.Threading;
 using Frusta.Binding;
@@ -31,6 +30,9 @@ namespace Frusta.Binding.Tests
             world.SetHaptic(left, palm, angles);
 
             const int readers = 3;
+            // counts reached, not rates: a busy machine takes longer, and the wait below lets it
+            const ulong steps = 500;
+            const long readsEach = 50;
             var stop = new ManualResetEventSlim();
             var failures = new List<string>();
             var reads = new long[readers];
@@ -61,39 +63,45 @@ namespace Frusta.Binding.Tests
                                     throw new Exception($"hand {h}: a torn contact");
                         }
                         previous = s.Step;
-                        ++reads[r];
+                        Volatile.Write(ref lastSteps[r], previous);
+                        Interlocked.Increment(ref reads[r]);
                     }
                 }
                 catch (Exception e)
                 {
                     lock (failures) failures.Add($"reader {r}: {e}");
                 }
-                lastSteps[r] = previous;
             })).ToArray();
 
             world.Start();
             foreach (var t in threads) t.Start();
-            // the host moves the hands into the ball and back for half a second
-            var clock = Stopwatch.StartNew();
-            while (clock.Elapsed.TotalSeconds < 0.5)
+            // the host moves the hands into the ball and back, by the world's time, until the
+            // world has taken its steps and every reader has read its snapshots of stepped worlds
+            // (or one failed)
+            var state = new FrustaWorldState();
+            bool Failed() { lock (failures) return failures.Count > 0; }
+            Waiting.Until(() =>
             {
-                double z = -0.02 * (0.5 + 0.5 * Math.Sin(clock.Elapsed.TotalSeconds * 20));
+                world.Read(ref state);
+                double z = -0.02 * (0.5 + 0.5 * Math.Sin(state.Time * 20));
                 palm.Position = new Vector3d(0, 0, z);
                 world.SetHaptic(right, palm, angles);
                 world.SetHaptic(left, palm, angles);
-                Thread.Sleep(1);
-            }
+                return Failed() || (state.Step >= steps && Enumerable.Range(0, readers).All(r =>
+                    Interlocked.Read(ref reads[r]) >= readsEach && Volatile.Read(ref lastSteps[r]) > 0));
+            }, $"{steps} steps and {readsEach} reads by each reader", () =>
+                $"step {state.Step}; reads {string.Join(", ", reads)}; " +
+                $"last steps read {string.Join(", ", lastSteps)}");
             stop.Set();
             foreach (var t in threads) t.Join();
             world.Stop();
 
             Assert.Empty(failures);
-            var state = new FrustaWorldState();
             world.Read(ref state);
-            Assert.True(state.Step > 100, $"{state.Step} steps in 0.5 s");
+            Assert.True(state.Step >= steps, $"{state.Step} steps");
             for (int r = 0; r < readers; ++r)
             {
-                Assert.True(reads[r] > 10, $"reader {r} read {reads[r]} snapshots");
+                Assert.True(reads[r] >= readsEach, $"reader {r} read {reads[r]} snapshots");
                 Assert.True(lastSteps[r] > 0 && lastSteps[r] <= state.Step, $"reader {r} ended at step {lastSteps[r]}");
             }
         }
@@ -106,19 +114,28 @@ namespace Frusta.Binding.Tests
             world.Start();
             var snapshot = world.CreateSnapshot();
             Exception end = null;
+            long reads = 0;
             var reader = new Thread(() =>
             {
                 try
                 {
-                    while (true) world.ReadSnapshot(snapshot);
+                    while (true)
+                    {
+                        world.ReadSnapshot(snapshot);
+                        Interlocked.Increment(ref reads);
+                    }
                 }
                 catch (Exception e)
                 {
-                    end = e;
+                    Volatile.Write(ref end, e);
                 }
             });
             reader.Start();
-            Thread.Sleep(50);
+            // dispose while the reader is reading: once it has read (not after a pause, which a
+            // busy machine may spend without ever running the reader)
+            Waiting.Until(() => Interlocked.Read(ref reads) >= 100 || Volatile.Read(ref end) != null,
+                          "the reader to read 100 snapshots", () => $"{Interlocked.Read(ref reads)} reads, ended by {end}");
+            Assert.Null(Volatile.Read(ref end));
             world.Dispose();
             reader.Join();
             Assert.IsType<ObjectDisposedException>(end);
