@@ -42,20 +42,23 @@ namespace Frusta.Binding.Tests
             return world;
         }
 
-        /// <summary>Poll the glove and read the world (as a host's frame does) until done or the timeout.</summary>
-        static bool PollUntil(Device device, World world, Func<bool> done, double seconds)
+        /// <summary>Poll the glove and read the world (as a host's frame does) until done; fails
+        /// after <see cref="Waiting.DeadlineSeconds"/> showing the glove's last status.</summary>
+        static void PollUntil(Device device, World world, Func<bool> done, string what)
         {
             var state = new FrustaWorldState();
-            var clock = Stopwatch.StartNew();
-            while (clock.Elapsed.TotalSeconds < seconds)
+            Waiting.Until(() =>
             {
                 device.Poll();
                 world.Read(ref state);
-                if (done()) return true;
-                Thread.Sleep(1);
-            }
-            return false;
+                return done();
+            }, what, () => Describe(device.PolledStatus));
         }
+
+        static string Describe(in FrustaDeviceStatus s) =>
+            $"{s.State}, watchdog {s.Watchdog}, {s.FramesOk} frames, input {s.InputRateHz:R} Hz, " +
+            $"last sample {s.LastSampleAgeS:R} s ago, {s.CommandsSent} commands, " +
+            $"{s.Disconnects} disconnects, {s.Reconnects} reconnects";
 
         /// <summary>Latch a step taken after this call, then read one hand of it.</summary>
         static FrustaWorldHand HandAfterNextSteps(World world, int hand)
@@ -63,9 +66,11 @@ namespace Frusta.Binding.Tests
             var state = new FrustaWorldState();
             world.Read(ref state);
             ulong after = state.Step + 2;
-            var clock = Stopwatch.StartNew();
-            while (state.Step < after && clock.Elapsed.TotalSeconds < 2) world.Read(ref state);
-            Assert.True(state.Step >= after, $"the world stopped stepping at {state.Step}");
+            Waiting.Until(() =>
+            {
+                world.Read(ref state);
+                return state.Step >= after;
+            }, $"the world to reach step {after}", () => $"step {state.Step}");
             var h = new FrustaWorldHand();
             world.GetHand(hand, ref h);
             return h;
@@ -174,9 +179,10 @@ namespace Frusta.Binding.Tests
             };
             glove.WatchdogChanged += (sender, e) => reasons.Add((e.OldReason, e.NewReason));
 
+            // speed=max is checked by what it does (every frame taken, then the end), not by how
+            // long it took: a loaded machine may take any time
             var clock = Stopwatch.StartNew();
-            Assert.True(PollUntil(glove, world, () => glove.State == FrustaDeviceState.Disconnected, 5),
-                        $"still {glove.State} after 5 s: {glove.PolledStatus.FramesOk} frames");
+            PollUntil(glove, world, () => glove.State == FrustaDeviceState.Disconnected, "the replay to end");
             double seconds = clock.Elapsed.TotalSeconds;
 
             Assert.Equal(new[] { (FrustaDeviceState.Connected, FrustaDeviceState.Disconnected, (long)frames.Length) }, states.ToArray());
@@ -191,7 +197,6 @@ namespace Frusta.Binding.Tests
             Assert.True(s.HasPalmPose, "the recording's glove announces a tracker");
             Assert.Equal(FrustaConstants.FingerCount, s.Fingers);
             Assert.False(s.RecordingFailed);
-            Assert.True(seconds < 2, $"a replay at speed=max took {seconds} s");
             output.WriteLine($"speed=max: {s.FramesOk} samples ({frames.Length} frames in the CSV), disconnected " +
                              $"after {seconds * 1000:0.#} ms of polling, {s.CommandsSent} commands sent");
 
@@ -204,8 +209,13 @@ namespace Frusta.Binding.Tests
             for (int j = 0; j < FrustaConstants.HandJointCount; ++j)
                 Near(last[8 + j], h.GetHapticAngle(j), 1e-4, $"haptic angle {j}");
 
-            // the ended replay stays disconnected: reopening it fails every reconnect interval
-            Thread.Sleep(300);
+            // the ended replay stays disconnected: reopening it fails every reconnect interval. The
+            // glove's thread republishes the status as it tries, the last sample ageing by its own
+            // clock: wait until that clock is two intervals past the last sample (not for a time
+            // on ours, which says nothing about whether that thread got to run)
+            double reopenedBy = 2 * FrustaDeviceDef.Default.ReconnectIntervalS;
+            PollUntil(glove, world, () => glove.PolledStatus.LastSampleAgeS > reopenedBy,
+                      $"the glove's thread to be {reopenedBy} s past the last sample");
             Assert.True(glove.Poll());
             Assert.Equal((FrustaDeviceState.Disconnected, 1L, 0L), (glove.PolledStatus.State, glove.PolledStatus.Disconnects, glove.PolledStatus.Reconnects));
             Assert.Single(states);
@@ -321,7 +331,7 @@ namespace Frusta.Binding.Tests
             glove.StateChanged += (_, e) => ++changes;
             glove.WatchdogChanged += (_, e) => ++changes;
             // the replay over, the state stays put: no event, so nothing to allocate for
-            Assert.True(PollUntil(glove, world, () => glove.State == FrustaDeviceState.Disconnected, 5));
+            PollUntil(glove, world, () => glove.State == FrustaDeviceState.Disconnected, "the replay to end");
             var status = new FrustaDeviceStatus();
             var palm = new FrustaPose(new Vector3d(0, 0, 0.1), Quaterniond.Identity);
             void Frame()
