@@ -37,7 +37,7 @@ namespace Frusta.Unity
         [Tooltip("The tracked wrist of a glove without a tracker: its pose goes with the glove's samples. " +
                  "Empty: the hand's haptic source. Ignored while the glove reports its own palm pose.")]
         [SerializeField] Transform palmSource;
-        [Tooltip("Commands per second (Hz); 0: the world's rate, never above what the glove takes.")]
+        [Tooltip("Commands per second (Hz), 1..100000; below 1: the world's rate, never above what the glove takes.")]
         [SerializeField, Min(0f)] float outputRateHz;
         [Tooltip("Seconds without a valid sample before the output drops to zero.")]
         [SerializeField, Range(0.001f, 10f)] float watchdogSeconds = 0.05f;
@@ -146,7 +146,7 @@ namespace Frusta.Unity
             }
             FrustaDeviceDef def = FrustaDeviceDef.Default;
             def.Hand = hand.Index;
-            def.OutputRateHz = outputRateHz;
+            def.OutputRateHz = outputRateHz < 1f ? 0.0 : outputRateHz;  // 0 or 1..100000 natively
             def.WatchdogS = watchdogSeconds;
             def.HostTimeoutS = hostTimeoutSeconds;
             def.ReconnectIntervalS = reconnectIntervalSeconds;

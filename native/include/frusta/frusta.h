@@ -665,7 +665,9 @@ FRUSTA_API frusta_result frusta_world_get_object(frusta_world_id world, frusta_o
  *   hid:VID:PID[:SERIAL]         Frusta's binary profile over HID reports (hex ids)
  *   replay:FILE?speed=1|max&loop=0|1   a recording, in real time or as fast as read
  * and any of them takes &record=FILE to record its input stream for replay. baud is
- * 115200 unless given. Each open glove has a thread of its own (none without one):
+ * 115200 unless given. A recording (replayed or recorded) is a regular file of at most
+ * 1 GiB; a FIFO, device or folder is refused, and so is recording over the file being
+ * replayed. Each open glove has a thread of its own (none without one):
  * it feeds the glove's samples to the hand as frusta_world_set_haptic would, and
  * sends the glove its command at the output rate. Safety: the command is the world's
  * device outputs cut to the glove's limits and rise rates, and drops to zero at once
@@ -751,18 +753,22 @@ typedef struct frusta_device_status {
   int32_t fingers;               /* the glove's fingers, thumb first */
   int32_t has_palm_pose;         /* 1: the glove reports the palm (a tracker) */
   int32_t protocol_version;      /* announced by the glove (0: none) */
-  int32_t recording_failed;      /* 1: the disk refused the recording; the glove runs on */
+  int32_t recording_failed;      /* 1: the disk refused the recording, or it reached 1 GiB;
+                                    the glove runs on */
   int64_t frames_ok;             /* samples taken */
   int64_t frames_corrupt;        /* bad checksum or syntax: dropped */
   int64_t frames_truncated;      /* cut short: dropped */
   int64_t frames_out_of_range;   /* well formed, impossible values: dropped */
-  int64_t samples_rejected;      /* decoded, but NaN or beyond any joint: dropped */
+  int64_t samples_rejected;      /* decoded, but breaking the rule of set_haptic (NaN,
+                                    |angle| > FRUSTA_MAX_JOINT_ANGLE, ...): dropped */
   int64_t commands_sent;         /* commands written to the glove */
   int64_t commands_dropped;      /* the glove did not drain its input in time */
   int64_t reconnects;            /* times the glove came back */
   int64_t disconnects;           /* times it went away */
   int64_t watchdog_trips;        /* times the output was forced to zero */
-  double input_rate_hz;          /* measured */
+  double input_rate_hz;          /* samples per second, by the glove's own clock and
+                                    sequence where it sends them (the binary profile), else
+                                    by arrival */
   double output_rate_hz;         /* in use */
   double last_sample_age_s;      /* -1: none yet */
   double max_finger_resistance;  /* newtons: the limits in use */

@@ -66,10 +66,9 @@ frusta_result bake_sphere_tree(const TriangleMesh& mesh, const BakeParams& param
   if (frusta_result r = build_sphere_tree(cover.leaves, build, &file.tree)) return r;
   if (file.tree.depth > params.max_depth)
     return fail(FRUSTA_ERROR_OUT_OF_RANGE,
-                "%zu leaves need depth %d with branching %d, more than "
-                "max depth %lld: raise the branching or the depth",
-                cover.leaves.size(), file.tree.depth, static_cast<int>(params.branching),
-                static_cast<long long>(params.max_depth));
+                "max_depth is %lld but the %zu leaves need depth %d with branching %d: raise "
+                "max_depth or branching", static_cast<long long>(params.max_depth),
+                cover.leaves.size(), file.tree.depth, static_cast<int>(params.branching));
   file.bounds_min = vec3(INFINITY);
   file.bounds_max = vec3(-INFINITY);
   for (const Sphere& l : file.tree.leaves) {

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "devices/device_factory.h"
 
+#include <filesystem>
+#include <system_error>
+
 #include "core/error.h"
 #include "devices/frusta_protocol.h"
 #include "devices/hid_stream.h"
@@ -49,6 +52,12 @@ frusta_result make_glove(const DeviceAddress& address, const GloveCalibration& c
       if (frusta_result r = make_protocol(kFrusta, calibration, &glove)) return r;
       break;
     case DeviceKind::kReplay: {
+      std::error_code ignored;  // either missing: not the same file
+      if (!address.record_path.empty() &&
+          std::filesystem::equivalent(address.record_path, address.path, ignored))
+        return fail(FRUSTA_ERROR_OUT_OF_RANGE,
+                    "record=%s is the recording being replayed: recording over it would destroy "
+                    "it", address.record_path.c_str());
       // read and checked once, here: the file is not read again at open
       auto replay = std::make_unique<ReplayStream>(address.path, address.real_time, address.loop);
       std::string name;

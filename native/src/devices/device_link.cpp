@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstdint>
 
 #include "runtime/periodic_clock.h"
@@ -16,21 +15,7 @@ namespace {
 constexpr int64_t kNsPerSecond = 1000000000;
 constexpr int64_t kHeartbeatNs = 500000000;  // handshake retries and keep-alives
 constexpr int64_t kIdleSliceNs = 10000000;   // how often a disconnected thread looks up
-// a joint beyond half a turn is no hand's: a glove sending one is broken
-constexpr double kMaxDeviceAngle = 3.14159265358979323846;
-constexpr double kMaxPalmCoordinate = 1e3;  // metres from the tracking origin
-
 int64_t to_ns(double seconds) { return static_cast<int64_t>(seconds * 1e9); }
-
-bool is_valid_sample(const DeviceSample& s) {
-  for (double a : s.angles)
-    if (!(std::fabs(a) <= kMaxDeviceAngle)) return false;
-  if (!s.has_palm_pose) return true;
-  for (int i = 0; i < 3; ++i)
-    if (!(std::fabs(s.palm_position[i]) <= kMaxPalmCoordinate)) return false;
-  const double norm = glm::length(s.palm_rotation);
-  return norm >= 0.5 && norm <= 2.0;  // also false for NaN
-}
 
 }  // namespace
 
@@ -238,20 +223,23 @@ void DeviceLink::publish_status(int64_t now) {
 }
 
 void DeviceLink::on_sample(const DeviceSample& sample) {
-  if (!is_valid_sample(sample)) {
+  HandState haptic = haptic_;
+  haptic.angles = sample.angles;
+  if (sample.has_palm_pose) {
+    haptic.palm_position = sample.palm_position;
+    haptic.palm_rotation = sample.palm_rotation;
+  } else {
+    const PalmPose& palm = palm_.read();
+    haptic.palm_position = palm.position;
+    haptic.palm_rotation = palm.rotation;
+  }
+  // the one rule for a hand's inputs, checked where the world takes them (the hand
+  // index was checked at open)
+  if (world_.set_haptic(def_.hand, haptic) != FRUSTA_OK) {
     ++working_.samples_rejected;
     return;
   }
-  haptic_.angles = sample.angles;
-  if (sample.has_palm_pose) {
-    haptic_.palm_position = sample.palm_position;
-    haptic_.palm_rotation = glm::normalize(sample.palm_rotation);
-  } else {
-    const PalmPose& palm = palm_.read();
-    haptic_.palm_position = palm.position;
-    haptic_.palm_rotation = palm.rotation;
-  }
-  world_.set_haptic(def_.hand, haptic_);  // the hand index was checked at open
+  haptic_ = haptic;
   ++working_.frames_ok;
   // by the glove's clock and count when it sends both (a clock past 292 years in ns is
   // a broken glove's: arrival and our count are used instead)

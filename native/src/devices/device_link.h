@@ -79,7 +79,7 @@ struct DeviceLinkStatus {
   LinkState state = LinkState::kDisconnected;
   WatchdogReason watchdog = WatchdogReason::kNone;
   int64_t frames_ok = 0, frames_corrupt = 0, frames_truncated = 0, frames_out_of_range = 0;
-  int64_t samples_rejected = 0;  // decoded, but NaN or beyond any joint's range
+  int64_t samples_rejected = 0;  // decoded, but breaking the rule for a hand's inputs
   int64_t commands_sent = 0, commands_dropped = 0;
   int64_t reconnects = 0, disconnects = 0, watchdog_trips = 0;
   double input_rate_hz = 0.0;       // over the last samples, by the glove's clock if it has one

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "devices/device_uri.h"
 
+#include <algorithm>
+#include <cerrno>
+#include <climits>
 #include <cstdlib>
 #include <string>
 
@@ -27,9 +30,14 @@ bool parse_usb_id(std::string_view text, uint16_t* out) {
   return true;
 }
 
+// the URI quoted up to kQuoted characters: a long one would push the reason out of the
+// thread's message
+constexpr size_t kQuoted = 96;
+
 frusta_result bad(std::string_view uri, const char* why) {
-  return fail(FRUSTA_ERROR_OUT_OF_RANGE, "device URI \"%.*s\": %s", static_cast<int>(uri.size()),
-              uri.data(), why);
+  return fail(FRUSTA_ERROR_OUT_OF_RANGE, "device URI \"%.*s%s\": %s",
+              static_cast<int>(std::min(uri.size(), kQuoted)), uri.data(),
+              uri.size() > kQuoted ? "..." : "", why);
 }
 
 }  // namespace
@@ -83,8 +91,11 @@ frusta_result parse_device_uri(std::string_view uri, DeviceAddress* out) {
       a.record_path = value;
     } else if (name == "baud" && serial) {
       char* end = nullptr;
-      const long baud = std::strtol(value.c_str(), &end, 10);
-      if (value.empty() || *end != '\0' || !is_supported_baud(static_cast<int32_t>(baud)))
+      errno = 0;
+      const long long baud = std::strtoll(value.c_str(), &end, 10);
+      // range first: 2^32 + 115200 once became 115200 on its way to an int32
+      if (value.empty() || *end != '\0' || errno == ERANGE || baud < 1 || baud > INT32_MAX ||
+          !is_supported_baud(static_cast<int32_t>(baud)))
         return bad(uri, "baud is not a rate termios supports (9600 ... 115200 ... 2000000)");
       a.baud = static_cast<int32_t>(baud);
     } else if (name == "speed" && a.kind == DeviceKind::kReplay && (value == "1" || value == "max")) {

@@ -597,7 +597,10 @@ namespace Frusta.Binding
         internal int has_palm_pose;
         /// <summary>announced by the glove (0: none)</summary>
         public int ProtocolVersion;
-        /// <summary>1: the disk refused the recording; the glove runs on</summary>
+        /// <summary>
+        /// 1: the disk refused the recording, or it reached 1 GiB;
+        /// the glove runs on
+        /// </summary>
         internal int recording_failed;
         /// <summary>samples taken</summary>
         public long FramesOk;
@@ -607,7 +610,10 @@ namespace Frusta.Binding
         public long FramesTruncated;
         /// <summary>well formed, impossible values: dropped</summary>
         public long FramesOutOfRange;
-        /// <summary>decoded, but NaN or beyond any joint: dropped</summary>
+        /// <summary>
+        /// decoded, but breaking the rule of set_haptic (NaN,
+        /// |angle| &gt; FRUSTA_MAX_JOINT_ANGLE, ...): dropped
+        /// </summary>
         public long SamplesRejected;
         /// <summary>commands written to the glove</summary>
         public long CommandsSent;
@@ -619,7 +625,11 @@ namespace Frusta.Binding
         public long Disconnects;
         /// <summary>times the output was forced to zero</summary>
         public long WatchdogTrips;
-        /// <summary>measured</summary>
+        /// <summary>
+        /// samples per second, by the glove's own clock and
+        /// sequence where it sends them (the binary profile), else
+        /// by arrival
+        /// </summary>
         public double InputRateHz;
         /// <summary>in use</summary>
         public double OutputRateHz;
