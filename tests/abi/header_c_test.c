@@ -1150,7 +1150,7 @@ static void test_bake_errors(void) {
   def.max_depth = 1;
   expect_error("bake(branching 2, max_depth 1)",
                frusta_bake_sphere_tree(kCube, 8, kCubeTriangles, 36, &def, &out),
-               FRUSTA_ERROR_OUT_OF_RANGE, "max depth", NULL);
+               FRUSTA_ERROR_OUT_OF_RANGE, "max_depth", NULL);
 }
 
 static void test_sphere_trees(void) {

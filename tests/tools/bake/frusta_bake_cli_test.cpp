@@ -79,7 +79,7 @@ TEST(FrustaBakeCli, ExitCodesSeparateTheFailures) {
   const Process deep = run("--max-depth 1 --branching 2 " + kObjects + "/box.glb -o " +
                            ::testing::TempDir() + "d.frtree");
   EXPECT_EQ(deep.code, 4) << deep.out;
-  EXPECT_NE(deep.out.find("max depth 1"), std::string::npos) << deep.out;
+  EXPECT_NE(deep.out.find("max_depth is 1"), std::string::npos) << deep.out;
   EXPECT_EQ(run("-o /nonexistent/dir/x.frtree " + kObjects + "/box.glb").code, 5);
   const Process budget = run("--max-leaves 20 -o " + ::testing::TempDir() + "c.frtree " + kObjects + "/ball.glb");
   EXPECT_EQ(budget.code, 6) << budget.out;
