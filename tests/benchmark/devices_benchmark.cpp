@@ -23,6 +23,7 @@
 #include "devices/frusta_protocol.h"
 #include "devices/opengloves_protocol.h"
 #include "devices/serial_stream.h"
+#include "hand/anthropometry.h"
 #include "hand/hand_model.h"
 #include "runtime/step_histogram.h"
 #include "scenes/binary_glove.h"
@@ -120,7 +121,7 @@ struct Latency {
 };
 
 Latency measure(const GloveSide& side, int transitions) {
-  const HandModel model = make_hand_model(frusta_default_hand_def());
+  const HandModel model = make_hand_model(default_hand_def());
   World world(WorldDef{});
   int32_t hand = -1;
   world.add_hand(model, &hand);

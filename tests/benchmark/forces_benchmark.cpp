@@ -22,7 +22,9 @@
 #include <glm/geometric.hpp>
 
 #include "forces/contact_forces.h"
+#include "core/error.h"
 #include "forces/device_outputs.h"
+#include "hand/anthropometry.h"
 #include "hand/hand_model.h"
 #include "runtime/step_histogram.h"
 #include "runtime/world.h"
@@ -39,14 +41,14 @@ double micros(Clock::duration d) { return std::chrono::duration<double, std::mic
 
 void check(frusta_result r, const char* what) {
   if (r == FRUSTA_OK) return;
-  std::fprintf(stderr, "frusta_bench_forces: %s failed: %s\n", what, frusta_last_error());
+  std::fprintf(stderr, "frusta_bench_forces: %s failed: %s\n", what, frusta::last_error_message());
   std::exit(1);
 }
 
 // --- time: the forces alone, on made-up contacts -------------------------------------
 
 void time_forces(int32_t n, bool last) {
-  const HandModel model = make_hand_model(frusta_default_hand_def());
+  const HandModel model = make_hand_model(default_hand_def());
   HandState state = scenes::open_hand();
   for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) scenes::set_flexion(state, f, 0.5, 0.5, 0.5);
   HandPose graphic, haptic;
@@ -170,7 +172,7 @@ TipForces tip_forces(const HandSnapshot& h) {
 // box (kinematic: once the solver has converged the press has settled), then slides
 // 1 cm along +x at 2 cm/s.
 void press_and_slide(std::shared_ptr<const TreeFile> box, double bake_error, double depth, bool last) {
-  const HandModel model = make_hand_model(frusta_default_hand_def());
+  const HandModel model = make_hand_model(default_hand_def());
   HandState hand = scenes::open_hand();
   scenes::set_flexion(hand, kIndex, 0.6, 0.6, 0.4);
   HandPose pose;

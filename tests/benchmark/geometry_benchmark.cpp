@@ -26,6 +26,7 @@
 #include "geometry/exact_distance.h"
 #include "geometry/patent_test.h"
 #include "geometry/segment_frame.h"
+#include "hand/anthropometry.h"
 #include "hand/hand_model.h"
 #include "hand/kinematics.h"
 #include "scenes/random_cases.h"
@@ -177,7 +178,7 @@ void BM_MakeSegmentFrame(benchmark::State& state, Scene scene) {
 // Whole hand: forward kinematics, then the point Jacobian of D and E of all 15
 // segments (30 Jacobians), per hand state; states random within the joint limits.
 void BM_HandKinematicsWithJacobians(benchmark::State& state) {
-  const HandModel model = make_hand_model(frusta_default_hand_def());
+  const HandModel model = make_hand_model(default_hand_def());
   std::mt19937_64 rng(scenes::kBenchmarkSeed);
   std::uniform_real_distribution<double> unit(0.0, 1.0), coord(-0.5, 0.5);
   std::normal_distribution<double> gauss;

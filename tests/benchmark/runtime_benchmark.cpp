@@ -14,6 +14,7 @@
 #include <ctime>
 #include <thread>
 
+#include "hand/anthropometry.h"
 #include "hand/hand_model.h"
 #include "runtime/periodic_clock.h"
 #include "runtime/world.h"
@@ -78,13 +79,13 @@ double read_ns(bool writer_busy) {
 void world_steps(int hands, int objects, bool last) {
   World world(WorldDef{});
   const std::shared_ptr<const TreeFile> ball = scenes::ball_shell(2000, 0.04);
-  frusta_hand_def left_def = frusta_default_hand_def();
+  HandDef left_def = default_hand_def();
   left_def.side = FRUSTA_HAND_LEFT;
   // the left hand grasps its own ball half a metre away (its palm there too)
   const vec3 offsets[2] = {vec3(0.0), vec3(0.0, 0.5, 0.0)};
   for (int h = 0; h < hands; ++h) {
     int32_t index = -1;
-    world.add_hand(make_hand_model(h == 0 ? frusta_default_hand_def() : left_def), &index);
+    world.add_hand(make_hand_model(h == 0 ? default_hand_def() : left_def), &index);
     ObjectHandle handle;
     world.add_object(ball, RigidPose{offsets[h] + vec3(0.10, 0.0, -0.058), glm::dmat3(1.0)}, &handle);
   }

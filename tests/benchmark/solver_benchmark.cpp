@@ -23,6 +23,7 @@
 
 #include "geometry/contact_test.h"
 #include "geometry/exact_distance.h"
+#include "hand/anthropometry.h"
 #include "hand/hand_model.h"
 #include "bench_sections.h"
 #include "scenes/baked_objects.h"
@@ -77,7 +78,7 @@ double max_standoff(const HandModel& model, const HandSolver& solver, const std:
 
 // The scripted part, then `hold` held steps; penetration checked every `check_every`.
 Measured measure(const scenes::HandScenario& s, const SolverParams& params, int32_t hold, int32_t check_every) {
-  const HandModel model = make_hand_model(frusta_default_hand_def());
+  const HandModel model = make_hand_model(default_hand_def());
   HandSolver solver(model, params);
   Measured m;
   const int32_t total = s.steps + hold;
@@ -255,7 +256,7 @@ int main(int argc, char** argv) {
       // MuJoCo's default contacts, then the stiffest stable at 1 ms (what a user tunes to)
       for (double time_constant : {0.0, 0.002}) {
         const bench::PeerResult peer = bench::run_mujoco_grasp(
-            make_hand_model(frusta_default_hand_def()), world, s.steps + 200,
+            make_hand_model(default_hand_def()), world, s.steps + 200,
             [&](int32_t t) { return t < s.steps ? s.haptic(t) : s.held; }, time_constant);
         const char* key = time_constant > 0.0 ? "mujoco_stiff_contacts" : "mujoco";
         if (peer.ok)

@@ -12,6 +12,7 @@
 #include <glm/geometric.hpp>
 
 #include "bake/baker.h"
+#include "core/error.h"
 #include "geometry/contact_test.h"
 #include "scenes/meshes.h"
 #include "spheretree/tree_builder.h"
@@ -26,7 +27,7 @@ void report_bake(benchmark::State& state, const TriangleMesh& mesh, double targe
   bool met = false;
   for (auto _ : state) {
     if (bake_sphere_tree(mesh, params, nullptr, &file, &met) != FRUSTA_OK) {
-      state.SkipWithError(frusta_last_error());
+      state.SkipWithError(frusta::last_error_message());
       return;
     }
   }

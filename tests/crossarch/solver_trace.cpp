@@ -16,6 +16,7 @@
 
 #include "geometry/exact_distance.h"
 #include "geometry/segment_frame.h"
+#include "hand/anthropometry.h"
 #include "hand/hand_model.h"
 #include "scenes/hand_scenarios.h"
 #include "scenes/random_cases.h"
@@ -57,7 +58,7 @@ void write_hand(std::ostream& out, const std::string& name, int32_t step, const 
 }
 
 void write_scenarios(std::ostream& out) {
-  const HandModel model = make_hand_model(frusta_default_hand_def());
+  const HandModel model = make_hand_model(default_hand_def());
   for (const std::string& name : scenes::hand_scenario_names()) {
     const scenes::HandScenario s = scenes::make_hand_scenario(name);
     HandSolver solver(model, SolverParams{});

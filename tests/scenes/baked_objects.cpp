@@ -6,6 +6,7 @@
 
 #if defined(FRUSTA_HAVE_BAKER)
 #include "bake/baker.h"
+#include "core/error.h"
 #include "scenes/meshes.h"
 #endif
 
@@ -22,7 +23,7 @@ std::shared_ptr<const TreeFile> load_once(const std::string& dir, const std::str
   if (it != cache.end()) return it->second;
   auto file = std::make_shared<TreeFile>();
   if (load_tree_file(path, file.get()) != FRUSTA_OK)
-    throw std::runtime_error(path + ": " + frusta_last_error() + " (built by " + built_by + ")");
+    throw std::runtime_error(path + ": " + frusta::last_error_message() + " (built by " + built_by + ")");
   cache[path] = file;
   return file;
 }
@@ -61,7 +62,7 @@ std::shared_ptr<const TreeFile> baked_box(const vec3& size, double target_error)
   params.target_error = target_error;
   bool met = false;
   if (bake_sphere_tree(make_box(size, 4), params, nullptr, file.get(), &met) != FRUSTA_OK)
-    throw std::runtime_error(std::string("baking a box: ") + frusta_last_error());
+    throw std::runtime_error(std::string("baking a box: ") + frusta::last_error_message());
   return file;
 #else
   (void)size;

@@ -8,7 +8,9 @@
 #include <glm/geometric.hpp>
 #include <glm/gtx/quaternion.hpp>
 
+#include "core/error.h"
 #include "geometry/exact_distance.h"
+#include "hand/anthropometry.h"
 #include "hand/hand_model.h"
 #include "scenes/meshes.h"
 #include "spheretree/tree_builder.h"
@@ -29,7 +31,7 @@ std::shared_ptr<const TreeFile> ball_shell(int32_t leaves, double radius) {
   }
   auto file = std::make_shared<TreeFile>();
   if (build_sphere_tree(spheres, {8}, &file->tree) != FRUSTA_OK)
-    throw std::runtime_error(std::string("building a ball shell: ") + frusta_last_error());
+    throw std::runtime_error(std::string("building a ball shell: ") + frusta::last_error_message());
   return file;
 }
 
@@ -122,7 +124,7 @@ HandState pads_together() {
 }
 
 HandScenario ball_pinch(double pressed) {
-  const HandModel model = make_hand_model(frusta_default_hand_def());
+  const HandModel model = make_hand_model(default_hand_def());
   HandPose pose;
   forward_kinematics(model, pads_together(), pose);
   vec3 axis = glm::normalize(pose.fingers[1].joint[3] - pose.fingers[0].joint[3]);
@@ -151,7 +153,7 @@ HandScenario ball_pinch(double pressed) {
 HandScenario plate_pinch(double pressed) {
   HandScenario s;
   const HandState pinch = pads_together();
-  const HandModel model = make_hand_model(frusta_default_hand_def());
+  const HandModel model = make_hand_model(default_hand_def());
   HandPose pose;
   forward_kinematics(model, pinch, pose);
   const vec3 thumb = pose.fingers[0].joint[3], index = pose.fingers[1].joint[3];

@@ -11,6 +11,7 @@
 #include <glm/common.hpp>
 
 #include "scenes/baked_objects.h"
+#include "core/error.h"
 #include "scenes/random_trees.h"
 #include "spheretree/tree_builder.h"
 
@@ -48,7 +49,7 @@ int main(int argc, char** argv) {
     const auto file = frusta::scenes::baked_box(box.size, box.target_error);
     const std::string path = dir + "/" + box.name + ".frtree";
     if (frusta::save_tree_file(path, *file) != FRUSTA_OK) {
-      std::fprintf(stderr, "frusta-make-test-objects: %s\n", frusta_last_error());
+      std::fprintf(stderr, "frusta-make-test-objects: %s\n", frusta::last_error_message());
       return 1;
     }
     char line[512];
@@ -62,7 +63,7 @@ int main(int argc, char** argv) {
     json += std::string(json.size() > 2 ? ",\n" : "") + line;
   }
   if (!write_million_leaves(dir + "/million_leaves.frtree")) {
-    std::fprintf(stderr, "frusta-make-test-objects: million_leaves: %s\n", frusta_last_error());
+    std::fprintf(stderr, "frusta-make-test-objects: million_leaves: %s\n", frusta::last_error_message());
     return 1;
   }
   json += ",\n  {\"name\": \"million_leaves\", \"leaves\": 1000000, \"generated\": true}";

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "bake/baker.h"
+#include "core/error.h"
 #include "gltf_loader.h"
 #include "spheretree/tree_file.h"
 
@@ -159,7 +160,7 @@ int parse(int argc, char** argv, Options* o) {
   // the ranges: the same check as the C ABI's (bake/bake_params.h)
   BakeField field = BakeField::kNone;
   if (frusta::check_bake_params(o->params, &field) != FRUSTA_OK)
-    return usage(o->given[field] + ": " + frusta_last_error());
+    return usage(o->given[field] + ": " + frusta::last_error_message());
   if (o->input.empty()) return usage("no input file");
   if (o->output.empty()) {
     const size_t dot = o->input.find_last_of('.');
@@ -188,12 +189,12 @@ int main(int argc, char** argv) {
 
   frusta::GltfLoadResult input;
   if (frusta::load_gltf_triangles(o.input, &input) != FRUSTA_OK) {
-    std::fprintf(stderr, "frusta-bake: %s\n", frusta_last_error());
+    std::fprintf(stderr, "frusta-bake: %s\n", frusta::last_error_message());
     return kUnreadableInput;
   }
   for (const std::string& w : input.warnings) std::fprintf(stderr, "frusta-bake: warning: %s\n", w.c_str());
   if (frusta::check_mesh(input.mesh, o.input.c_str()) != FRUSTA_OK) {
-    std::fprintf(stderr, "frusta-bake: %s\n", frusta_last_error());
+    std::fprintf(stderr, "frusta-bake: %s\n", frusta::last_error_message());
     return kUnreadableInput;
   }
 
@@ -211,11 +212,11 @@ int main(int argc, char** argv) {
   const frusta_result r = frusta::bake_sphere_tree(input.mesh, o.params, progress, &file, &met);
   if (bar) std::fputs("\r\033[K", stderr);
   if (r != FRUSTA_OK) {
-    std::fprintf(stderr, "frusta-bake: %s: %s\n", o.input.c_str(), frusta_last_error());
+    std::fprintf(stderr, "frusta-bake: %s: %s\n", o.input.c_str(), frusta::last_error_message());
     return kBakeFailed;
   }
   if (frusta::save_tree_file(o.output, file) != FRUSTA_OK) {
-    std::fprintf(stderr, "frusta-bake: %s\n", frusta_last_error());
+    std::fprintf(stderr, "frusta-bake: %s\n", frusta::last_error_message());
     return kWriteFailed;
   }
 

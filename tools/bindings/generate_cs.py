@@ -13,6 +13,8 @@ macro names are what the binding is made of (docs, fixed-buffer sizes), and a
 preprocessor drops both. The header is ours and regular, so the parser knows exactly the
 forms it uses and stops, naming the line, at anything else rather than guess:
 
+- `#ifndef FRUSTA_BASE_X` / `#define FRUSTA_BASE_X` / ... / `#endif`: a block the engine's
+  base header copies (generate_base.py); read as if the guard were not there.
 - `#define FRUSTA_X <number or arithmetic on earlier constants>`  -> FrustaConstants.X;
   function-like macros are C conveniences and are skipped; inside #if blocks only the
   export macros may be defined.
@@ -263,7 +265,8 @@ class Parser:
             name, rest = (words + [""])[0], (words + ["", ""])[1]
             inside = any(s != "guard" for s in stack)
             if name in ("if", "ifdef", "ifndef"):
-                if name == "ifndef" and not stack and n == 0:
+                if name == "ifndef" and ((not stack and n == 0) or rest.strip().startswith("FRUSTA_BASE_")):
+                    # the include guard, or a block core/base.h copies (generate_base.py)
                     pending_guard = rest.strip()
                     stack.append("guard")
                 else:

@@ -63,6 +63,10 @@ FRUSTA_API int32_t frusta_abi_version(void);
 
 /* ---------------------------------------------------------------- errors */
 
+/* Shared with the engine's layers: native/src/core/base.h copies each FRUSTA_BASE_*
+ * block (tools/bindings/generate_base.py; a test checks the copy). */
+#ifndef FRUSTA_BASE_RESULT
+#define FRUSTA_BASE_RESULT
 /** What a call returns: FRUSTA_OK, or why it failed (frusta_last_error() says more). */
 typedef enum frusta_result {
   FRUSTA_OK = 0,                     /* success */
@@ -83,6 +87,7 @@ typedef enum frusta_result {
   FRUSTA_ERROR_WRONG_STATE = 15,     /* not now: e.g. stepping a world its own thread runs */
   FRUSTA_ERROR_UNAVAILABLE = 16      /* a part this build lacks: the baker where Embree does not exist */
 } frusta_result;
+#endif /* FRUSTA_BASE_RESULT */
 
 /** Message of the last failed call on this thread ("" after none). Valid until the
  *  next frusta call on this thread. Thread: any (the message is thread-local). */
@@ -137,6 +142,8 @@ typedef struct frusta_segment {
 
 /* ---------------------------------------------------------------- hand */
 
+#ifndef FRUSTA_BASE_HAND
+#define FRUSTA_BASE_HAND
 /** Which hand; a left hand mirrors a right one through the hand frame's x-z plane. */
 typedef enum frusta_hand_side {
   FRUSTA_HAND_RIGHT = 0, /* a right hand (the default) */
@@ -166,6 +173,7 @@ typedef enum frusta_finger {
 #define FRUSTA_MAX_JOINT_ANGLE 12.566370614359172
 /** Palm pose degrees of freedom in a Jacobian: translation x y z, then rotation x y z. */
 #define FRUSTA_PALM_DOF 6
+#endif /* FRUSTA_BASE_HAND */
 
 /** Creation parameters of a hand.
  *
@@ -778,12 +786,15 @@ typedef struct frusta_device_status {
   double fingertip_force[FRUSTA_FINGER_COUNT][3]; /* newtons, palm frame */
 } frusta_device_status;
 
+#ifndef FRUSTA_BASE_DEVICE_KIND
+#define FRUSTA_BASE_DEVICE_KIND
 /** What frusta_enumerate_devices found (frusta_device_info.kind). */
 typedef enum frusta_device_kind {
   FRUSTA_DEVICE_KIND_SERIAL = 1, /* a serial port: open as opengloves: or serial: */
   FRUSTA_DEVICE_KIND_HID = 2,    /* a vendor-defined HID device: hid: */
   FRUSTA_DEVICE_KIND_USB = 3     /* any USB device (for its ids; not opened directly) */
 } frusta_device_kind;
+#endif /* FRUSTA_BASE_DEVICE_KIND */
 
 /** One device frusta_enumerate_devices found. */
 typedef struct frusta_device_info {

@@ -34,17 +34,6 @@ struct BakeParams {
   uint64_t seed = 1;               // any value
 };
 
-inline BakeParams bake_params_of(const frusta_bake_def& def) {
-  BakeParams p;
-  p.target_error = def.target_error;
-  p.max_leaves = def.max_leaves;
-  p.branching = def.branching;
-  p.max_depth = def.max_depth;
-  p.error_samples = def.error_samples;
-  p.seed = def.seed;
-  return p;
-}
-
 enum class BakeField { kNone, kTarget, kLeaves, kBranching, kDepth, kSamples };
 
 // FRUSTA_OK, or FRUSTA_ERROR_NOT_FINITE / FRUSTA_ERROR_OUT_OF_RANGE with a message

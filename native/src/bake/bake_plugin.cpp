@@ -42,13 +42,19 @@ frusta_result read_mesh(const float* vertices, int32_t vertex_count, const int32
 }
 
 frusta_result bake(const float* vertices, int32_t vertex_count, const int32_t* indices,
-                   int32_t index_count, const frusta_bake_def& def, std::vector<uint8_t>* file,
-                   bool* target_met) {
+                   int32_t index_count, const frusta_bake_plugin_params& params,
+                   std::vector<uint8_t>* file, bool* target_met) {
   TriangleMesh mesh;
   if (frusta_result r = read_mesh(vertices, vertex_count, indices, index_count, &mesh)) return r;
+  BakeParams p;
+  p.target_error = params.target_error;
+  p.max_leaves = params.max_leaves;
+  p.branching = params.branching;
+  p.max_depth = params.max_depth;
+  p.error_samples = params.error_samples;
+  p.seed = params.seed;
   TreeFile tree;
-  if (frusta_result r = bake_sphere_tree(mesh, bake_params_of(def), nullptr, &tree, target_met))
-    return r;
+  if (frusta_result r = bake_sphere_tree(mesh, p, nullptr, &tree, target_met)) return r;
   *file = encode_tree_file(tree);
   return FRUSTA_OK;
 }
@@ -61,14 +67,15 @@ FRUSTA_BAKE_PLUGIN_API int32_t frusta_bake_plugin_version(void) {
 
 FRUSTA_BAKE_PLUGIN_API frusta_result frusta_bake_plugin_bake(
     const float* vertices, int32_t vertex_count, const int32_t* indices, int32_t index_count,
-    const frusta_bake_def* def, uint8_t** out_tree_file, int64_t* out_size,
+    const frusta_bake_plugin_params* params, uint8_t** out_tree_file, int64_t* out_size,
     int32_t* out_target_met, char* error, int32_t error_capacity) {
   frusta_result r = guarded("frusta_bake_sphere_tree", [&] {
-    if (frusta_result p = check_pointer(def, "def")) return p;
+    if (frusta_result p = check_pointer(params, "params")) return p;
     if (frusta_result p = check_pointer(out_tree_file, "out_tree_file")) return p;
     std::vector<uint8_t> file;
     bool target_met = false;
-    if (frusta_result b = bake(vertices, vertex_count, indices, index_count, *def, &file, &target_met))
+    if (frusta_result b = bake(vertices, vertex_count, indices, index_count, *params, &file,
+                               &target_met))
       return b;
     auto* bytes = static_cast<uint8_t*>(std::malloc(file.size()));
     if (bytes == nullptr)
@@ -82,9 +89,9 @@ FRUSTA_BAKE_PLUGIN_API frusta_result frusta_bake_plugin_bake(
   if (r != FRUSTA_OK && error != nullptr && error_capacity > 0) {
     // the message without fail()'s "FRUSTA_ERROR_...: " prefix: the runtime's fail()
     // adds the code again
-    const char* message = frusta_last_error();
-    const size_t prefix = std::strlen(frusta_result_name(r));
-    if (std::strncmp(message, frusta_result_name(r), prefix) == 0 && message[prefix] == ':')
+    const char* message = last_error_message();
+    const size_t prefix = std::strlen(result_name(r));
+    if (std::strncmp(message, result_name(r), prefix) == 0 && message[prefix] == ':')
       message += prefix + (message[prefix + 1] == ' ' ? 2 : 1);
     std::strncpy(error, message, static_cast<size_t>(error_capacity) - 1);
     error[error_capacity - 1] = 0;

@@ -11,7 +11,7 @@
 #ifndef FRUSTA_BAKE_PLUGIN_H
 #define FRUSTA_BAKE_PLUGIN_H
 
-#include "frusta/frusta.h"
+#include "core/base.h"
 
 #if defined(FRUSTA_BAKE_PLUGIN_BUILD)
 #  if defined(_WIN32)
@@ -28,14 +28,24 @@
 #  define FRUSTA_BAKE_PLUGIN_API FRUSTA_BAKE_PLUGIN_EXPORT
 #endif
 
-/* bumped with any change below, and with any change of frusta_bake_def
- * (2: error messages come without the code's name) */
-#define FRUSTA_BAKE_PLUGIN_VERSION 2
+/* bumped with any change below (2: error messages come without the code's name;
+ * 3: the plugin's own parameter struct instead of frusta_bake_def) */
+#define FRUSTA_BAKE_PLUGIN_VERSION 3
+
+/** What to bake: frusta_bake_def's values (the runtime checked them). */
+typedef struct frusta_bake_plugin_params {
+  double target_error;   /* metres */
+  int64_t max_leaves;
+  int64_t branching;
+  int64_t max_depth;
+  int64_t error_samples;
+  uint64_t seed;
+} frusta_bake_plugin_params;
 
 /** FRUSTA_BAKE_PLUGIN_VERSION of the baker's build. */
 FRUSTA_BAKE_PLUGIN_API int32_t frusta_bake_plugin_version(void);
 
-/** Bake as frusta_bake_sphere_tree documents (def already checked by the runtime).
+/** Bake as frusta_bake_sphere_tree documents (params already checked by the runtime).
  *  On success *out_tree_file holds the tree as a .frtree file of *out_size bytes,
  *  to release with frusta_bake_plugin_free, and *out_target_met is 1 when both error
  *  figures met the target. On failure, the message is written to error (at most
@@ -43,7 +53,7 @@ FRUSTA_BAKE_PLUGIN_API int32_t frusta_bake_plugin_version(void);
  *  the caller reports with the result. Thread: any. */
 FRUSTA_BAKE_PLUGIN_API frusta_result frusta_bake_plugin_bake(
     const float* vertices, int32_t vertex_count, const int32_t* indices, int32_t index_count,
-    const frusta_bake_def* def, uint8_t** out_tree_file, int64_t* out_size,
+    const frusta_bake_plugin_params* params, uint8_t** out_tree_file, int64_t* out_size,
     int32_t* out_target_met, char* error, int32_t error_capacity);
 
 /** Release what frusta_bake_plugin_bake returned (null is ignored). Thread: any. */

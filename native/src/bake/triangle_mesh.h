@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "frusta/frusta.h"
+#include "core/base.h"
 #include "geometry/types.h"
 
 namespace frusta {

@@ -13,6 +13,21 @@
 
 using namespace frusta;
 
+namespace {
+
+BakeParams read_bake_def(const frusta_bake_def& def) {
+  BakeParams p;
+  p.target_error = def.target_error;
+  p.max_leaves = def.max_leaves;
+  p.branching = def.branching;
+  p.max_depth = def.max_depth;
+  p.error_samples = def.error_samples;
+  p.seed = def.seed;
+  return p;
+}
+
+}  // namespace
+
 FRUSTA_API frusta_bake_def frusta_default_bake_def(void) {
   const BakeParams defaults;
   frusta_bake_def def;
@@ -35,7 +50,8 @@ FRUSTA_API frusta_result frusta_bake_sphere_tree(const float* vertices, int32_t 
   if (frusta_result r = check_def_input(def, "frusta_bake_def")) return r;
   if (frusta_result r = check_pointer(out_tree, "out_tree")) return r;
   // the parameters' one check, before the baker is loaded (bake/bake_params.h)
-  if (frusta_result r = check_bake_params(bake_params_of(*def))) return r;
+  const BakeParams params = read_bake_def(*def);
+  if (frusta_result r = check_bake_params(params)) return r;
   return guarded("frusta_bake_sphere_tree", [&] {
     std::string why;
     const BakePlugin* plugin = bake_plugin(&why);
@@ -44,8 +60,12 @@ FRUSTA_API frusta_result frusta_bake_sphere_tree(const float* vertices, int32_t 
     int64_t size = 0;
     int32_t target_met = 0;
     char error[1024] = "";
-    const frusta_result r = plugin->bake(vertices, vertex_count, indices, index_count, def,
-                                         &bytes, &size, &target_met, error, sizeof error);
+    const frusta_bake_plugin_params plugin_params{params.target_error, params.max_leaves,
+                                                  params.branching,    params.max_depth,
+                                                  params.error_samples, params.seed};
+    const frusta_result r = plugin->bake(vertices, vertex_count, indices, index_count,
+                                         &plugin_params, &bytes, &size, &target_met, error,
+                                         sizeof error);
     if (r != FRUSTA_OK) return fail(r, "%s", error);  // the baker's message, without its code
     auto tree = std::make_unique<TreeObject>();
     const frusta_result decoded =

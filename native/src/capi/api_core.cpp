@@ -11,28 +11,8 @@ FRUSTA_API int32_t frusta_abi_version(void) { return FRUSTA_ABI_VERSION; }
 
 FRUSTA_API const char* frusta_last_error(void) { return frusta::last_error_message(); }
 
-FRUSTA_API const char* frusta_result_name(int32_t result) {
-  switch (result) {
-    case FRUSTA_OK: return "FRUSTA_OK";
-    case FRUSTA_ERROR_NULL_POINTER: return "FRUSTA_ERROR_NULL_POINTER";
-    case FRUSTA_ERROR_STRUCT_SIZE: return "FRUSTA_ERROR_STRUCT_SIZE";
-    case FRUSTA_ERROR_DEF_NOT_DEFAULTED: return "FRUSTA_ERROR_DEF_NOT_DEFAULTED";
-    case FRUSTA_ERROR_NULL_ID: return "FRUSTA_ERROR_NULL_ID";
-    case FRUSTA_ERROR_STALE_ID: return "FRUSTA_ERROR_STALE_ID";
-    case FRUSTA_ERROR_NOT_FINITE: return "FRUSTA_ERROR_NOT_FINITE";
-    case FRUSTA_ERROR_OUT_OF_RANGE: return "FRUSTA_ERROR_OUT_OF_RANGE";
-    case FRUSTA_ERROR_CAPACITY: return "FRUSTA_ERROR_CAPACITY";
-    case FRUSTA_ERROR_ABI_MISMATCH: return "FRUSTA_ERROR_ABI_MISMATCH";
-    case FRUSTA_ERROR_OUT_OF_MEMORY: return "FRUSTA_ERROR_OUT_OF_MEMORY";
-    case FRUSTA_ERROR_INTERNAL: return "FRUSTA_ERROR_INTERNAL";
-    case FRUSTA_ERROR_IO: return "FRUSTA_ERROR_IO";
-    case FRUSTA_ERROR_FILE_FORMAT: return "FRUSTA_ERROR_FILE_FORMAT";
-    case FRUSTA_ERROR_CORRUPT_FILE: return "FRUSTA_ERROR_CORRUPT_FILE";
-    case FRUSTA_ERROR_WRONG_STATE: return "FRUSTA_ERROR_WRONG_STATE";
-    case FRUSTA_ERROR_UNAVAILABLE: return "FRUSTA_ERROR_UNAVAILABLE";
-    default: return "FRUSTA_ERROR_UNKNOWN";
-  }
-}
+FRUSTA_API const char* frusta_result_name(int32_t result) { return frusta::result_name(result); }
+
 
 FRUSTA_API frusta_result frusta_check_abi(int32_t header_abi_version) {
   if (header_abi_version == FRUSTA_ABI_VERSION) return FRUSTA_OK;

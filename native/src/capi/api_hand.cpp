@@ -17,9 +17,6 @@ using namespace frusta;
 
 namespace {
 
-constexpr double kDefaultHandLength = 0.19;   // metres, about the adult 50th percentile
-constexpr double kDefaultHandBreadth = 0.085;
-
 // A negative capacity is a wrong argument, not a small buffer: OUT_OF_RANGE, as every
 // other call with a capacity says
 frusta_result check_capacity(int32_t capacity) {
@@ -39,9 +36,7 @@ FRUSTA_API frusta_hand_def frusta_default_hand_def(void) {
   frusta_hand_def def;
   std::memset(&def, 0, sizeof def);
   def.struct_size = sizeof(frusta_hand_def);
-  def.side = FRUSTA_HAND_RIGHT;
-  fill_hand_geometry(def, kDefaultHandLength, kDefaultHandBreadth);
-  fill_joint_limits(def);
+  store_hand_def(default_hand_def(), &def);
   def.internal_value = kDefCookie;
   return def;
 }
@@ -53,7 +48,7 @@ FRUSTA_API frusta_result frusta_hand_def_set_size(frusta_hand_def* def, double h
     return r;
   if (frusta_result r = check_range(hand_breadth, kMinHandSize, kMaxHandSize, false, "hand_breadth"))
     return r;
-  frusta_hand_def sized = *def;
+  HandDef sized = read_hand_def(*def);
   fill_hand_geometry(sized, hand_length, hand_breadth);
   if (frusta_result r = check_hand_def(sized)) {
     // each size is in range, but together they make no hand (a 1 cm hand's fingertip
@@ -64,15 +59,16 @@ FRUSTA_API frusta_result frusta_hand_def_set_size(frusta_hand_def* def, double h
     return fail(r, "hand_length %g m and hand_breadth %g m give no valid hand: %s", hand_length,
                 hand_breadth, colon == std::string::npos ? part.c_str() : part.c_str() + colon + 2);
   }
-  *def = sized;
+  store_hand_def(sized, def);
   return FRUSTA_OK;
 }
 
 FRUSTA_API frusta_result frusta_create_hand(const frusta_hand_def* def, frusta_hand_id* out_hand) {
   if (frusta_result r = check_def_input(def, "frusta_hand_def")) return r;
   if (frusta_result r = check_pointer(out_hand, "out_hand")) return r;
-  if (frusta_result r = check_hand_def(*def)) return r;
-  return guarded("frusta_create_hand", [&] { return hand_registry().create(*def, out_hand); });
+  const HandDef d = read_hand_def(*def);
+  if (frusta_result r = check_hand_def(d)) return r;
+  return guarded("frusta_create_hand", [&] { return hand_registry().create(d, out_hand); });
 }
 
 FRUSTA_API frusta_result frusta_destroy_hand(frusta_hand_id hand) {

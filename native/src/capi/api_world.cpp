@@ -176,9 +176,10 @@ FRUSTA_API frusta_result frusta_world_add_hand(frusta_world_id world, const frus
   if (frusta_result r = world_registry().find(world, &w)) return r;
   if (frusta_result r = check_def_input(def, "frusta_hand_def")) return r;
   if (frusta_result r = check_pointer(out_hand, "out_hand")) return r;
-  if (frusta_result r = check_hand_def(*def)) return r;
+  const HandDef d = read_hand_def(*def);
+  if (frusta_result r = check_hand_def(d)) return r;
   return guarded("frusta_world_add_hand", [&] {
-    const frusta_result r = w->world.add_hand(make_hand_model(*def), out_hand);
+    const frusta_result r = w->world.add_hand(make_hand_model(d), out_hand);
     if (r == FRUSTA_OK) w->latched = nullptr;  // the snapshots were rebuilt for the new hand
     return r;
   });

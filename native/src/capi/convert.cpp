@@ -2,6 +2,7 @@
 #include "capi/convert.h"
 
 #include <algorithm>
+#include <cstring>
 #include <string>
 
 #include "core/error.h"
@@ -67,6 +68,39 @@ frusta_result read_joint_angles(const double* in, int32_t count, const char* nam
   std::copy(in, in + FRUSTA_HAND_JOINT_COUNT, out->begin());
   return FRUSTA_OK;
 }
+
+namespace {
+
+// the fields both defs share, by name, from one to the other
+template <class From, class To>
+void copy_hand_fields(const From& in, To& out) {
+  out.side = in.side;
+  out.hand_length = in.hand_length;
+  out.hand_breadth = in.hand_breadth;
+  std::memcpy(out.segment_length, in.segment_length, sizeof out.segment_length);
+  std::memcpy(out.joint_radius, in.joint_radius, sizeof out.joint_radius);
+  std::memcpy(out.base_position, in.base_position, sizeof out.base_position);
+  std::memcpy(out.base_rotation, in.base_rotation, sizeof out.base_rotation);
+  std::memcpy(out.joint_min, in.joint_min, sizeof out.joint_min);
+  std::memcpy(out.joint_max, in.joint_max, sizeof out.joint_max);
+  out.palm_length = in.palm_length;
+  out.palm_breadth = in.palm_breadth;
+  out.palm_thickness = in.palm_thickness;
+}
+
+static_assert(sizeof(HandDef::joint_radius) == sizeof(frusta_hand_def::joint_radius) &&
+                  sizeof(HandDef::base_position) == sizeof(frusta_hand_def::base_position),
+              "the two hand defs hold the same arrays");
+
+}  // namespace
+
+HandDef read_hand_def(const frusta_hand_def& in) {
+  HandDef out;
+  copy_hand_fields(in, out);
+  return out;
+}
+
+void store_hand_def(const HandDef& in, frusta_hand_def* out) { copy_hand_fields(in, *out); }
 
 void store(const vec3& v, double out[3]) {
   for (int k = 0; k < 3; ++k) out[k] = v[k];

@@ -9,6 +9,7 @@
 #include "core/validate.h"
 #include "frusta/frusta.h"
 #include "geometry/types.h"
+#include "hand/hand_model.h"
 
 namespace frusta {
 
@@ -35,6 +36,11 @@ frusta_result read_pose(const frusta_pose* in, const char* name, Pose* out);
 // FRUSTA_HAND_JOINT_COUNT finite angles within kMaxJointAngle; count must equal it.
 frusta_result read_joint_angles(const double* in, int32_t count, const char* name,
                                 std::array<double, FRUSTA_HAND_JOINT_COUNT>* out);
+
+// The def's fields as they are (check_hand_def checks them), both ways; store_hand_def
+// leaves out's struct_size and internal_value as they were.
+HandDef read_hand_def(const frusta_hand_def& in);
+void store_hand_def(const HandDef& in, frusta_hand_def* out);
 
 void store(const vec3& v, double out[3]);
 void store(const Pose& pose, frusta_pose* out);

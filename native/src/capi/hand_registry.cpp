@@ -8,7 +8,7 @@ HandRegistry& hand_registry() {
   return registry;
 }
 
-frusta_result HandRegistry::create(const frusta_hand_def& def, frusta_hand_id* out) {
+frusta_result HandRegistry::create(const HandDef& def, frusta_hand_id* out) {
   auto hand = std::make_unique<HandObject>();
   hand->model = make_hand_model(def);
   clamp_to_limits(hand->model, hand->state);

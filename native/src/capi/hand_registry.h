@@ -18,7 +18,7 @@ class HandRegistry : public Registry<HandObject, frusta_hand_id> {
  public:
   HandRegistry() : Registry("hand") {}
   // Build a hand from a checked def, at rest (angles clamped into the limits).
-  frusta_result create(const frusta_hand_def& def, frusta_hand_id* out);
+  frusta_result create(const HandDef& def, frusta_hand_id* out);
 };
 
 HandRegistry& hand_registry();

@@ -6,7 +6,7 @@
 #include <exception>
 #include <new>
 
-#include "frusta/frusta.h"
+#include "core/base.h"
 
 namespace frusta {
 
@@ -33,6 +33,10 @@ frusta_result guarded(const char* function, Body&& body) noexcept {
     return fail(FRUSTA_ERROR_INTERNAL, "%s: unknown exception", function);
   }
 }
+
+// The static name of a result code, e.g. "FRUSTA_ERROR_STALE_ID" ("FRUSTA_ERROR_UNKNOWN"
+// for a value that is none).
+const char* result_name(int32_t result);
 
 const char* last_error_message();
 void clear_last_error();

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <cstdio>
 
-#include "frusta/frusta.h"
+#include "core/base.h"
 
 namespace frusta {
 

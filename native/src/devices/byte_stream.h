@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <string>
 
-#include "frusta/frusta.h"
+#include "core/base.h"
 
 namespace frusta {
 

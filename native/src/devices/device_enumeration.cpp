@@ -9,7 +9,7 @@
 #include "devices/hid_stream.h"
 #include "devices/serial_ports.h"
 #include "devices/usb_watch.h"
-#include "frusta/frusta.h"
+#include "core/base.h"
 
 namespace frusta {
 

@@ -9,7 +9,7 @@
 
 #include <glm/gtc/quaternion.hpp>
 
-#include "frusta/frusta.h"
+#include "core/base.h"
 #include "geometry/types.h"
 
 namespace frusta {

@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-#include "frusta/frusta.h"
+#include "core/base.h"
 
 namespace frusta {
 

@@ -9,7 +9,7 @@
 #include <array>
 #include <cstdint>
 
-#include "frusta/frusta.h"
+#include "core/base.h"
 
 namespace frusta {
 

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <string>
 
-#include "frusta/frusta.h"
+#include "core/base.h"
 
 namespace frusta {
 

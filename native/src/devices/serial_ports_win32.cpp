@@ -11,7 +11,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "frusta/frusta.h"
+#include "core/base.h"
 
 namespace frusta {
 

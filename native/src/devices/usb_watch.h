@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "frusta/frusta.h"
+#include "core/base.h"
 
 struct libusb_context;
 

@@ -52,6 +52,9 @@ constexpr double kPalmThicknessRatio = 0.35;  // of breadth: ~3 cm at 8.5 cm
 // J Hand Surg 15A:240-243, 1990 (MCP -20..90 deg, PIP 0..110, DIP -5..80,
 // abduction +-20); thumb CMC abduction -15..50, CMC flexion -20..50, MCP -10..60,
 // IP -15..80 deg.
+constexpr double kDefaultHandLength = 0.19;  // metres, about the adult 50th percentile
+constexpr double kDefaultHandBreadth = 0.085;
+
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 constexpr double kFingerMin[4] = {-20 * kDeg, -20 * kDeg, 0.0, -5 * kDeg};
 constexpr double kFingerMax[4] = {20 * kDeg, 90 * kDeg, 110 * kDeg, 80 * kDeg};
@@ -60,7 +63,7 @@ constexpr double kThumbMax[4] = {50 * kDeg, 50 * kDeg, 60 * kDeg, 80 * kDeg};
 
 }  // namespace
 
-void fill_hand_geometry(frusta_hand_def& def, double hand_length, double hand_breadth) {
+void fill_hand_geometry(HandDef& def, double hand_length, double hand_breadth) {
   def.hand_length = hand_length;
   def.hand_breadth = hand_breadth;
   for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
@@ -86,13 +89,20 @@ void fill_hand_geometry(frusta_hand_def& def, double hand_length, double hand_br
   def.palm_thickness = kPalmThicknessRatio * hand_breadth;
 }
 
-void fill_joint_limits(frusta_hand_def& def) {
+void fill_joint_limits(HandDef& def) {
   for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
     for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j) {
       def.joint_min[f][j] = f == kThumb ? kThumbMin[j] : kFingerMin[j];
       def.joint_max[f][j] = f == kThumb ? kThumbMax[j] : kFingerMax[j];
     }
   }
+}
+
+HandDef default_hand_def() {
+  HandDef def;
+  fill_hand_geometry(def, kDefaultHandLength, kDefaultHandBreadth);
+  fill_joint_limits(def);
+  return def;
 }
 
 }  // namespace frusta

@@ -52,7 +52,7 @@ std::vector<Sphere> make_palm_spheres(double length, double breadth, double thic
 
 }  // namespace
 
-frusta_result check_hand_def(const frusta_hand_def& def) {
+frusta_result check_hand_def(const HandDef& def) {
   if (def.side != FRUSTA_HAND_RIGHT && def.side != FRUSTA_HAND_LEFT)
     return fail(FRUSTA_ERROR_OUT_OF_RANGE, "hand_def.side is %d, must be FRUSTA_HAND_RIGHT (0) "
                 "or FRUSTA_HAND_LEFT (1)", def.side);
@@ -98,7 +98,7 @@ frusta_result check_hand_def(const frusta_hand_def& def) {
   return FRUSTA_OK;
 }
 
-HandModel make_hand_model(const frusta_hand_def& def) {
+HandModel make_hand_model(const HandDef& def) {
   HandModel m;
   m.left = def.side == FRUSTA_HAND_LEFT;
   for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) {

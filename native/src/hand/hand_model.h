@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The immutable part of a hand: dimensions, finger bases, limits and palm spheres,
-// built once from a checked frusta_hand_def.
+// A hand's creation parameters (HandDef) and the immutable part of a hand built from
+// them once they are checked: dimensions, finger bases, limits and palm spheres.
 #pragma once
 
 #include <array>
@@ -8,10 +8,28 @@
 
 #include <glm/mat3x3.hpp>
 
-#include "frusta/frusta.h"
+#include "core/base.h"
 #include "geometry/types.h"
 
 namespace frusta {
+
+// frusta_hand_def's fields, without the ABI's bookkeeping (the C ABI copies them in
+// and out); default_hand_def() in anthropometry.h fills one. Frames, units and ranges
+// are frusta_hand_def's.
+struct HandDef {
+  int32_t side = FRUSTA_HAND_RIGHT;  // frusta_hand_side
+  double hand_length = 0.0;          // metres, wrist crease to middle fingertip
+  double hand_breadth = 0.0;         // metres, across the metacarpal heads
+  double segment_length[FRUSTA_FINGER_COUNT][FRUSTA_SEGMENTS_PER_FINGER] = {};  // metres
+  double joint_radius[FRUSTA_FINGER_COUNT][4] = {};  // metres: first..third joint, tip
+  double base_position[FRUSTA_FINGER_COUNT][3] = {};  // metres, hand frame
+  double base_rotation[FRUSTA_FINGER_COUNT][3] = {};  // radians, x-y-z
+  double joint_min[FRUSTA_FINGER_COUNT][FRUSTA_JOINTS_PER_FINGER] = {};  // radians
+  double joint_max[FRUSTA_FINGER_COUNT][FRUSTA_JOINTS_PER_FINGER] = {};  // radians
+  double palm_length = 0.0;     // metres
+  double palm_breadth = 0.0;    // metres
+  double palm_thickness = 0.0;  // metres; also the palm spheres' diameter
+};
 
 struct FingerModel {
   std::array<double, FRUSTA_SEGMENTS_PER_FINGER> length{};  // metres
@@ -39,9 +57,9 @@ constexpr double kMinHandPart = 1e-4;
 constexpr int32_t kMaxPalmSpheres = 4096;
 
 // Check every field of def; on failure the thread's error names the field.
-frusta_result check_hand_def(const frusta_hand_def& def);
+frusta_result check_hand_def(const HandDef& def);
 
 // Build the model of a def that passed check_hand_def.
-HandModel make_hand_model(const frusta_hand_def& def);
+HandModel make_hand_model(const HandDef& def);
 
 }  // namespace frusta

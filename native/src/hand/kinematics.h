@@ -7,7 +7,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat3x3.hpp>
 
-#include "frusta/frusta.h"
+#include "core/base.h"
 #include "geometry/types.h"
 #include "hand/hand_model.h"
 

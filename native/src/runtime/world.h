@@ -26,7 +26,7 @@
 #include "forces/contact_forces.h"
 #include "forces/device_outputs.h"
 #include "forces/force_params.h"
-#include "frusta/frusta.h"
+#include "core/base.h"
 #include "runtime/spsc_queue.h"
 #include "runtime/step_histogram.h"
 #include "runtime/triple_buffer.h"

@@ -5,7 +5,7 @@
 #include <array>
 #include <cstdint>
 
-#include "frusta/frusta.h"
+#include "core/base.h"
 #include "geometry/constraint.h"
 
 namespace frusta {

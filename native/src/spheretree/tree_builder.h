@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "frusta/frusta.h"
+#include "core/base.h"
 #include "spheretree/sphere_tree.h"
 
 namespace frusta {

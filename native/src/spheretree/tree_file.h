@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "frusta/frusta.h"
+#include "core/base.h"
 #include "spheretree/sphere_tree.h"
 
 namespace frusta {

@@ -7,6 +7,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/error.h"
 #include "scenes/meshes.h"
 
 namespace frusta {
@@ -56,7 +57,7 @@ TEST(Baker, BothErrorFiguresMeetTheTargetAndAnIndependentCheckAgrees) {
     TreeFile file;
     bool met = false;
     ASSERT_EQ(bake_sphere_tree(c.mesh, params, nullptr, &file, &met), FRUSTA_OK)
-        << c.name << ": " << frusta_last_error();
+        << c.name << ": " << frusta::last_error_message();
     EXPECT_TRUE(met) << c.name;
     EXPECT_LE(file.bake.uncovered_error, 0.001) << c.name;
     EXPECT_LE(file.bake.protruding_error, 0.001) << c.name;
@@ -112,7 +113,7 @@ TEST(Baker, BadParametersAndMeshesAreRefused) {
   EXPECT_EQ(bake_sphere_tree(scenes::make_box(vec3(0.1)), p, nullptr, &file, &met), FRUSTA_ERROR_OUT_OF_RANGE);
   TriangleMesh empty;
   EXPECT_EQ(bake_sphere_tree(empty, BakeParams{}, nullptr, &file, &met), FRUSTA_ERROR_OUT_OF_RANGE);
-  EXPECT_NE(std::string(frusta_last_error()).find("no triangles"), std::string::npos);
+  EXPECT_NE(std::string(frusta::last_error_message()).find("no triangles"), std::string::npos);
 }
 
 }  // namespace

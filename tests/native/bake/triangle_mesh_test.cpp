@@ -5,6 +5,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/error.h"
 #include "scenes/meshes.h"
 
 namespace frusta {
@@ -15,14 +16,14 @@ TEST(TriangleMesh, CheckNamesTheFault) {
   EXPECT_EQ(check_mesh(m, "box"), FRUSTA_OK);
   m.vertices[3].y = std::nan("");
   EXPECT_EQ(check_mesh(m, "box"), FRUSTA_ERROR_NOT_FINITE);
-  EXPECT_NE(std::string(frusta_last_error()).find("box: vertex 3"), std::string::npos);
+  EXPECT_NE(std::string(frusta::last_error_message()).find("box: vertex 3"), std::string::npos);
   m = scenes::make_box(vec3(0.1));
   m.triangles[5][1] = 999;
   EXPECT_EQ(check_mesh(m, "box"), FRUSTA_ERROR_OUT_OF_RANGE);
-  EXPECT_NE(std::string(frusta_last_error()).find("triangle 5"), std::string::npos);
+  EXPECT_NE(std::string(frusta::last_error_message()).find("triangle 5"), std::string::npos);
   m.triangles = {{0, 0, 1}};  // no area
   EXPECT_EQ(check_mesh(m, "box"), FRUSTA_ERROR_OUT_OF_RANGE);
-  EXPECT_NE(std::string(frusta_last_error()).find("no triangles with area"), std::string::npos);
+  EXPECT_NE(std::string(frusta::last_error_message()).find("no triangles with area"), std::string::npos);
 }
 
 TEST(TriangleMesh, SamplesLieOnTheSurfaceWithOutwardNormals) {

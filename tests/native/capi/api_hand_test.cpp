@@ -13,6 +13,7 @@
 #include <random>
 #include <vector>
 
+#include "capi/convert.h"
 #include "capi_fixture.h"
 #include "frusta/frusta.h"
 #include "hand/hand_model.h"
@@ -113,7 +114,7 @@ struct Reference {
 
 Reference internal_hand(const frusta_hand_def& def, const frusta_pose& palm, const Angles& angles) {
   Reference r;
-  r.model = make_hand_model(def);
+  r.model = make_hand_model(read_hand_def(def));
   r.state.palm_position = v(palm.position);
   const glm::dquat q(palm.rotation[3], palm.rotation[0], palm.rotation[1], palm.rotation[2]);
   r.state.palm_rotation = q / glm::length(q);

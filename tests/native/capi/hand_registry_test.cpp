@@ -14,6 +14,7 @@
 
 #include "capi_fixture.h"
 #include "frusta/frusta.h"
+#include "hand/anthropometry.h"
 
 namespace frusta {
 namespace {
@@ -26,7 +27,7 @@ Key key(frusta_hand_id id) { return {id.index1, id.world0, id.generation}; }
 
 TEST_F(capiHandRegistry, ThousandCreateDestroyCyclesNeverReuseAnId) {
   HandRegistry registry;
-  const frusta_hand_def def = frusta_default_hand_def();
+  const HandDef def = default_hand_def();
   std::set<Key> issued;
   std::vector<frusta_hand_id> destroyed;
   for (int cycle = 0; cycle < 1000; ++cycle) {
@@ -56,7 +57,7 @@ TEST_F(capiHandRegistry, ThousandCreateDestroyCyclesNeverReuseAnId) {
 
 TEST_F(capiHandRegistry, InterleavedHandsKeepUniqueIdsAndOnlyLiveOnesAreValid) {
   HandRegistry registry;
-  const frusta_hand_def def = frusta_default_hand_def();
+  const HandDef def = default_hand_def();
   std::mt19937_64 rng(31);
   std::set<Key> issued;
   std::vector<frusta_hand_id> live, dead;
@@ -85,7 +86,7 @@ TEST_F(capiHandRegistry, InterleavedHandsKeepUniqueIdsAndOnlyLiveOnesAreValid) {
 
 TEST_F(capiHandRegistry, NullAndStaleIdsAreInvalidWithoutAMessage) {
   HandRegistry registry;
-  const frusta_hand_def def = frusta_default_hand_def();
+  const HandDef def = default_hand_def();
   frusta_hand_id id{};
   ASSERT_EQ(registry.create(def, &id), FRUSTA_OK);
 
@@ -113,7 +114,7 @@ TEST_F(capiHandRegistry, NullAndStaleIdsAreInvalidWithoutAMessage) {
 
 TEST_F(capiHandRegistry, FindReturnsTheHandBuiltFromItsDef) {
   HandRegistry registry;
-  frusta_hand_def right = frusta_default_hand_def(), left = frusta_default_hand_def();
+  HandDef right = default_hand_def(), left = default_hand_def();
   left.side = FRUSTA_HAND_LEFT;
   left.joint_min[2][1] = 0.1;  // zero is clamped into the limits at creation
   frusta_hand_id a{}, b{};
@@ -134,7 +135,7 @@ TEST_F(capiHandRegistry, FindReturnsTheHandBuiltFromItsDef) {
 // so that a zero-initialised generation never matches.
 TEST_F(capiHandRegistry, GenerationWrapsAroundSkippingZero) {
   HandRegistry registry;
-  const frusta_hand_def def = frusta_default_hand_def();
+  const HandDef def = default_hand_def();
   frusta_hand_id first{}, id{};
   ASSERT_EQ(registry.create(def, &first), FRUSTA_OK);
   ASSERT_EQ(registry.destroy(first), FRUSTA_OK);
@@ -153,7 +154,7 @@ TEST_F(capiHandRegistry, GenerationWrapsAroundSkippingZero) {
 // creates and destroys (run under TSan in CI to catch a data race).
 TEST_F(capiHandRegistry, IsValidFromOtherThreadsWhileTheMainThreadCreatesAndDestroys) {
   HandRegistry registry;
-  const frusta_hand_def def = frusta_default_hand_def();
+  const HandDef def = default_hand_def();
   frusta_hand_id keep{};
   ASSERT_EQ(registry.create(def, &keep), FRUSTA_OK);
   std::atomic<bool> stop{false};

@@ -26,6 +26,7 @@
 #include "devices/frusta_protocol.h"
 #include "devices/opengloves_protocol.h"
 #include "devices/serial_stream.h"
+#include "hand/anthropometry.h"
 #include "hand/hand_model.h"
 #include "runtime/periodic_clock.h"
 #include "scenes/binary_glove.h"
@@ -54,7 +55,7 @@ constexpr double kPatience = 120.0;
 // the glove to brake that finger (and only that one).
 struct Scene {
   Scene() : world(WorldDef{}) {
-    const HandModel model = make_hand_model(frusta_default_hand_def());
+    const HandModel model = make_hand_model(default_hand_def());
     const double half = 0.5 * scenes::test_box_spec("press_box").size.x;
     ObjectDef box;
     box.pose.position = scenes::index_press_box_centre(model, half, 0.002);
@@ -605,7 +606,7 @@ TEST(deviceLink, NoDeviceNoThread) {
   const int base = thread_count();
   World world(WorldDef{});
   int32_t hand = -1;
-  ASSERT_EQ(world.add_hand(make_hand_model(frusta_default_hand_def()), &hand), FRUSTA_OK);
+  ASSERT_EQ(world.add_hand(make_hand_model(default_hand_def()), &hand), FRUSTA_OK);
   world.step();
   EXPECT_EQ(thread_count(), base) << "a world without its own thread or a glove runs none";
   OpenGlovesFirmware firmware;

@@ -69,8 +69,8 @@ TEST(hidReports, AReportClaimingMoreThanItHoldsIsDropped) {
 TEST(hidStream, AnAbsentGloveIsAnIoErrorNamingIt) {
   HidStream stream(kVendor, kProduct, "FR-0042");
   EXPECT_EQ(stream.open(), FRUSTA_ERROR_IO);  // through hidapi's backend
-  EXPECT_NE(std::strstr(frusta_last_error(), "hid 1209:f5f5:FR-0042: cannot open"), nullptr)
-      << frusta_last_error();
+  EXPECT_NE(std::strstr(frusta::last_error_message(), "hid 1209:f5f5:FR-0042: cannot open"), nullptr)
+      << frusta::last_error_message();
   EXPECT_FALSE(stream.is_open());
   uint8_t buffer[64];
   size_t received = 1;

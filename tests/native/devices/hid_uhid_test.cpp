@@ -19,6 +19,7 @@
 #include "devices/device_link.h"
 #include "devices/frusta_protocol.h"
 #include "devices/hid_stream.h"
+#include "hand/anthropometry.h"
 #include "hand/hand_model.h"
 #include "scenes/binary_glove.h"
 
@@ -122,7 +123,7 @@ TEST(hidStream, AVirtualHidGloveHandshakesAndReadsCommandsBack) {
 
   World world{WorldDef{}};
   int32_t hand = -1;
-  ASSERT_EQ(world.add_hand(make_hand_model(frusta_default_hand_def()), &hand), FRUSTA_OK);
+  ASSERT_EQ(world.add_hand(make_hand_model(default_hand_def()), &hand), FRUSTA_OK);
   ASSERT_EQ(world.start(), FRUSTA_OK);
   DeviceLinkDef def;
   def.host_timeout_s = 0.0;
@@ -138,7 +139,7 @@ TEST(hidStream, AVirtualHidGloveHandshakesAndReadsCommandsBack) {
     }
     return true;
   };
-  ASSERT_TRUE(until([&] { return link.open() == FRUSTA_OK; })) << frusta_last_error();
+  ASSERT_TRUE(until([&] { return link.open() == FRUSTA_OK; })) << frusta::last_error_message();
   DeviceLinkStatus s;
   ASSERT_TRUE(until([&] {
     s = link.status();

@@ -58,7 +58,7 @@ TEST(recording, WhatTheRecorderWritesReplaysRecordByRecord) {
   const std::string big(70000, 'x');  // more than a record holds: two records
   {
     Recorder recorder;
-    ASSERT_EQ(recorder.open(path, "frusta"), FRUSTA_OK) << frusta_last_error();
+    ASSERT_EQ(recorder.open(path, "frusta"), FRUSTA_OK) << frusta::last_error_message();
     record(recorder, 0, "abc");
     record(recorder, 1000, "de");
     record(recorder, 2000, big);
@@ -70,7 +70,7 @@ TEST(recording, WhatTheRecorderWritesReplaysRecordByRecord) {
   for (bool loop : {false, true}) {
     ReplayStream replay(path, false, loop);
     std::string loaded;
-    ASSERT_EQ(replay.load(&loaded), FRUSTA_OK) << frusta_last_error();
+    ASSERT_EQ(replay.load(&loaded), FRUSTA_OK) << frusta::last_error_message();
     EXPECT_EQ(loaded, "frusta");
     ASSERT_EQ(replay.open(), FRUSTA_OK);
     bool ended = false;
@@ -122,13 +122,13 @@ TEST(recording, ARecordCutOffAtTheEndIsPlayedAsFarAsItGoes) {
   ASSERT_EQ(truncate(path.c_str(), whole - 2), 0);  // the recorder was killed mid-record
   {
     ReplayStream replay(path, false, false);
-    ASSERT_EQ(replay.open(), FRUSTA_OK) << frusta_last_error();
+    ASSERT_EQ(replay.open(), FRUSTA_OK) << frusta::last_error_message();
     bool ended = false;
     EXPECT_EQ(read_now(replay, &ended), (std::vector<std::string>{"A1\n", "A2\nA"}));
   }
   ASSERT_EQ(truncate(path.c_str(), whole - 6 - 5), 0);  // ... in a record's head
   ReplayStream replay(path, false, false);
-  ASSERT_EQ(replay.open(), FRUSTA_OK) << frusta_last_error();
+  ASSERT_EQ(replay.open(), FRUSTA_OK) << frusta::last_error_message();
   bool ended = false;
   EXPECT_EQ(read_now(replay, &ended), std::vector<std::string>{"A1\n"});
   std::remove(path.c_str());
@@ -149,7 +149,7 @@ TEST(recording, TheRecorderStopsAtItsLimitAndWhatItWroteReplays) {
   }
   EXPECT_EQ(file_size(path), header + 2 * (12 + 100));
   ReplayStream replay(path, false, false);
-  ASSERT_EQ(replay.open(), FRUSTA_OK) << frusta_last_error();
+  ASSERT_EQ(replay.open(), FRUSTA_OK) << frusta::last_error_message();
   bool ended = false;
   EXPECT_EQ(read_now(replay, &ended), (std::vector<std::string>{line, line}));
   std::remove(path.c_str());
@@ -177,7 +177,7 @@ TEST(recording, WhatIsNotARecordingIsRefusedByNameNeitherBlockingNorReadingWitho
   }
   // what the header names is read without reading the rest
   std::string protocol;
-  EXPECT_EQ(read_recording_protocol(files.good, &protocol), FRUSTA_OK) << frusta_last_error();
+  EXPECT_EQ(read_recording_protocol(files.good, &protocol), FRUSTA_OK) << frusta::last_error_message();
   EXPECT_EQ(protocol, "opengloves");
 }
 
@@ -203,7 +203,7 @@ TEST(recording, TheRecorderWritesOnlyToARegularFile) {
   {
     std::ofstream(path) << std::string(1000, 'o');
     Recorder recorder;
-    ASSERT_EQ(recorder.open(path, "frusta"), FRUSTA_OK) << frusta_last_error();
+    ASSERT_EQ(recorder.open(path, "frusta"), FRUSTA_OK) << frusta::last_error_message();
   }
   EXPECT_EQ(file_size(path), static_cast<int64_t>(std::string("frusta-recording 1 frusta\n").size()));
   std::remove(path.c_str());

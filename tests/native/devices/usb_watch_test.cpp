@@ -17,7 +17,7 @@ namespace {
 TEST(usbWatch, ListsTheBusInOrder) {
   UsbWatch watch;
   std::vector<UsbDeviceInfo> devices(3);  // stale contents are replaced
-  ASSERT_EQ(watch.enumerate(&devices), FRUSTA_OK) << frusta_last_error();
+  ASSERT_EQ(watch.enumerate(&devices), FRUSTA_OK) << frusta::last_error_message();
   for (size_t i = 0; i < devices.size(); ++i) {
     EXPECT_GT(devices[i].bus, 0);
     EXPECT_GE(devices[i].vendor_id, 0);
@@ -35,11 +35,11 @@ TEST(usbWatch, HotplugIsWatchedWhereLibusbCanAndRefusedWithAReasonWhereNot) {
   UsbWatch watch;
   const frusta_result r = watch.watch_hotplug();
   if (libusb_has_capability(LIBUSB_CAP_HAS_HOTPLUG)) {
-    ASSERT_EQ(r, FRUSTA_OK) << frusta_last_error();
+    ASSERT_EQ(r, FRUSTA_OK) << frusta::last_error_message();
     EXPECT_EQ(watch.watch_hotplug(), FRUSTA_OK) << "a second call is harmless";
   } else {
     ASSERT_EQ(r, FRUSTA_ERROR_IO);
-    EXPECT_NE(std::string(frusta_last_error()).find("hot-plug"), std::string::npos);
+    EXPECT_NE(std::string(frusta::last_error_message()).find("hot-plug"), std::string::npos);
   }
   EXPECT_EQ(watch.poll_changes(20000), 0) << "nobody plugged anything in";
 }

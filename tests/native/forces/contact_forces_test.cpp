@@ -20,7 +20,9 @@
 #include <string>
 #include <vector>
 
+#include "core/error.h"
 #include "forces/device_outputs.h"
+#include "hand/anthropometry.h"
 #include "hand/hand_model.h"
 #include "spheretree/tree_builder.h"
 
@@ -43,7 +45,7 @@ constexpr int kIndex = 1;
 constexpr int kIndexTip = kIndex * FRUSTA_SEGMENTS_PER_FINGER + 2;  // the index's distal segment
 const vec3 kUp(0.0, 0.0, 1.0);
 
-HandModel right_hand() { return make_hand_model(frusta_default_hand_def()); }
+HandModel right_hand() { return make_hand_model(default_hand_def()); }
 
 HandState hand_at(const vec3& palm) {
   HandState s;
@@ -445,8 +447,8 @@ TEST(ContactForces, BadInputIsRefusedAndChangesNothing) {
   auto expect_refused = [&](const SolverContact& c, const HandPose& hp, const ForceMaterial* m,
                             frusta_result code, const char* field) {
     EXPECT_EQ(forces.update(graphic, hp, &c, 1, &kFace, 1, m, nullptr), code) << field;
-    EXPECT_NE(std::string(frusta_last_error()).find(field), std::string::npos)
-        << frusta_last_error();
+    EXPECT_NE(std::string(frusta::last_error_message()).find(field), std::string::npos)
+        << frusta::last_error_message();
     ASSERT_EQ(forces.forces().size(), before.size());
     EXPECT_EQ(forces.forces()[0].normal_force, before[0].normal_force) << field;
     EXPECT_EQ(forces.forces()[0].friction, before[0].friction) << field;

@@ -5,6 +5,8 @@
 // reactions cancel, forces and torques; clamps shorten and never turn; bad input
 // changes nothing.
 #include "forces/device_outputs.h"
+#include "core/error.h"
+#include "hand/anthropometry.h"
 
 #include <gtest/gtest.h>
 
@@ -24,7 +26,7 @@ namespace {
 constexpr int kThumb = 0;
 constexpr int kIndex = 1;
 
-HandModel right_hand() { return make_hand_model(frusta_default_hand_def()); }
+HandModel right_hand() { return make_hand_model(default_hand_def()); }
 
 // a hand away from every symmetry: turned palm, bent and spread fingers
 HandState bent_hand() {
@@ -307,7 +309,7 @@ TEST(DeviceOutputs, BadInputIsRefusedAndLeavesOutputsAsTheyWere) {
   EXPECT_EQ(
       compute_device_outputs(pose, bad.data(), count, &kObject, 1, DeviceLimits{}, &out, &reaction),
       FRUSTA_ERROR_NOT_FINITE);
-  EXPECT_NE(std::string(frusta_last_error()).find("forces[3].friction"), std::string::npos);
+  EXPECT_NE(std::string(frusta::last_error_message()).find("forces[3].friction"), std::string::npos);
   expect_unchanged("NaN friction");
 
   bad = good;
@@ -321,7 +323,7 @@ TEST(DeviceOutputs, BadInputIsRefusedAndLeavesOutputsAsTheyWere) {
   limits.max_joint_torque = -1.0;
   EXPECT_EQ(compute_device_outputs(pose, good.data(), count, &kObject, 1, limits, &out, &reaction),
             FRUSTA_ERROR_OUT_OF_RANGE);
-  EXPECT_NE(std::string(frusta_last_error()).find("max_joint_torque"), std::string::npos);
+  EXPECT_NE(std::string(frusta::last_error_message()).find("max_joint_torque"), std::string::npos);
   expect_unchanged("negative limit");
 
   HandPose bad_pose = pose;

@@ -8,14 +8,14 @@
 namespace frusta {
 namespace {
 
-frusta_hand_def sized(double length, double breadth) {
-  frusta_hand_def def = frusta_default_hand_def();
+HandDef sized(double length, double breadth) {
+  HandDef def = default_hand_def();
   fill_hand_geometry(def, length, breadth);
   return def;
 }
 
 TEST(Anthropometry, MiddleFingertipEndsAtHandLength) {
-  const frusta_hand_def def = sized(0.19, 0.085);
+  const HandDef def = sized(0.19, 0.085);
   const int m = FRUSTA_FINGER_MIDDLE;
   // straight middle finger along +x: base + segments + tip hemisphere radius
   const double tip = def.base_position[m][0] + def.segment_length[m][0] +
@@ -25,7 +25,7 @@ TEST(Anthropometry, MiddleFingertipEndsAtHandLength) {
 }
 
 TEST(Anthropometry, IndexLinksFollowBuchholzRatios) {
-  const frusta_hand_def def = sized(0.20, 0.09);
+  const HandDef def = sized(0.20, 0.09);
   const int i = FRUSTA_FINGER_INDEX;
   EXPECT_NEAR(def.segment_length[i][0], 0.265 * 0.20, 1e-12);
   EXPECT_NEAR(def.segment_length[i][1], 0.143 * 0.20, 1e-12);
@@ -36,7 +36,7 @@ TEST(Anthropometry, IndexLinksFollowBuchholzRatios) {
 }
 
 TEST(Anthropometry, RadiiDecreaseProximalToDistalAndScaleWithBreadth) {
-  const frusta_hand_def a = sized(0.19, 0.08), b = sized(0.19, 0.10);
+  const HandDef a = sized(0.19, 0.08), b = sized(0.19, 0.10);
   for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
     for (int j = 0; j + 1 < 4; ++j) EXPECT_GT(a.joint_radius[f][j], a.joint_radius[f][j + 1]);
     for (int j = 0; j < 4; ++j) EXPECT_NEAR(b.joint_radius[f][j] / a.joint_radius[f][j], 1.25, 1e-12);
@@ -46,7 +46,7 @@ TEST(Anthropometry, RadiiDecreaseProximalToDistalAndScaleWithBreadth) {
 TEST(Anthropometry, DefaultsPassTheDefCheckAcrossAdultSizes) {
   for (double length : {0.15, 0.19, 0.23})
     for (double breadth : {0.07, 0.085, 0.11}) {
-      frusta_hand_def def = sized(length, breadth);
+      HandDef def = sized(length, breadth);
       fill_joint_limits(def);
       EXPECT_EQ(check_hand_def(def), FRUSTA_OK) << length << " x " << breadth;
       for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f)
@@ -55,7 +55,7 @@ TEST(Anthropometry, DefaultsPassTheDefCheckAcrossAdultSizes) {
 }
 
 TEST(Anthropometry, JointLimitsAreAnatomical) {
-  frusta_hand_def def = frusta_default_hand_def();
+  HandDef def = default_hand_def();
   fill_joint_limits(def);
   const double deg = 3.14159265358979323846 / 180.0;
   const int i = FRUSTA_FINGER_INDEX;

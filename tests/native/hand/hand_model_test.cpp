@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: MIT
+#include "hand/anthropometry.h"
+#include "core/error.h"
 #include "hand/hand_model.h"
 
 #include <gtest/gtest.h>
@@ -10,24 +12,24 @@ namespace frusta {
 namespace {
 
 TEST(HandModel, CheckNamesTheFaultyField) {
-  frusta_hand_def def = frusta_default_hand_def();
+  HandDef def = default_hand_def();
   def.segment_length[3][1] = 0.0;
   EXPECT_EQ(check_hand_def(def), FRUSTA_ERROR_OUT_OF_RANGE);
-  EXPECT_NE(std::string(frusta_last_error()).find("segment_length[3][1]"), std::string::npos);
+  EXPECT_NE(std::string(frusta::last_error_message()).find("segment_length[3][1]"), std::string::npos);
 
-  def = frusta_default_hand_def();
+  def = default_hand_def();
   def.joint_radius[0][2] = std::numeric_limits<double>::quiet_NaN();
   EXPECT_EQ(check_hand_def(def), FRUSTA_ERROR_NOT_FINITE);
-  EXPECT_NE(std::string(frusta_last_error()).find("joint_radius[0][2]"), std::string::npos);
+  EXPECT_NE(std::string(frusta::last_error_message()).find("joint_radius[0][2]"), std::string::npos);
 
-  def = frusta_default_hand_def();
+  def = default_hand_def();
   def.joint_min[2][1] = def.joint_max[2][1] + 0.1;
   EXPECT_EQ(check_hand_def(def), FRUSTA_ERROR_OUT_OF_RANGE);
-  EXPECT_NE(std::string(frusta_last_error()).find("joint_max[2][1]"), std::string::npos);
+  EXPECT_NE(std::string(frusta::last_error_message()).find("joint_max[2][1]"), std::string::npos);
 }
 
 TEST(HandModel, PalmSpheresCoverThePalmRectangle) {
-  const frusta_hand_def def = frusta_default_hand_def();
+  const HandDef def = default_hand_def();
   const HandModel m = make_hand_model(def);
   ASSERT_GE(m.palm_spheres.size(), 4u);
   // every point of the palm's mid-plane rectangle lies inside some sphere
@@ -42,7 +44,7 @@ TEST(HandModel, PalmSpheresCoverThePalmRectangle) {
 }
 
 TEST(HandModel, LeftPalmIsTheMirrorOfTheRight) {
-  frusta_hand_def def = frusta_default_hand_def();
+  HandDef def = default_hand_def();
   const HandModel right = make_hand_model(def);
   def.side = FRUSTA_HAND_LEFT;
   const HandModel left = make_hand_model(def);

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include "hand/anthropometry.h"
 #include "hand/kinematics.h"
 
 #include <gtest/gtest.h>
@@ -13,7 +14,7 @@ namespace frusta {
 namespace {
 
 HandModel model_of(int side) {
-  frusta_hand_def def = frusta_default_hand_def();
+  HandDef def = default_hand_def();
   def.side = side;
   return make_hand_model(def);
 }

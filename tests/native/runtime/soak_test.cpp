@@ -22,6 +22,8 @@
 #include <thread>
 #include <vector>
 
+#include "hand/anthropometry.h"
+#include "core/error.h"
 #include "hand/hand_model.h"
 #include "runtime/world.h"
 #include "scenes/baked_objects.h"
@@ -47,7 +49,7 @@ int64_t rss_kb() {
 std::shared_ptr<const TreeFile> load_fresh(const std::string& name) {
   auto file = std::make_shared<TreeFile>();
   const std::string path = std::string(FRUSTA_SAMPLE_OBJECTS_DIR) + "/" + name + ".frtree";
-  EXPECT_EQ(load_tree_file(path, file.get()), FRUSTA_OK) << frusta_last_error();
+  EXPECT_EQ(load_tree_file(path, file.get()), FRUSTA_OK) << frusta::last_error_message();
   return file;
 }
 
@@ -75,17 +77,17 @@ TEST(Soak, TwoHandsAtOneKilohertzWhileObjectsComeAndGo) {
   // ~25 commands per host tick: room for a 1 s stall of the world's thread
   def.command_capacity = 4096;
   World world(def);
-  frusta_hand_def left_def = frusta_default_hand_def();
+  HandDef left_def = default_hand_def();
   left_def.side = FRUSTA_HAND_LEFT;
   int32_t hands[2];
-  ASSERT_EQ(world.add_hand(make_hand_model(frusta_default_hand_def()), &hands[0]), FRUSTA_OK);
+  ASSERT_EQ(world.add_hand(make_hand_model(default_hand_def()), &hands[0]), FRUSTA_OK);
   ASSERT_EQ(world.add_hand(make_hand_model(left_def), &hands[1]), FRUSTA_OK);
 
   // every failed call or bad snapshot is counted; the first is kept for the message
   int64_t errors = 0;
   std::string first_error;
   auto check = [&](bool ok, const std::string& what) {
-    if (!ok && errors++ == 0) first_error = what + " (" + frusta_last_error() + ")";
+    if (!ok && errors++ == 0) first_error = what + " (" + frusta::last_error_message() + ")";
   };
   int64_t added = 0, removed = 0;
   auto add = [&](std::shared_ptr<const TreeFile> tree, const RigidPose& pose) {

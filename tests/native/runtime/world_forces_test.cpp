@@ -10,6 +10,8 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
 
+#include "hand/anthropometry.h"
+#include "core/error.h"
 #include "hand/hand_model.h"
 #include "runtime/world.h"
 #include "scenes/baked_objects.h"
@@ -21,7 +23,7 @@ namespace {
 constexpr int kIndex = 1;
 constexpr int kIndexTip = kIndex * FRUSTA_SEGMENTS_PER_FINGER + 2;
 
-HandModel right_hand() { return make_hand_model(frusta_default_hand_def()); }
+HandModel right_hand() { return make_hand_model(default_hand_def()); }
 
 HandPose pose_of(const HandModel& model, const HandState& state) {
   HandPose pose;
@@ -291,7 +293,7 @@ TEST(WorldForces, BadObjectsAreRefusedAndChangeNothing) {
   ObjectDef def;
   ObjectHandle handle{-1, 0};
   auto refused = [&](const ObjectDef& d, frusta_result code) {
-    EXPECT_EQ(world.add_object(ball, d, &handle), code) << frusta_last_error();
+    EXPECT_EQ(world.add_object(ball, d, &handle), code) << frusta::last_error_message();
     EXPECT_EQ(handle.slot, -1);
   };
   ObjectDef bad = def;

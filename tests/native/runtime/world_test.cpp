@@ -17,7 +17,9 @@
 
 #include <glm/gtc/quaternion.hpp>
 
+#include "core/error.h"
 #include "core/validate.h"
+#include "hand/anthropometry.h"
 #include "hand/hand_model.h"
 #include "scenes/hand_scenarios.h"
 
@@ -43,7 +45,7 @@ void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 namespace frusta {
 namespace {
 
-HandModel right_hand() { return make_hand_model(frusta_default_hand_def()); }
+HandModel right_hand() { return make_hand_model(default_hand_def()); }
 
 int32_t add_hand(World& world, const HandModel& model) {
   int32_t hand = -1;
@@ -220,7 +222,7 @@ TEST(World, HapticRotationsAreUnitFromTheDoorOn) {
 TEST(World, TwoHandsAndTwentyObjectsStepWithoutAllocating) {
   World world(WorldDef{});
   const int32_t right = add_hand(world, right_hand());
-  frusta_hand_def left_def = frusta_default_hand_def();
+  HandDef left_def = default_hand_def();
   left_def.side = FRUSTA_HAND_LEFT;
   const int32_t left = add_hand(world, make_hand_model(left_def));
   ObjectHandle handles[20];
@@ -290,7 +292,7 @@ TEST(World, HandsComeBeforeTheFirstStepAndSettingsAreChecked) {
   World bad(def);
   int32_t hand = -1;
   EXPECT_EQ(bad.add_hand(right_hand(), &hand), FRUSTA_ERROR_OUT_OF_RANGE);
-  EXPECT_NE(std::string(frusta_last_error()).find("prediction_margin"), std::string::npos);
+  EXPECT_NE(std::string(frusta::last_error_message()).find("prediction_margin"), std::string::npos);
   World world(WorldDef{});
   add_hand(world, right_hand());
   ASSERT_EQ(world.step(), FRUSTA_OK);

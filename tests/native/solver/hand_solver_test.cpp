@@ -14,7 +14,9 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/error.h"
 #include "core/validate.h"
+#include "hand/anthropometry.h"
 #include "hand/hand_model.h"
 #include "scenario_run.h"
 
@@ -28,7 +30,7 @@ constexpr double kMaxPenetration = 0.05e-3;  // the acceptance floor, metres
 constexpr double kMaxDrift = 1e-6;           // rad (and m) over 1,000 held steps
 constexpr int kHoldSteps = 1000;
 
-HandModel default_model() { return make_hand_model(frusta_default_hand_def()); }
+HandModel default_model() { return make_hand_model(default_hand_def()); }
 
 // Run the script; check the floor throughout.
 HandSolver run_scripted(const HandScenario& s, testing::RunLog& log) {
@@ -50,7 +52,7 @@ void expect_holds_and_rejects_bad_input(HandSolver& solver, const HandScenario& 
   HandState bad = s.held;
   bad.angles[6] = std::numeric_limits<double>::quiet_NaN();
   EXPECT_EQ(check_hand_state(bad, "haptic"), FRUSTA_ERROR_NOT_FINITE);
-  EXPECT_NE(std::string(frusta_last_error()).find("haptic.angles[6]"), std::string::npos);
+  EXPECT_NE(std::string(frusta::last_error_message()).find("haptic.angles[6]"), std::string::npos);
   bad = s.held;
   bad.palm_position.y = std::numeric_limits<double>::infinity();
   EXPECT_EQ(check_hand_state(bad, "haptic"), FRUSTA_ERROR_NOT_FINITE);
@@ -179,7 +181,7 @@ TEST(HandSolver, APassedDeadlineStopsAfterOneSubStepAndTheHandLagsSafely) {
   // the teleport needs 32 sub-steps; with its deadline gone each step takes one, the
   // hand lags (and says so) but never sinks, and catches up over the next steps
   const HandScenario s = make_hand_scenario("plate_teleport");
-  HandSolver solver(make_hand_model(frusta_default_hand_def()), SolverParams{});
+  HandSolver solver(make_hand_model(default_hand_def()), SolverParams{});
   const HandSolver::Clock::time_point gone = HandSolver::Clock::now();
   int lagged = 0;
   for (int32_t t = 0; t < s.steps + 200; ++t) {
@@ -255,11 +257,11 @@ TEST(HandSolver, ParametersAreCheckedByName) {
   EXPECT_EQ(HandSolver::check_params(p, model), FRUSTA_OK);
   p.prediction_margin = 0.05;  // more than a finger's radius: a sub-step could tunnel
   EXPECT_EQ(HandSolver::check_params(p, model), FRUSTA_ERROR_OUT_OF_RANGE);
-  EXPECT_NE(std::string(frusta_last_error()).find("prediction_margin"), std::string::npos);
+  EXPECT_NE(std::string(frusta::last_error_message()).find("prediction_margin"), std::string::npos);
   p = SolverParams{};
   p.joint_stiffness[2] = std::numeric_limits<double>::quiet_NaN();
   EXPECT_EQ(HandSolver::check_params(p, model), FRUSTA_ERROR_OUT_OF_RANGE);
-  EXPECT_NE(std::string(frusta_last_error()).find("joint_stiffness[2]"), std::string::npos);
+  EXPECT_NE(std::string(frusta::last_error_message()).find("joint_stiffness[2]"), std::string::npos);
 }
 
 }  // namespace

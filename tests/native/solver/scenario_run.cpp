@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include "core/error.h"
 #include "scenario_run.h"
 
 #include <gtest/gtest.h>
@@ -17,7 +18,7 @@ bool checked_step(HandSolver& solver, const scenes::HandScenario& s, const HandS
   StepStats stats;
   const frusta_result r =
       solver.step(haptic, s.objects.data(), static_cast<int32_t>(s.objects.size()), &stats);
-  EXPECT_EQ(r, FRUSTA_OK) << s.name << " step " << log.steps << ": " << frusta_last_error();
+  EXPECT_EQ(r, FRUSTA_OK) << s.name << " step " << log.steps << ": " << frusta::last_error_message();
   if (r != FRUSTA_OK) return false;
   ++log.steps;
   log.max_penetration = std::max(

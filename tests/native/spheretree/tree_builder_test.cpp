@@ -8,6 +8,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/error.h"
 #include "scenes/random_trees.h"
 
 namespace frusta {
@@ -73,7 +74,7 @@ TEST(TreeBuilder, RefusesBadInputWithAMessage) {
   EXPECT_EQ(build_sphere_tree(one, {17}, &tree), FRUSTA_ERROR_OUT_OF_RANGE);
   const std::vector<Sphere> nan{{vec3(0.0), 0.01}, {vec3(std::nan(""), 0, 0), 0.01}};
   EXPECT_EQ(build_sphere_tree(nan, {4}, &tree), FRUSTA_ERROR_NOT_FINITE);
-  EXPECT_NE(std::string(frusta_last_error()).find("leaf 1"), std::string::npos);
+  EXPECT_NE(std::string(frusta::last_error_message()).find("leaf 1"), std::string::npos);
   const std::vector<Sphere> negative{{vec3(0.0), -0.01}};
   EXPECT_EQ(build_sphere_tree(negative, {4}, &tree), FRUSTA_ERROR_OUT_OF_RANGE);
 }

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <functional>
 
+#include "core/error.h"
 #include "scenes/random_trees.h"
 #include "spheretree/tree_builder.h"
 
@@ -47,9 +48,9 @@ void reseal(std::vector<uint8_t>& b) {
 TEST(TreeFile, WriteThenReadIsLossless) {
   const TreeFile original = sample_file();
   const std::string path = temp_path("roundtrip");
-  ASSERT_EQ(save_tree_file(path, original), FRUSTA_OK) << frusta_last_error();
+  ASSERT_EQ(save_tree_file(path, original), FRUSTA_OK) << frusta::last_error_message();
   TreeFile loaded;
-  ASSERT_EQ(load_tree_file(path, &loaded), FRUSTA_OK) << frusta_last_error();
+  ASSERT_EQ(load_tree_file(path, &loaded), FRUSTA_OK) << frusta::last_error_message();
   // byte-identical re-encoding covers every field, nodes and leaves
   EXPECT_EQ(encode_tree_file(loaded), encode_tree_file(original));
   EXPECT_EQ(loaded.bake.triangle_count, 3456);
@@ -114,10 +115,10 @@ TEST(TreeFile, DamagedFilesAreRefusedWithTheirOwnError) {
     write_bytes(path, bytes);
     TreeFile out;
     out.bake.triangle_count = -99;  // must stay untouched on failure
-    EXPECT_EQ(load_tree_file(path, &out), d.expected) << d.name << ": " << frusta_last_error();
-    EXPECT_NE(std::string(frusta_last_error()).find(d.message), std::string::npos)
-        << d.name << ": " << frusta_last_error();
-    EXPECT_NE(std::string(frusta_last_error()).find(path), std::string::npos) << d.name;
+    EXPECT_EQ(load_tree_file(path, &out), d.expected) << d.name << ": " << frusta::last_error_message();
+    EXPECT_NE(std::string(frusta::last_error_message()).find(d.message), std::string::npos)
+        << d.name << ": " << frusta::last_error_message();
+    EXPECT_NE(std::string(frusta::last_error_message()).find(path), std::string::npos) << d.name;
     EXPECT_EQ(out.bake.triangle_count, -99) << d.name;
   }
   std::remove(path.c_str());
@@ -140,7 +141,7 @@ TEST(TreeFile, EveryTruncationAndEveryByteFlipIsRefused) {
 TEST(TreeFile, MissingFileIsAnIoError) {
   TreeFile out;
   EXPECT_EQ(load_tree_file("/nonexistent/x.frtree", &out), FRUSTA_ERROR_IO);
-  EXPECT_NE(std::string(frusta_last_error()).find("/nonexistent/x.frtree"), std::string::npos);
+  EXPECT_NE(std::string(frusta::last_error_message()).find("/nonexistent/x.frtree"), std::string::npos);
 }
 
 TEST(TreeFile, SaveLeavesNoPartialFileBehind) {

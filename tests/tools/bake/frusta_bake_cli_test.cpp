@@ -10,6 +10,7 @@
 #include <string>
 
 #include "corpus_fixture.h"
+#include "core/error.h"
 #include "spheretree/tree_file.h"
 
 namespace {
@@ -49,7 +50,7 @@ TEST(FrustaBakeCli, BakesASampleWithinOneMillimetreAndSaysSoInJson) {
   EXPECT_GT(figure(r.out, "leaves"), 100);
   // what it wrote loads, and carries the same figures
   frusta::TreeFile file;
-  ASSERT_EQ(frusta::load_tree_file(out, &file), FRUSTA_OK) << frusta_last_error();
+  ASSERT_EQ(frusta::load_tree_file(out, &file), FRUSTA_OK) << frusta::last_error_message();
   EXPECT_NEAR(file.bake.uncovered_error * 1e3, figure(r.out, "uncovered_error_mm"), 1e-4);
   EXPECT_EQ(static_cast<double>(file.tree.leaves.size()), figure(r.out, "leaves"));
 }

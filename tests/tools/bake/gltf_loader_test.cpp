@@ -14,6 +14,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/error.h"
 #include "corpus_fixture.h"
 
 namespace frusta {
@@ -66,7 +67,7 @@ TEST(GltfLoader, ReadsATriangleWithItsNodeTransform) {
   Gltf g;
   g.node = R"("mesh": 0, "translation": [1, 2, 3], "scale": [2, 2, 2])";
   GltfLoadResult r;
-  ASSERT_EQ(load_gltf_triangles(g.write("ok"), &r), FRUSTA_OK) << frusta_last_error();
+  ASSERT_EQ(load_gltf_triangles(g.write("ok"), &r), FRUSTA_OK) << frusta::last_error_message();
   ASSERT_EQ(r.mesh.triangles.size(), 1u);
   EXPECT_EQ(r.mesh.vertices[1], vec3(3, 2, 3));  // (1,0,0) scaled by 2, moved by (1,2,3)
   EXPECT_EQ(r.primitives, 1);
@@ -76,7 +77,7 @@ TEST(GltfLoader, MirroringTransformKeepsTheOutsideOutside) {
   Gltf g;
   g.node = R"("mesh": 0, "scale": [-1, 1, 1])";
   GltfLoadResult r;
-  ASSERT_EQ(load_gltf_triangles(g.write("mirror"), &r), FRUSTA_OK) << frusta_last_error();
+  ASSERT_EQ(load_gltf_triangles(g.write("mirror"), &r), FRUSTA_OK) << frusta::last_error_message();
   const auto& t = r.mesh.triangles[0];
   const vec3 n = glm::cross(r.mesh.vertices[t[1]] - r.mesh.vertices[t[0]],
                             r.mesh.vertices[t[2]] - r.mesh.vertices[t[0]]);
@@ -88,11 +89,11 @@ TEST(GltfLoader, NonTriangleAndNonIndexedPrimitives) {
   points.primitive = R"("attributes": {"POSITION": 0}, "mode": 0)";
   GltfLoadResult r;
   EXPECT_EQ(load_gltf_triangles(points.write("points"), &r), FRUSTA_ERROR_FILE_FORMAT);
-  EXPECT_NE(std::string(frusta_last_error()).find("no triangles"), std::string::npos);
+  EXPECT_NE(std::string(frusta::last_error_message()).find("no triangles"), std::string::npos);
 
   Gltf plain;
   plain.primitive = R"("attributes": {"POSITION": 0})";  // no indices, default mode
-  ASSERT_EQ(load_gltf_triangles(plain.write("plain"), &r), FRUSTA_OK) << frusta_last_error();
+  ASSERT_EQ(load_gltf_triangles(plain.write("plain"), &r), FRUSTA_OK) << frusta::last_error_message();
   EXPECT_EQ(r.mesh.triangles.size(), 1u);
 }
 
@@ -148,8 +149,8 @@ TEST(GltfLoader, BrokenFilesGiveTheirOwnError) {
       if (b.gltf.write_bin) write_file(dir() + b.gltf.bin_uri, b.gltf.bin);
     }
     GltfLoadResult r;
-    EXPECT_EQ(load_gltf_triangles(path, &r), b.expected) << b.name << ": " << frusta_last_error();
-    const std::string message = frusta_last_error();
+    EXPECT_EQ(load_gltf_triangles(path, &r), b.expected) << b.name << ": " << frusta::last_error_message();
+    const std::string message = frusta::last_error_message();
     EXPECT_NE(message.find(b.fragment), std::string::npos) << b.name << ": " << message;
     EXPECT_NE(message.find(path), std::string::npos) << b.name << ": " << message;
   }
@@ -168,8 +169,8 @@ TEST(GltfLoaderCorpus, EveryFileEndsInItsResultAndNothingOutsideTheFolderIsOpene
     const std::string path = folder.in(c.file);
     GltfLoadResult r;
     const frusta_result got = load_gltf_triangles(path, &r);
-    const std::string message = got == FRUSTA_OK ? "" : frusta_last_error();
-    EXPECT_EQ(frusta_result_name(got), c.result) << c.file << ": " << message;
+    const std::string message = got == FRUSTA_OK ? "" : frusta::last_error_message();
+    EXPECT_EQ(frusta::result_name(got), c.result) << c.file << ": " << message;
     if (got == FRUSTA_OK) {
       EXPECT_EQ(r.mesh.triangles.size(), 4u) << c.file;
     } else {
@@ -210,7 +211,7 @@ TEST(GltfLoaderCorpus, TheInputMustBeARegularFileWithinTheLimit) {
         Input{folder.in("huge.bin"), "bytes the loader reads"}}) {
     GltfLoadResult r;
     EXPECT_EQ(load_gltf_triangles(input.path, &r), FRUSTA_ERROR_IO) << input.path;
-    const std::string message = frusta_last_error();
+    const std::string message = frusta::last_error_message();
     EXPECT_NE(message.find(input.fragment), std::string::npos) << message;
     EXPECT_NE(message.find(input.path), std::string::npos) << message;
   }
@@ -226,7 +227,7 @@ TEST(GltfLoaderCorpus, LimitsHoldAtTheirEdges) {
   const std::string at_limit = folder.in("depth_64.glb");
   corpus::write_file(at_limit,
                      corpus::glb_of(corpus::deep_gltf(GltfLimits::kMaxJsonDepth - 1, true), tetra));
-  EXPECT_EQ(load_gltf_triangles(at_limit, &r), FRUSTA_OK) << frusta_last_error();
+  EXPECT_EQ(load_gltf_triangles(at_limit, &r), FRUSTA_OK) << frusta::last_error_message();
   // too many values, however flat
   std::string values = "[0";
   for (size_t i = 0; i < GltfLimits::kMaxJsonValues; ++i) values += ",0";
@@ -234,8 +235,8 @@ TEST(GltfLoaderCorpus, LimitsHoldAtTheirEdges) {
   many.replace(many.find("[0]"), 3, values + "]");
   corpus::write_file(folder.in("values.glb"), corpus::glb_of(many, tetra));
   EXPECT_EQ(load_gltf_triangles(folder.in("values.glb"), &r), FRUSTA_ERROR_FILE_FORMAT);
-  EXPECT_NE(std::string(frusta_last_error()).find("JSON values"), std::string::npos)
-      << frusta_last_error();
+  EXPECT_NE(std::string(frusta::last_error_message()).find("JSON values"), std::string::npos)
+      << frusta::last_error_message();
   // L doubling levels instance 2^(L+1) - 1 nodes: 18 are within the budget (and load
   // 2^18 tetrahedra), 20 are over it
   for (int levels : {18, 20}) {
@@ -249,12 +250,12 @@ TEST(GltfLoaderCorpus, LimitsHoldAtTheirEdges) {
     corpus::write_file(path, corpus::glb_of(json, tetra));
     const frusta_result got = load_gltf_triangles(path, &r);
     if (levels == 18) {
-      ASSERT_EQ(got, FRUSTA_OK) << frusta_last_error();
+      ASSERT_EQ(got, FRUSTA_OK) << frusta::last_error_message();
       EXPECT_EQ(r.mesh.triangles.size(), 4u << 18);
     } else {
       EXPECT_EQ(got, FRUSTA_ERROR_FILE_FORMAT);
-      EXPECT_NE(std::string(frusta_last_error()).find("budget of 1048576"), std::string::npos)
-          << frusta_last_error();
+      EXPECT_NE(std::string(frusta::last_error_message()).find("budget of 1048576"), std::string::npos)
+          << frusta::last_error_message();
     }
   }
 }
