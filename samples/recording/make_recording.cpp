@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "core/error.h"
 #include "devices/frusta_protocol.h"
 #include "devices/recording.h"
 #include "scenes/hand_scenarios.h"
@@ -134,7 +135,7 @@ int main(int argc, char** argv) {
   std::vector<uint8_t> bytes;
   if (argc == 3) {
     if (glove.open(argv[2], "frusta") != FRUSTA_OK) {
-      std::fprintf(stderr, "%s\n", frusta_last_error());
+      std::fprintf(stderr, "%s\n", frusta::last_error_message());
       return 1;
     }
     // the glove's answer to the host's HELLO: 100 Hz, a tracker, brakes
