@@ -26,6 +26,7 @@
 #include "hand/anthropometry.h"
 #include "hand/hand_model.h"
 #include "runtime/step_histogram.h"
+#include "runtime/world.h"
 #include "scenes/binary_glove.h"
 #include "scenes/baked_objects.h"
 #include "scenes/hand_scenarios.h"
@@ -144,7 +145,7 @@ Latency measure(const GloveSide& side, int transitions) {
   DeviceLinkDef def;
   def.host_timeout_s = 0.0;  // this host does not read snapshots
   def.rates.max_force_rate = 1e9;  // the first command after contact brakes at once
-  DeviceLink link(world, def, std::make_unique<SerialStream>(path, side.baud), side.protocol());
+  DeviceLink link(world.port(hand), def, std::make_unique<SerialStream>(path, side.baud), side.protocol());
   link.open();
 
   Latency result;

@@ -16,11 +16,11 @@
 
 #include "hand/anthropometry.h"
 #include "hand/hand_model.h"
-#include "runtime/periodic_clock.h"
+#include "core/periodic_clock.h"
 #include "runtime/world.h"
 #include "scenes/hand_scenarios.h"
 #include "runtime/step_histogram.h"
-#include "runtime/triple_buffer.h"
+#include "core/triple_buffer.h"
 
 namespace frusta {
 namespace {

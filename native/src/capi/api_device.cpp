@@ -108,7 +108,6 @@ frusta_result read_device_def(const frusta_device_def& in, DeviceLinkDef* link,
                               GloveCalibration* calibration) {
   if (frusta_result r = check_def_finite(in)) return r;
   DeviceLinkDef d;
-  d.hand = in.hand;
   d.output_rate_hz = in.output_rate_hz;
   d.watchdog_s = in.watchdog_s;
   d.engine_timeout_s = in.engine_timeout_s;
@@ -187,7 +186,7 @@ FRUSTA_API frusta_device_def frusta_default_device_def(void) {
   frusta_device_def def;
   std::memset(&def, 0, sizeof def);
   def.struct_size = sizeof(frusta_device_def);
-  def.hand = d.hand;
+  def.hand = 0;
   def.output_rate_hz = d.output_rate_hz;
   def.watchdog_s = d.watchdog_s;
   def.engine_timeout_s = d.engine_timeout_s;
@@ -241,13 +240,11 @@ FRUSTA_API frusta_result frusta_world_open_device(frusta_world_id world, const c
   DeviceLinkDef link_def;
   GloveCalibration calibration;
   if (frusta_result r = read_device_def(*def, &link_def, &calibration)) return r;
-  const int32_t hand = link_def.hand;
+  const int32_t hand = def->hand;
   if (hand < 0 || hand >= w->world.hand_count() || hand >= kMaxGloves)
     return fail(FRUSTA_ERROR_OUT_OF_RANGE,
                 "frusta_device_def.hand is %d; the world has %d hands (gloves drive the first %d)",
                 hand, w->world.hand_count(), kMaxGloves);
-  if (w->gloves[static_cast<size_t>(hand)])
-    return fail(FRUSTA_ERROR_WRONG_STATE, "hand %d already has a glove: close it first", hand);
   DeviceAddress address;
   if (frusta_result r = parse_device_uri(uri, &address)) return r;
   return guarded("frusta_world_open_device", [&] {
@@ -255,13 +252,12 @@ FRUSTA_API frusta_result frusta_world_open_device(frusta_world_id world, const c
     if (frusta_result r = make_glove(address, calibration, &glove)) return r;
     link_def.record_path = address.record_path;
     link_def.protocol_name = glove.protocol_name;
-    auto link = std::make_unique<DeviceLink>(w->world, link_def, std::move(glove.stream),
-                                             std::move(glove.protocol));
-    if (frusta_result r = link->open()) return r;
+    auto link = std::make_unique<DeviceLink>(w->world.port(hand), link_def,
+                                             std::move(glove.stream), std::move(glove.protocol));
+    if (frusta_result r = link->open()) return r;  // the port refuses a second glove
     uint16_t& generation = w->glove_generation[static_cast<size_t>(hand)];
     generation = next_glove_generation();
     w->gloves[static_cast<size_t>(hand)] = std::move(link);
-    w->glove_driven[static_cast<size_t>(hand)].store(true, std::memory_order_release);
     *out_device = frusta_device_id{hand + 1, world_tag(world), generation};
     return FRUSTA_OK;
   });
@@ -273,8 +269,8 @@ FRUSTA_API frusta_result frusta_device_close(frusta_device_id device) {
   int32_t hand = -1;
   if (frusta_result r = find_device(device, &w, &link, &hand)) return r;
   return guarded("frusta_device_close", [&] {
-    w->gloves[static_cast<size_t>(hand)].reset();  // zeroes the glove, joins its thread
-    w->glove_driven[static_cast<size_t>(hand)].store(false, std::memory_order_release);
+    // zeroes the glove, joins its thread, gives the hand back to the host
+    w->gloves[static_cast<size_t>(hand)].reset();
     return FRUSTA_OK;
   });
 }

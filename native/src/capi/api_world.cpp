@@ -194,15 +194,9 @@ FRUSTA_API frusta_result frusta_world_set_haptic(frusta_world_id world, int32_t 
   if (frusta_result r = read_pose(palm, "palm", &pose)) return r;
   HandState state;
   if (frusta_result r = read_joint_angles(angles, count, "angles", &state.angles)) return r;
-  if (hand >= 0 && hand < kMaxGloves &&
-      w->glove_driven[static_cast<size_t>(hand)].load(std::memory_order_acquire))
-    return fail(FRUSTA_ERROR_WRONG_STATE,
-                "hand %d is driven by a glove: set its palm with frusta_device_set_palm_pose, "
-                "or close the glove first",
-                hand);
   state.palm_position = pose.position;
   state.palm_rotation = pose.rotation;
-  return w->world.set_haptic(hand, state);
+  return w->world.set_haptic(hand, state);  // the hand's port refuses it while a glove drives it
 }
 
 FRUSTA_API frusta_result frusta_world_add_object(frusta_world_id world, frusta_tree_id tree,

@@ -25,8 +25,6 @@ struct WorldObject {
   // declared after the world, so they close (and zero their gloves) before it goes
   std::array<std::unique_ptr<DeviceLink>, kMaxGloves> gloves;  // host thread only
   std::array<uint16_t, kMaxGloves> glove_generation{};        // host thread only
-  // read by frusta_world_set_haptic from any thread: that hand's input is a glove's
-  std::array<std::atomic<bool>, kMaxGloves> glove_driven{};
 };
 
 // An object's or a glove's world0: the world's slot + 1 in the low byte and its

@@ -5,8 +5,8 @@
 #include <chrono>
 #include <cstdint>
 
-#include "runtime/periodic_clock.h"
-#include "runtime/timer_resolution.h"
+#include "core/periodic_clock.h"
+#include "core/timer_resolution.h"
 
 namespace frusta {
 
@@ -33,9 +33,9 @@ void RateMeter::add(int64_t stamp_ns, int64_t number, bool glove_clock) {
   if (span > 0) rate_hz_ = static_cast<double>(number - oldest.number) * 1e9 / static_cast<double>(span);
 }
 
-DeviceLink::DeviceLink(World& world, const DeviceLinkDef& def, std::unique_ptr<ByteStream> stream,
+DeviceLink::DeviceLink(HandPort& port, const DeviceLinkDef& def, std::unique_ptr<ByteStream> stream,
                        std::unique_ptr<GloveProtocol> protocol)
-    : world_(world),
+    : port_(port),
       def_(def),
       stream_(std::move(stream)),
       protocol_(std::move(protocol)),
@@ -47,6 +47,17 @@ DeviceLink::DeviceLink(World& world, const DeviceLinkDef& def, std::unique_ptr<B
 DeviceLink::~DeviceLink() { close(); }
 
 frusta_result DeviceLink::open() {
+  // one driver per hand: the port refuses a second glove, and the host while this holds it
+  if (frusta_result r = port_.claim_for_device()) return r;
+  if (frusta_result r = open_glove()) {
+    port_.release_device();
+    return r;
+  }
+  claimed_ = true;
+  return FRUSTA_OK;
+}
+
+frusta_result DeviceLink::open_glove() {
   if (!def_.record_path.empty()) {
     if (frusta_result r = recorder_.open(def_.record_path, def_.protocol_name)) return r;
     recording_ = true;
@@ -61,9 +72,12 @@ frusta_result DeviceLink::open() {
 }
 
 void DeviceLink::close() {
-  if (!thread_.joinable()) return;
-  stop_.store(true, std::memory_order_release);
-  thread_.join();
+  if (thread_.joinable()) {
+    stop_.store(true, std::memory_order_release);
+    thread_.join();
+  }
+  if (claimed_) port_.release_device();
+  claimed_ = false;
 }
 
 void DeviceLink::set_palm_pose(const vec3& position, const glm::dquat& rotation) {
@@ -83,7 +97,7 @@ void DeviceLink::apply_capabilities(const DeviceCapabilities& announced) {
   c.max_joint_torque = std::min(c.max_joint_torque, def_.max_joint_torque);
   working_.capabilities = c;
   guard_.set_capabilities(c);
-  const double wanted = def_.output_rate_hz > 0.0 ? def_.output_rate_hz : world_.rate_hz();
+  const double wanted = def_.output_rate_hz > 0.0 ? def_.output_rate_hz : port_.rate_hz();
   working_.output_rate_hz = c.output_rate_hz > 0.0 ? std::min(wanted, c.output_rate_hz) : wanted;
   output_period_ns_ = static_cast<int64_t>(1e9 / working_.output_rate_hz);
 }
@@ -183,7 +197,7 @@ WatchdogReason DeviceLink::check_watchdog(int64_t now, const DeviceFeed& feed) c
 }
 
 void DeviceLink::send_command(int64_t now) {
-  const DeviceFeed& feed = world_.read_device_feed(def_.hand);
+  const DeviceFeed& feed = port_.read_feed();
   const WatchdogReason reason = check_watchdog(now, feed);
   if (reason != WatchdogReason::kNone) {
     if (working_.watchdog == WatchdogReason::kNone) ++working_.watchdog_trips;
@@ -233,9 +247,8 @@ void DeviceLink::on_sample(const DeviceSample& sample) {
     haptic.palm_position = palm.position;
     haptic.palm_rotation = palm.rotation;
   }
-  // the one rule for a hand's inputs, checked where the world takes them (the hand
-  // index was checked at open)
-  if (world_.set_haptic(def_.hand, haptic) != FRUSTA_OK) {
+  // the one rule for a hand's inputs, checked where the port takes them
+  if (port_.set_input(haptic, HandPort::Driver::kDevice) != FRUSTA_OK) {
     ++working_.samples_rejected;
     return;
   }

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
-// One glove driving one hand of a world, on a thread of its own that exists only while
-// the glove is open. Each turn of the thread reads what the glove sent (samples go to
-// the world through its lock-free haptic input, as a host's would) and, at the output
-// rate, sends the glove its command from the world's device feed, through the output
-// guard. It never waits on the world or the host.
+// One glove driving one hand, through the hand's port (port/hand_port.h), on a thread
+// of its own that exists only while the glove is open. Each turn of the thread reads
+// what the glove sent (samples go to the port's lock-free input, as a host's would)
+// and, at the output rate, sends the glove its command from the port's device feed,
+// through the output guard. It never waits on the world or the host, and sees
+// neither.
 //
 // Safety: the command drops to zero, at once, when no valid sample came for the
 // watchdog period, when the world has published no step for the engine timeout, when
@@ -18,13 +19,13 @@
 #include <string>
 #include <thread>
 
+#include "core/triple_buffer.h"
 #include "devices/byte_stream.h"
 #include "devices/device_types.h"
 #include "devices/glove_protocol.h"
 #include "devices/output_guard.h"
 #include "devices/recording.h"
-#include "runtime/triple_buffer.h"
-#include "runtime/world.h"
+#include "port/hand_port.h"
 
 namespace frusta {
 
@@ -51,7 +52,6 @@ class RateMeter {
 };
 
 struct DeviceLinkDef {
-  int32_t hand = 0;
   double output_rate_hz = 0.0;  // 0: the world's rate; never above the glove's
   double watchdog_s = 0.05;
   double engine_timeout_s = 0.05;
@@ -92,16 +92,19 @@ struct DeviceLinkStatus {
 
 class DeviceLink final : private ProtocolSink {
  public:
-  DeviceLink(World& world, const DeviceLinkDef& def, std::unique_ptr<ByteStream> stream,
+  // Drives the hand behind `port`, which must outlive the link.
+  DeviceLink(HandPort& port, const DeviceLinkDef& def, std::unique_ptr<ByteStream> stream,
              std::unique_ptr<GloveProtocol> protocol);
   ~DeviceLink() override;
   DeviceLink(const DeviceLink&) = delete;
   DeviceLink& operator=(const DeviceLink&) = delete;
 
-  // Host: open the glove (a failure is returned: a glove absent at open is an error,
-  // not a reconnect) and start the thread.
+  // Host: take the hand's port (FRUSTA_ERROR_WRONG_STATE if another glove has it), open
+  // the glove (a failure is returned: a glove absent at open is an error, not a
+  // reconnect) and start the thread.
   frusta_result open();
-  // Host: zero the glove's output, stop the thread, close. Idempotent.
+  // Host: zero the glove's output, stop the thread, close, give the port back to the
+  // host. Idempotent.
   void close();
 
   // Any one thread: the palm pose for gloves without a tracker (ignored when the glove
@@ -117,6 +120,7 @@ class DeviceLink final : private ProtocolSink {
     glm::dquat rotation{1.0, 0.0, 0.0, 0.0};
   };
 
+  frusta_result open_glove();
   void run();
   void on_connected(int64_t now);
   void on_disconnected(int64_t now);
@@ -132,8 +136,9 @@ class DeviceLink final : private ProtocolSink {
   void on_fault(FrameFault fault) override;
   void on_heartbeat() override;
 
-  World& world_;
+  HandPort& port_;
   DeviceLinkDef def_;
+  bool claimed_ = false;  // the host's: this link holds the port
   std::unique_ptr<ByteStream> stream_;
   std::unique_ptr<GloveProtocol> protocol_;
   Recorder recorder_;

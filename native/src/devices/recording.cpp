@@ -15,7 +15,7 @@
 #include <thread>
 
 #include "core/error.h"
-#include "runtime/periodic_clock.h"
+#include "core/periodic_clock.h"
 
 namespace frusta {
 

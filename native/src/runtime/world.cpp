@@ -11,8 +11,8 @@
 
 #include "core/error.h"
 #include "core/validate.h"
-#include "runtime/periodic_clock.h"
-#include "runtime/timer_resolution.h"
+#include "core/periodic_clock.h"
+#include "core/timer_resolution.h"
 
 namespace frusta {
 
@@ -135,7 +135,8 @@ frusta_result World::add_hand(const HandModel& model, int32_t* out_hand) {
   if (running() || step_ > 0)
     return fail(FRUSTA_ERROR_WRONG_STATE, "hands are added before the world's first step");
   if (frusta_result r = HandSolver::check_params(def_.solver, model)) return r;
-  hands_.push_back(std::make_unique<HandSlot>(model, def_.solver, def_.max_contacts_per_hand));
+  hands_.push_back(std::make_unique<HandSlot>(model, def_.solver, def_.max_contacts_per_hand,
+                                              hand_count(), def_.rate_hz));
   HandSlot& added = *hands_.back();
   added.ignored.assign(static_cast<size_t>(def_.max_objects), 0);
   added.objects.reserve(static_cast<size_t>(def_.max_objects));
@@ -244,16 +245,7 @@ frusta_result World::set_object_dynamic(ObjectHandle object, bool dynamic) {
 frusta_result World::set_haptic(int32_t hand, const HandState& haptic) {
   if (hand < 0 || hand >= hand_count())
     return fail(FRUSTA_ERROR_OUT_OF_RANGE, "hand is %d, the world has %d", hand, hand_count());
-  // refused here or never: an input taken is an input the step uses
-  if (frusta_result r = check_hand_state(haptic, "haptic")) return r;
-  HandSlot& h = *hands_[static_cast<size_t>(hand)];
-  TimedInput& slot = h.input.write_slot();
-  slot.state = haptic;
-  // unit from here on: inputs are interpolated, and slerp assumes unit quaternions
-  slot.state.palm_rotation = glm::normalize(haptic.palm_rotation);
-  slot.set_ns = steady_ns();
-  h.input.publish();
-  return FRUSTA_OK;
+  return hands_[static_cast<size_t>(hand)]->port.set_input(haptic, HandPort::Driver::kHost);
 }
 
 void World::apply_commands() {
@@ -359,9 +351,9 @@ void World::run(double rate_hz, double spin_us) {
 
 void World::step_hand(HandSlot& hand, HandSnapshot& snap, double dt, bool paced, int64_t tick_ns,
                       HandSolver::Clock::time_point deadline) {
-  if (hand.input.fresh()) {
-    hand.previous = hand.has_input ? hand.newest : hand.input.read();
-    hand.newest = hand.input.read();
+  if (hand.port.input_fresh()) {
+    hand.previous = hand.has_input ? hand.newest : hand.port.take_input();
+    hand.newest = hand.port.take_input();
     hand.has_input = true;
   }
   if (!hand.has_input) return;  // nothing to solve before the first input
@@ -534,14 +526,14 @@ void World::step_once(double dt, bool paced, int64_t tick_ns) {
 }
 
 void World::publish_device_feed(HandSlot& hand, const HandSnapshot& snap) {
-  DeviceFeed& feed = hand.feed.write_slot();
+  DeviceFeed feed;
   feed.step = step_ + 1;  // the step being taken
   feed.published_ns = steady_ns();
   feed.host_read_ns = host_read_ns_.load(std::memory_order_relaxed);
   feed.solved = snap.solved;
   feed.device = snap.device;
   feed.haptic_palm_rotation = hand.accepted.palm_rotation;
-  hand.feed.publish();
+  hand.port.publish_feed(feed);
 }
 
 const WorldSnapshot& World::read() {

@@ -27,9 +27,10 @@
 #include "forces/device_outputs.h"
 #include "forces/force_params.h"
 #include "core/base.h"
-#include "runtime/spsc_queue.h"
+#include "core/spsc_queue.h"
+#include "port/hand_port.h"
 #include "runtime/step_histogram.h"
-#include "runtime/triple_buffer.h"
+#include "core/triple_buffer.h"
 #include "solver/hand_solver.h"
 #include "spheretree/tree_file.h"
 
@@ -109,17 +110,6 @@ struct WorldSnapshot {
   int64_t rejected_inputs = 0;  // inputs the solver could not place (inside objects)
 };
 
-// What a device thread reads at its own rate: one hand's device outputs and whether
-// the world and its host are alive, apart from the host's snapshot.
-struct DeviceFeed {
-  uint64_t step = 0;          // 0 until the first step
-  int64_t published_ns = 0;   // steady clock, when the step published it
-  int64_t host_read_ns = 0;   // steady clock, the host's last read() (0: never)
-  bool solved = false;        // false until the hand's first valid haptic input
-  DeviceOutputs device;       // clamped to WorldDef::device_limits; world frame
-  glm::dquat haptic_palm_rotation{1.0, 0.0, 0.0, 0.0};  // of the input the step used
-};
-
 // Every field finite, the rotation orthonormal, the position within kMaxCoordinate;
 // the thread's error names `name` and the field.
 frusta_result check_rigid_pose(const RigidPose& pose, const char* name);
@@ -154,13 +144,14 @@ class World {
   // Hand the object to the world's dynamics, or take it back (at rest) for the host.
   frusta_result set_object_dynamic(ObjectHandle object, bool dynamic);
 
-  // Any one thread per hand: the newest haptic hand wins. Bad values are the solver's
-  // to refuse (counted in the snapshot); a hand index the world lacks is refused here.
-  // On the world's own thread a step plays the inputs one period late, interpolated
-  // between the two it has by the times they were set: a glove whose inputs arrive
-  // unevenly against the steps (two in one step, none in the next) moves the hand
-  // smoothly instead of in jerks that shake a held object loose. step() from the
-  // host takes the newest input as it is (the host paces both).
+  // Any one thread per hand: the host's haptic input, through the hand's port (see
+  // HandPort::set_input: the one rule for a hand's inputs, refused while a glove
+  // drives the hand). The newest wins. On the world's own thread a step plays the
+  // inputs one period late, interpolated between the two it has by the times they were
+  // set: a glove whose inputs arrive unevenly against the steps (two in one step,
+  // none in the next) moves the hand smoothly instead of in jerks that shake a held
+  // object loose. step() from the host takes the newest input as it is (the host
+  // paces both).
   frusta_result set_haptic(int32_t hand, const HandState& haptic);
 
   // The stepping thread: apply queued commands, solve every hand, publish a snapshot.
@@ -182,11 +173,8 @@ class World {
   int32_t hand_count() const { return static_cast<int32_t>(hands_.size()); }
   double rate_hz() const { return def_.rate_hz; }
 
-  // One device thread per hand: the newest feed of `hand` (< hand_count()), unchanged
-  // until its next call.
-  const DeviceFeed& read_device_feed(int32_t hand) {
-    return hands_[static_cast<size_t>(hand)]->feed.read();
-  }
+  // The port of `hand` (< hand_count()), for what drives it: the host or a glove.
+  HandPort& port(int32_t hand) { return hands_[static_cast<size_t>(hand)]->port; }
 
  private:
   enum class CommandKind : int32_t { kAdd, kRemove, kPose, kDynamic };
@@ -203,17 +191,12 @@ class World {
     ObjectDef def;  // pose and velocities as the world moves it
     ObjectWrench reaction;  // this step's, from every hand
   };
-  // A haptic input and when it was set (steady clock): a device thread's inputs do not
-  // arrive one per step, and the world's own thread smooths them by their times.
-  struct TimedInput {
-    HandState state;
-    int64_t set_ns = 0;
-  };
   struct HandSlot {
-    HandSlot(const HandModel& model, const SolverParams& params, int32_t max_contacts)
-        : solver(model, params), input(TimedInput{}), forces(max_contacts) {}
+    HandSlot(const HandModel& model, const SolverParams& params, int32_t max_contacts,
+             int32_t index, double rate_hz)
+        : solver(model, params), port(index, rate_hz), forces(max_contacts) {}
     HandSolver solver;
-    TripleBuffer<TimedInput> input;
+    HandPort port;
     bool has_input = false;
     TimedInput previous, newest;  // the two last inputs read
     HandState accepted;  // the last haptic input the solver took
@@ -227,7 +210,6 @@ class World {
     std::vector<SolverObject> objects;
     std::vector<int32_t> object_slot;
     std::vector<ForceMaterial> materials;
-    TripleBuffer<DeviceFeed> feed;
   };
 
   void run(double rate_hz, double spin_us);

@@ -28,7 +28,8 @@
 #include "devices/serial_stream.h"
 #include "hand/anthropometry.h"
 #include "hand/hand_model.h"
-#include "runtime/periodic_clock.h"
+#include "core/periodic_clock.h"
+#include "runtime/world.h"
 #include "scenes/binary_glove.h"
 #include "scenes/baked_objects.h"
 #include "scenes/hand_scenarios.h"
@@ -83,7 +84,7 @@ std::unique_ptr<DeviceLink> open_link(World& world, const std::string& path,
                                       DeviceLinkDef def = DeviceLinkDef{}) {
   def.protocol_name = "opengloves";
   auto link = std::make_unique<DeviceLink>(
-      world, def, std::make_unique<SerialStream>(path, 115200),
+      world.port(0), def, std::make_unique<SerialStream>(path, 115200),
       std::make_unique<OpenGlovesProtocol>(default_glove_calibration()));
   EXPECT_EQ(link->open(), FRUSTA_OK);
   return link;
@@ -297,7 +298,7 @@ TEST(deviceLink, BinaryProfileGloveHandshakesDrivesTheHandAndReadsCommandsBack) 
   SimulatedGlove glove(temp_path("glove"), 500.0, firmware.firmware(), firmware.listener());
   DeviceLinkDef def;
   def.protocol_name = "frusta";
-  auto link = std::make_unique<DeviceLink>(scene.world, def,
+  auto link = std::make_unique<DeviceLink>(scene.world.port(0), def,
                                            std::make_unique<SerialStream>(glove.path(), 921600),
                                            std::make_unique<FrustaProtocol>(500, 0));
   ASSERT_EQ(link->open(), FRUSTA_OK);
@@ -498,7 +499,7 @@ TEST(deviceLink, NaNAndAbsurdAnglesAreRejected) {
     return line + "\n";
   });
   DeviceLinkDef def;
-  auto link = std::make_unique<DeviceLink>(scene.world, def,
+  auto link = std::make_unique<DeviceLink>(scene.world.port(0), def,
                                            std::make_unique<SerialStream>(glove.path(), 115200),
                                            std::make_unique<AnglesAsText>());
   ASSERT_EQ(link->open(), FRUSTA_OK);
@@ -530,7 +531,7 @@ TEST(deviceLink, AGloveAtHalfOrTwiceItsAnnouncedRateIsMeasuredByItsClockAndDrive
     caps.output_rate_hz = 100.0;
     scenes::BinaryGlove firmware(caps, rate);
     SimulatedGlove glove(temp_path("glove"), rate, firmware.firmware(), firmware.listener());
-    DeviceLink link(scene.world, DeviceLinkDef{}, std::make_unique<SerialStream>(glove.path(), 921600),
+    DeviceLink link(scene.world.port(0), DeviceLinkDef{}, std::make_unique<SerialStream>(glove.path(), 921600),
                     std::make_unique<FrustaProtocol>());
     ASSERT_EQ(link.open(), FRUSTA_OK);
     DeviceLinkStatus open;
@@ -619,7 +620,7 @@ TEST(deviceLink, NoDeviceNoThread) {
     EXPECT_TRUE(thread_count_becomes(with_glove)) << thread_count();
   }
   // a glove that is not there is an error at open, and leaves no thread behind
-  DeviceLink missing(world, DeviceLinkDef{}, std::make_unique<SerialStream>(temp_path("none"), 115200),
+  DeviceLink missing(world.port(0), DeviceLinkDef{}, std::make_unique<SerialStream>(temp_path("none"), 115200),
                      std::make_unique<OpenGlovesProtocol>(default_glove_calibration()));
   EXPECT_EQ(missing.open(), FRUSTA_ERROR_IO);
   EXPECT_EQ(thread_count(), with_glove);
@@ -671,7 +672,7 @@ TEST(deviceLink, ARecordingReplaysTheSameHand) {
     Scene scene;
     DeviceLinkDef def;
     def.reconnect_interval_s = 10.0;  // the end of the recording is the end
-    DeviceLink link(scene.world, def, std::make_unique<ReplayStream>(recording, real_time, false),
+    DeviceLink link(scene.world.port(0), def, std::make_unique<ReplayStream>(recording, real_time, false),
                     std::make_unique<OpenGlovesProtocol>(default_glove_calibration()));
     const int64_t start = steady_ns();
     ASSERT_EQ(link.open(), FRUSTA_OK);

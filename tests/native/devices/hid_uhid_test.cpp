@@ -21,6 +21,7 @@
 #include "devices/hid_stream.h"
 #include "hand/anthropometry.h"
 #include "hand/hand_model.h"
+#include "runtime/world.h"
 #include "scenes/binary_glove.h"
 
 namespace frusta {
@@ -127,7 +128,7 @@ TEST(hidStream, AVirtualHidGloveHandshakesAndReadsCommandsBack) {
   ASSERT_EQ(world.start(), FRUSTA_OK);
   DeviceLinkDef def;
   def.host_timeout_s = 0.0;
-  DeviceLink link(world, def, std::make_unique<HidStream>(kVendor, kProduct, "FR-0042"),
+  DeviceLink link(world.port(hand), def, std::make_unique<HidStream>(kVendor, kProduct, "FR-0042"),
                   std::make_unique<FrustaProtocol>());
   // the kernel adds the hidraw node in its own time: open once it is there (the
   // deadline only turns a hang into a failure)

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "runtime/timer_resolution.h"
+#include "core/timer_resolution.h"
 
 #ifdef _WIN32
 #define WIN32_LEAN_AND_MEAN

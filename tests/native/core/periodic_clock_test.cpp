@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The schedule's logic, not its timing (timings belong in tools/bench runtime).
-#include "runtime/periodic_clock.h"
+#include "core/periodic_clock.h"
 
 #include <gtest/gtest.h>
 

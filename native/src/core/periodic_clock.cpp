@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "runtime/periodic_clock.h"
+#include "core/periodic_clock.h"
 
 #include <thread>
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "runtime/spsc_queue.h"
+#include "core/spsc_queue.h"
 
 #include <gtest/gtest.h>
 

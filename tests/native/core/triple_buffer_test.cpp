@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "runtime/triple_buffer.h"
+#include "core/triple_buffer.h"
 
 #include <gtest/gtest.h>
 

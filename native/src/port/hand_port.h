@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: MIT
+// The seam between one hand of a world and what drives it: the host (through
+// frusta_world_set_haptic) or a glove's thread. The world owns one port per hand. A
+// driver writes the hand's haptic input to the port and reads the hand's device feed
+// from it; it never sees the world. One driver at a time: a glove claims the port,
+// and while it holds it the host's inputs are refused.
+//
+// Threads: set_input from any one thread per port (its driver); read_feed from one
+// device thread; claim_for_device / release_device from the host; the stepping
+// thread takes the input and publishes the feed. No call waits for another.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+
+#include <glm/gtc/quaternion.hpp>
+
+#include "core/base.h"
+#include "core/triple_buffer.h"
+#include "forces/device_outputs.h"
+#include "hand/kinematics.h"
+
+namespace frusta {
+
+// A haptic input and when it was set (steady clock, ns): a device's inputs do not
+// arrive one per step, and the world's own thread smooths them by their times.
+struct TimedInput {
+  HandState state;  // checked by check_hand_state, rotation unit
+  int64_t set_ns = 0;
+};
+
+// What a device thread reads at its own rate: its hand's device outputs and whether
+// the world and its host are alive, apart from the host's snapshot.
+struct DeviceFeed {
+  uint64_t step = 0;          // 0 until the first step
+  int64_t published_ns = 0;   // steady clock, when the step published it
+  int64_t host_read_ns = 0;   // steady clock, the host's last snapshot read (0: never)
+  bool solved = false;        // false until the hand's first valid haptic input
+  DeviceOutputs device;       // clamped to the world's device limits; world frame
+  glm::dquat haptic_palm_rotation{1.0, 0.0, 0.0, 0.0};  // of the input the step used
+};
+
+class HandPort {
+ public:
+  enum class Driver : uint8_t { kHost, kDevice };
+
+  // hand: the hand's index in its world (for messages); rate_hz: the world's step
+  // rate, which a device paces its commands by
+  HandPort(int32_t hand, double rate_hz);
+  HandPort(const HandPort&) = delete;
+  HandPort& operator=(const HandPort&) = delete;
+
+  // The driver: the newest input, which the world's next step uses. The one rule for a
+  // hand's inputs (check_hand_state) is checked here, and what passes is used; the
+  // host (kHost) is refused with FRUSTA_ERROR_WRONG_STATE while a device drives the hand.
+  frusta_result set_input(const HandState& state, Driver from);
+  // One device thread: the newest feed, unchanged until its next call.
+  const DeviceFeed& read_feed() { return feed_.read(); }
+  double rate_hz() const { return rate_hz_; }
+
+  // Host: a device takes the hand (FRUSTA_ERROR_WRONG_STATE if one has it already), or
+  // gives it back to the host.
+  frusta_result claim_for_device();
+  void release_device();
+  bool device_driven() const { return device_.load(std::memory_order_acquire); }
+
+  // The stepping thread: whether an input came since the last take, and the newest.
+  bool input_fresh() const { return input_.fresh(); }
+  const TimedInput& take_input() { return input_.read(); }
+  // The stepping thread: publish the hand's feed for its device.
+  void publish_feed(const DeviceFeed& feed);
+
+ private:
+  TripleBuffer<TimedInput> input_;
+  TripleBuffer<DeviceFeed> feed_;
+  std::atomic<bool> device_{false};
+  int32_t hand_;
+  double rate_hz_;
+};
+
+}  // namespace frusta

@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: MIT
+// The seam between a hand and what drives it: one rule for its inputs, one driver at a
+// time, the feed handed over whole.
+#include "port/hand_port.h"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <string>
+
+#include "core/error.h"
+#include "core/validate.h"
+
+namespace frusta {
+namespace {
+
+HandState valid_state() {
+  HandState s;
+  s.palm_position = vec3(0.1, -0.2, 0.3);
+  s.angles[5] = 0.4;
+  return s;
+}
+
+TEST(HandPort, AnInputThatPassesTheRuleIsTakenWithAUnitRotation) {
+  HandPort port(0, 1000.0);
+  EXPECT_FALSE(port.input_fresh());
+  HandState s = valid_state();
+  s.palm_rotation = 2.0 * glm::angleAxis(0.3, vec3(0.0, 0.0, 1.0));
+  ASSERT_EQ(port.set_input(s, HandPort::Driver::kHost), FRUSTA_OK);
+  ASSERT_TRUE(port.input_fresh());
+  const TimedInput& taken = port.take_input();
+  EXPECT_EQ(taken.state.angles[5], 0.4);
+  EXPECT_EQ(taken.state.palm_position, s.palm_position);
+  EXPECT_NEAR(glm::length(taken.state.palm_rotation), 1.0, 1e-15);
+  EXPECT_GT(taken.set_ns, 0);
+  EXPECT_FALSE(port.input_fresh());
+}
+
+TEST(HandPort, AnInputThatBreaksTheRuleIsRefusedAndNotTaken) {
+  HandPort port(3, 1000.0);
+  HandState s = valid_state();
+  s.angles[7] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(port.set_input(s, HandPort::Driver::kHost), FRUSTA_ERROR_NOT_FINITE);
+  s = valid_state();
+  s.angles[7] = 1.01 * kMaxJointAngle;
+  EXPECT_EQ(port.set_input(s, HandPort::Driver::kDevice), FRUSTA_ERROR_OUT_OF_RANGE);
+  EXPECT_NE(std::string(last_error_message()).find("haptic.angles[7]"), std::string::npos);
+  EXPECT_FALSE(port.input_fresh()) << "nothing refused reaches the step";
+}
+
+TEST(HandPort, OneDeviceAtATimeAndTheHostWaitsForItsRelease) {
+  HandPort port(2, 1000.0);
+  ASSERT_EQ(port.claim_for_device(), FRUSTA_OK);
+  EXPECT_TRUE(port.device_driven());
+  EXPECT_EQ(port.claim_for_device(), FRUSTA_ERROR_WRONG_STATE);
+  EXPECT_NE(std::string(last_error_message()).find("hand 2 already has a glove"), std::string::npos);
+  EXPECT_EQ(port.set_input(valid_state(), HandPort::Driver::kHost), FRUSTA_ERROR_WRONG_STATE);
+  EXPECT_NE(std::string(last_error_message()).find("hand 2 is driven by a glove"), std::string::npos);
+  EXPECT_FALSE(port.input_fresh());
+  EXPECT_EQ(port.set_input(valid_state(), HandPort::Driver::kDevice), FRUSTA_OK);
+  port.release_device();
+  EXPECT_FALSE(port.device_driven());
+  EXPECT_EQ(port.set_input(valid_state(), HandPort::Driver::kHost), FRUSTA_OK);
+  EXPECT_EQ(port.claim_for_device(), FRUSTA_OK);
+}
+
+TEST(HandPort, TheFeedReachesTheDeviceWhole) {
+  HandPort port(0, 500.0);
+  EXPECT_EQ(port.rate_hz(), 500.0);
+  EXPECT_EQ(port.read_feed().step, 0u) << "nothing published yet";
+  DeviceFeed feed;
+  feed.step = 7;
+  feed.solved = true;
+  feed.device.finger_resistance[1] = 2.5;
+  port.publish_feed(feed);
+  const DeviceFeed& read = port.read_feed();
+  EXPECT_EQ(read.step, 7u);
+  EXPECT_TRUE(read.solved);
+  EXPECT_EQ(read.device.finger_resistance[1], 2.5);
+}
+
+}  // namespace
+}  // namespace frusta
