@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/id_pool.h"
 #include "frusta/frusta.h"
 
 namespace frusta {
@@ -18,23 +19,17 @@ namespace frusta {
 template <class Object, class Id>
 class Registry {
  public:
-  explicit Registry(const char* kind) : kind_(kind) {}
+  explicit Registry(const char* kind) : kind_(kind), ids_(kMaxObjects) {}
 
   frusta_result add(std::unique_ptr<Object> object, Id* out) {
     std::lock_guard<std::mutex> lock(mutex_);
-    int32_t index;
-    if (!free_.empty()) {
-      index = free_.back();
-      free_.pop_back();
-    } else {
-      if (slots_.size() >= kMaxObjects)
-        return fail(FRUSTA_ERROR_CAPACITY, "too many %ss alive (%zu)", kind_, kMaxObjects);
-      index = static_cast<int32_t>(slots_.size());
-      slots_.emplace_back();
-    }
-    Slot& slot = slots_[static_cast<size_t>(index)];
-    slot.object = std::move(object);
-    *out = Id{index + 1, 0, slot.generation};
+    int32_t slot = 0;
+    uint16_t generation = 0;
+    if (!ids_.acquire(&slot, &generation))
+      return fail(FRUSTA_ERROR_CAPACITY, "too many %ss alive (%d)", kind_, kMaxObjects);
+    if (objects_.size() <= static_cast<size_t>(slot)) objects_.resize(static_cast<size_t>(slot) + 1);
+    objects_[static_cast<size_t>(slot)] = std::move(object);
+    *out = Id{slot + 1, 0, generation};
     return FRUSTA_OK;
   }
 
@@ -44,11 +39,8 @@ class Registry {
       std::lock_guard<std::mutex> lock(mutex_);
       Object* object = nullptr;
       if (frusta_result r = find_locked(id, true, &object)) return r;
-      Slot& slot = slots_[static_cast<size_t>(id.index1 - 1)];
-      doomed = std::move(slot.object);
-      // skip 0 on wrap-around so a zero-initialised id never matches
-      slot.generation = static_cast<uint16_t>(slot.generation == UINT16_MAX ? 1 : slot.generation + 1);
-      free_.push_back(id.index1 - 1);
+      doomed = std::move(objects_[static_cast<size_t>(id.index1 - 1)]);
+      ids_.release(id.index1 - 1);
     }
     return FRUSTA_OK;
   }
@@ -64,7 +56,7 @@ class Registry {
     std::lock_guard<std::mutex> lock(mutex_);
     Object* object = nullptr;
     if (frusta_result r = find_locked(id, true, &object)) return r;
-    *out = slots_[static_cast<size_t>(id.index1 - 1)].object;
+    *out = objects_[static_cast<size_t>(id.index1 - 1)];
     return FRUSTA_OK;
   }
 
@@ -76,34 +68,29 @@ class Registry {
 
  private:
   // slots are int32 indices + 1 in ids; far more than any scene needs
-  static constexpr size_t kMaxObjects = 1 << 16;
-
-  struct Slot {
-    uint16_t generation = 1;  // ids with generation 0 are never issued
-    std::shared_ptr<Object> object;
-  };
+  static constexpr int32_t kMaxObjects = 1 << 16;
 
   frusta_result find_locked(Id id, bool report, Object** out) {
     if (id.index1 == 0) {
       return report ? fail(FRUSTA_ERROR_NULL_ID, "%s id is null (zero-initialised)", kind_)
                     : FRUSTA_ERROR_NULL_ID;
     }
-    const size_t index = static_cast<size_t>(id.index1) - 1;
-    if (id.index1 < 0 || index >= slots_.size() || id.world0 != 0 ||
-        slots_[index].generation != id.generation || !slots_[index].object) {
+    // index1 - 1 would overflow for INT32_MIN: is_live takes any slot number
+    const int32_t slot = id.index1 > 0 ? id.index1 - 1 : -1;
+    if (id.world0 != 0 || !ids_.is_live(slot, id.generation)) {
       return report ? fail(FRUSTA_ERROR_STALE_ID, "%s id {index1=%d, world0=%u, generation=%u} "
                            "names no live %s: it was destroyed or never created",
                            kind_, id.index1, id.world0, id.generation, kind_)
                     : FRUSTA_ERROR_STALE_ID;
     }
-    *out = slots_[index].object.get();
+    *out = objects_[static_cast<size_t>(slot)].get();
     return FRUSTA_OK;
   }
 
   const char* kind_;
   std::mutex mutex_;  // create/destroy/find are host calls, never on a 1 kHz path
-  std::vector<Slot> slots_;
-  std::vector<int32_t> free_;
+  IdPool ids_;
+  std::vector<std::shared_ptr<Object>> objects_;  // by slot
 };
 
 }  // namespace frusta

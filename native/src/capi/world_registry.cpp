@@ -14,16 +14,14 @@ WorldRegistry& world_registry() {
 
 frusta_result WorldRegistry::create(const WorldDef& def, frusta_world_id* out) {
   std::lock_guard<std::mutex> lock(create_mutex_);
-  for (int32_t i = 0; i < kMaxWorlds; ++i) {
-    Slot& slot = slots_[static_cast<size_t>(i)];
-    if (slot.world.load(std::memory_order_relaxed)) continue;
-    auto world = std::make_unique<WorldObject>(def);
-    const uint16_t generation = slot.generation.load(std::memory_order_relaxed);
-    slot.world.store(world.release(), std::memory_order_release);
-    *out = frusta_world_id{i + 1, 0, generation};
-    return FRUSTA_OK;
-  }
-  return fail(FRUSTA_ERROR_CAPACITY, "too many worlds alive (%d)", kMaxWorlds);
+  auto world = std::make_unique<WorldObject>(def);
+  int32_t slot = 0;
+  uint16_t generation = 0;
+  if (!ids_.acquire(&slot, &generation))
+    return fail(FRUSTA_ERROR_CAPACITY, "too many worlds alive (%d)", kMaxWorlds);
+  worlds_[static_cast<size_t>(slot)].store(world.release(), std::memory_order_release);
+  *out = frusta_world_id{slot + 1, 0, generation};
+  return FRUSTA_OK;
 }
 
 frusta_result WorldRegistry::destroy(frusta_world_id id) {
@@ -32,12 +30,9 @@ frusta_result WorldRegistry::destroy(frusta_world_id id) {
     std::lock_guard<std::mutex> lock(create_mutex_);
     WorldObject* world = nullptr;
     if (frusta_result r = find(id, true, &world)) return r;
-    Slot& slot = slots_[static_cast<size_t>(id.index1 - 1)];
-    // the generation first: a lookup racing this sees a stale id, not a dying world
-    const uint16_t g = slot.generation.load(std::memory_order_relaxed);
-    slot.generation.store(static_cast<uint16_t>(g == UINT16_MAX ? 1 : g + 1),
-                          std::memory_order_release);
-    slot.world.store(nullptr, std::memory_order_release);
+    // the id first: a lookup racing this sees a stale id, not a dying world
+    ids_.release(id.index1 - 1);
+    worlds_[static_cast<size_t>(id.index1 - 1)].store(nullptr, std::memory_order_release);
     doomed.reset(world);
   }
   return FRUSTA_OK;  // the world's thread is stopped and joined as it is freed, unlocked
@@ -48,11 +43,9 @@ frusta_result WorldRegistry::find(frusta_world_id id, bool report, WorldObject**
     return report ? fail(FRUSTA_ERROR_NULL_ID, "world id is null (zero-initialised)")
                   : FRUSTA_ERROR_NULL_ID;
   WorldObject* world = nullptr;
-  if (id.index1 > 0 && id.index1 <= kMaxWorlds && id.world0 == 0) {
-    const Slot& slot = slots_[static_cast<size_t>(id.index1 - 1)];
-    if (slot.generation.load(std::memory_order_acquire) == id.generation)
-      world = slot.world.load(std::memory_order_acquire);
-  }
+  const int32_t slot = id.index1 > 0 ? id.index1 - 1 : -1;
+  if (id.world0 == 0 && ids_.is_live(slot, id.generation))
+    world = worlds_[static_cast<size_t>(slot)].load(std::memory_order_acquire);
   if (!world)
     return report ? fail(FRUSTA_ERROR_STALE_ID,
                          "world id {index1=%d, world0=%u, generation=%u} names no live world: it "
@@ -75,9 +68,8 @@ frusta_result WorldRegistry::find_by_tag(uint16_t tag, const char* what, WorldOb
                                          frusta_world_id* id) const {
   const int32_t index1 = tag & 0xff;
   if (index1 >= 1 && index1 <= kMaxWorlds) {
-    const Slot& slot = slots_[static_cast<size_t>(index1 - 1)];
-    const uint16_t generation = slot.generation.load(std::memory_order_acquire);
-    WorldObject* world = slot.world.load(std::memory_order_acquire);
+    const uint16_t generation = ids_.generation(index1 - 1);
+    WorldObject* world = worlds_[static_cast<size_t>(index1 - 1)].load(std::memory_order_acquire);
     if (world && (generation & 0xff) == (tag >> 8)) {
       *out = world;
       *id = frusta_world_id{index1, 0, generation};

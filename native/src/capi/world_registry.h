@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <mutex>
 
+#include "core/id_pool.h"
 #include "devices/device_link.h"
 #include "frusta/frusta.h"
 #include "runtime/world.h"
@@ -47,14 +48,11 @@ class WorldRegistry {
                             frusta_world_id* id) const;
 
  private:
-  struct Slot {
-    std::atomic<WorldObject*> world{nullptr};
-    std::atomic<uint16_t> generation{1};  // ids with generation 0 are never issued
-  };
   frusta_result find(frusta_world_id id, bool report, WorldObject** out) const;
 
   std::mutex create_mutex_;  // serialises create/destroy (host calls) only
-  std::array<Slot, kMaxWorlds> slots_;
+  IdPool ids_{kMaxWorlds};
+  std::array<std::atomic<WorldObject*>, kMaxWorlds> worlds_{};
 };
 
 WorldRegistry& world_registry();

@@ -116,11 +116,10 @@ frusta_result check_world_def(const WorldDef& def) {
 
 World::World(const WorldDef& def)
     : def_(def),
-      host_generation_(static_cast<size_t>(def.max_objects), 1u),
+      object_ids_(def.max_objects),
       host_trees_(static_cast<size_t>(def.max_objects)),
       commands_(static_cast<size_t>(def.command_capacity)),
       slots_(static_cast<size_t>(def.max_objects)) {
-  for (int32_t s = def.max_objects - 1; s >= 0; --s) host_free_.push_back(s);
   active_.reserve(static_cast<size_t>(def.max_objects));
   active_slot_.reserve(static_cast<size_t>(def.max_objects));
   active_material_.reserve(static_cast<size_t>(def.max_objects));
@@ -170,9 +169,8 @@ void World::release_retired() {
 }
 
 frusta_result World::check_handle(ObjectHandle object) const {
-  if (object.slot < 0 || object.slot >= def_.max_objects ||
-      host_generation_[static_cast<size_t>(object.slot)] != object.generation ||
-      !host_trees_[static_cast<size_t>(object.slot)])
+  if (object.generation > 0xFFFF ||
+      !object_ids_.is_live(object.slot, static_cast<uint16_t>(object.generation)))
     return fail(FRUSTA_ERROR_STALE_ID, "object {slot=%d, generation=%u} names no object in this world",
                 object.slot, object.generation);
   return FRUSTA_OK;
@@ -183,17 +181,20 @@ frusta_result World::add_object(std::shared_ptr<const TreeFile> tree, const Obje
   release_retired();
   if (!tree) return fail(FRUSTA_ERROR_NULL_POINTER, "tree is null");
   if (frusta_result r = check_object_def(def)) return r;
-  if (host_free_.empty())
+  int32_t slot = 0;
+  uint16_t generation = 0;
+  if (!object_ids_.acquire(&slot, &generation))
     return fail(FRUSTA_ERROR_CAPACITY, "the world holds max_objects (%d) objects", def_.max_objects);
-  const int32_t slot = host_free_.back();
   Command c;
   c.kind = CommandKind::kAdd;
   c.slot = slot;
-  c.generation = host_generation_[static_cast<size_t>(slot)];
+  c.generation = generation;
   c.def = def;
   c.tree = tree.get();
-  if (frusta_result r = queue(c)) return r;
-  host_free_.pop_back();
+  if (frusta_result r = queue(c)) {
+    object_ids_.release(slot);  // never named to anyone: its next generation is as good
+    return r;
+  }
   host_trees_[static_cast<size_t>(slot)] = std::move(tree);
   *out = {slot, c.generation};
   return FRUSTA_OK;
@@ -217,9 +218,7 @@ frusta_result World::remove_object(ObjectHandle object) {
   // the stepping thread may use the tree until it applies this command
   retired_.emplace_back(pushed_, std::move(host_trees_[slot]));
   host_trees_[slot].reset();
-  // 16 bits, as in the C ABI's ids; 0 is never issued
-  host_generation_[slot] = host_generation_[slot] == 0xFFFF ? 1 : host_generation_[slot] + 1;
-  host_free_.push_back(object.slot);
+  object_ids_.release(object.slot);
   return FRUSTA_OK;
 }
 

@@ -27,6 +27,7 @@
 #include "forces/device_outputs.h"
 #include "forces/force_params.h"
 #include "core/base.h"
+#include "core/id_pool.h"
 #include "core/spsc_queue.h"
 #include "port/hand_port.h"
 #include "runtime/step_histogram.h"
@@ -233,9 +234,8 @@ class World {
   WorldDef def_;
   std::vector<std::unique_ptr<HandSlot>> hands_;
   // host side: which slots are taken, their generations, and the trees they hold
-  std::vector<uint32_t> host_generation_;
+  IdPool object_ids_;
   std::vector<std::shared_ptr<const TreeFile>> host_trees_;
-  std::vector<int32_t> host_free_;
   uint64_t pushed_ = 0;  // commands queued so far
   std::vector<std::pair<uint64_t, std::shared_ptr<const TreeFile>>> retired_;
   // stepping side
