@@ -7,7 +7,7 @@
 #include <cstring>
 #include <string>
 
-#include "scenes/meshes.h"
+#include "meshes/meshes.h"
 
 namespace {
 

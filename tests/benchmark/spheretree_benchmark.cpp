@@ -14,7 +14,7 @@
 #include "bake/baker.h"
 #include "core/error.h"
 #include "geometry/contact_test.h"
-#include "scenes/meshes.h"
+#include "meshes/meshes.h"
 #include "spheretree/tree_builder.h"
 
 namespace frusta {

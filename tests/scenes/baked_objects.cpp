@@ -7,7 +7,7 @@
 #if defined(FRUSTA_HAVE_BAKER)
 #include "bake/baker.h"
 #include "core/error.h"
-#include "scenes/meshes.h"
+#include "meshes/meshes.h"
 #endif
 
 namespace frusta::scenes {

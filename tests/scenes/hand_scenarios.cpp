@@ -12,7 +12,7 @@
 #include "geometry/exact_distance.h"
 #include "hand/anthropometry.h"
 #include "hand/hand_model.h"
-#include "scenes/meshes.h"
+#include "meshes/meshes.h"
 #include "spheretree/tree_builder.h"
 
 namespace frusta::scenes {

@@ -9,7 +9,7 @@
 
 #include <string>
 
-#include "frusta/frusta.h"
+#include "core/base.h"
 #include "gltf_json.h"
 
 namespace frusta {

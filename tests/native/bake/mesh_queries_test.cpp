@@ -7,7 +7,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "scenes/meshes.h"
+#include "meshes/meshes.h"
 
 namespace frusta {
 namespace {

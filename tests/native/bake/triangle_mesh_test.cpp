@@ -6,7 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/error.h"
-#include "scenes/meshes.h"
+#include "meshes/meshes.h"
 
 namespace frusta {
 namespace {

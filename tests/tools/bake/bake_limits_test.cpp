@@ -12,7 +12,7 @@
 #include "bake/bake_params.h"
 #include "bake/mesh_queries.h"
 #include "frusta/frusta.h"
-#include "scenes/meshes.h"
+#include "meshes/meshes.h"
 
 namespace frusta {
 namespace {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "scenes/meshes.h"
+#include "meshes/meshes.h"
 
 #include <cmath>
 #include <utility>

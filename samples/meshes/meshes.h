@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Procedural test objects, shared by the tests, the benchmarks and the sample
-// generator: closed, outward-wound triangle meshes in metres.
+// The sample objects' shapes, made procedurally: closed, outward-wound triangle meshes
+// in metres. The sample generator writes them as glTF; the tests and the benchmarks
+// bake them too.
 #pragma once
 
 #include "bake/triangle_mesh.h"
