@@ -178,7 +178,7 @@ static int apply_events(recording* rec, frusta_world_id world, double t) {
         if (!check(frusta_world_set_object_dynamic(world, obj->id, e->value), "set_object_dynamic"))
           return 0;
       } else if (strcmp(e->kind, "remove") == 0) {
-        if (!check(frusta_world_remove_object(world, obj->id), "remove_object")) return 0;
+        if (!check(frusta_destroy_object(obj->id), "destroy_object")) return 0;
         memset(&obj->id, 0, sizeof obj->id);
       }
     }
@@ -189,16 +189,19 @@ static int apply_events(recording* rec, frusta_world_id world, double t) {
 static double norm3(const double v[3]) { return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
 
 /* one host tick: latch the newest step, tally it, trace it */
-static int observe(frusta_world_id world, const recording* rec, tally* t, FILE* trace) {
+static int observe(frusta_world_id world, frusta_hand_id hand_id, const recording* rec, tally* t,
+                   FILE* trace) {
   frusta_world_state state = {.struct_size = sizeof state};
   frusta_world_hand hand = {.struct_size = sizeof hand};
   static frusta_world_contact contacts[MAX_CONTACTS];
   int32_t count = 0;
   if (!check(frusta_world_read(world, &state), "frusta_world_read")) return 0;
   if (state.step == 0) return 1;
-  if (!check(frusta_world_get_hand(world, 0, &hand), "frusta_world_get_hand")) return 0;
-  if (!check(frusta_world_get_contacts(world, 0, contacts, MAX_CONTACTS, &count), "get_contacts"))
+  if (!check(frusta_world_get_hand(world, hand_id, &hand), "frusta_world_get_hand")) return 0;
+  if (!check(frusta_world_get_contacts(world, hand_id, contacts, MAX_CONTACTS, &count),
+             "get_contacts"))
     return 0;
+  if (count > MAX_CONTACTS) count = MAX_CONTACTS; /* the rest were not copied */
   double deepest = 0.0;
   for (int i = 0; i < count; ++i)
     if (-contacts[i].distance > deepest) deepest = -contacts[i].distance;
@@ -267,14 +270,15 @@ int main(int argc, char** argv) {
   frusta_world_id world;
   if (!check(frusta_create_world(&def, &world), "frusta_create_world")) return 1;
   frusta_hand_def hand_def = frusta_default_hand_def();
-  int32_t hand = -1;
-  if (!check(frusta_world_add_hand(world, &hand_def, &hand), "frusta_world_add_hand")) return 1;
+  frusta_hand_id hand;
+  if (!check(frusta_create_world_hand(world, &hand_def, &hand), "frusta_create_world_hand"))
+    return 1;
   for (int o = 0; o < rec.object_count; ++o) {
     object_row* obj = &rec.objects[o];
     char path[4096];
     snprintf(path, sizeof path, "%s/%s.frtree", argv[2], obj->sample);
-    if (!check(frusta_load_sphere_tree(path, &obj->tree), path)) return 1;
-    if (!check(frusta_world_add_object(world, obj->tree, &obj->def, &obj->id), obj->name)) return 1;
+    if (!check(frusta_create_sphere_tree_from_file(path, &obj->tree), path)) return 1;
+    if (!check(frusta_create_object(world, obj->tree, &obj->def, &obj->id), obj->name)) return 1;
   }
   FILE* trace = NULL;
   if (trace_path) {
@@ -309,7 +313,7 @@ int main(int argc, char** argv) {
                                        FRUSTA_HAND_JOINT_COUNT), "set_haptic") &&
          apply_events(&rec, world, now);
     if (ok && host_steps) ok = check(frusta_world_step(world), "frusta_world_step");
-    if (ok) ok = observe(world, &rec, &t, trace);
+    if (ok) ok = observe(world, hand, &rec, &t, trace);
     if (!host_steps) sleep_until(&deadline, tick_ns);
   }
   if (!host_steps) frusta_world_stop(world);

@@ -186,29 +186,30 @@
   X(frusta_device_id, world0, 4, 2) \
   X(frusta_device_id, generation, 6, 2) \
   X(frusta_device_def, struct_size, 0, 4) \
-  X(frusta_device_def, hand, 4, 4) \
-  X(frusta_device_def, output_rate_hz, 8, 8) \
-  X(frusta_device_def, watchdog_s, 16, 8) \
-  X(frusta_device_def, engine_timeout_s, 24, 8) \
-  X(frusta_device_def, host_timeout_s, 32, 8) \
-  X(frusta_device_def, reconnect_interval_s, 40, 8) \
-  X(frusta_device_def, max_force_rate, 48, 8) \
-  X(frusta_device_def, max_torque_rate, 56, 8) \
-  X(frusta_device_def, max_finger_resistance, 64, 8) \
-  X(frusta_device_def, max_fingertip_force, 72, 8) \
-  X(frusta_device_def, max_joint_torque, 80, 8) \
-  X(frusta_device_def, curl_open, 88, 120) \
-  X(frusta_device_def, curl_closed, 208, 120) \
-  X(frusta_device_def, flexion_open, 328, 120) \
-  X(frusta_device_def, flexion_closed, 448, 120) \
-  X(frusta_device_def, splay_center, 568, 40) \
-  X(frusta_device_def, splay_span, 608, 40) \
-  X(frusta_device_def, abduction_range, 648, 40) \
-  X(frusta_device_def, brake_full_scale, 688, 8) \
-  X(frusta_device_def, brake_units, 696, 8) \
-  X(frusta_device_def, analog_max, 704, 8) \
-  X(frusta_device_def, internal_value, 712, 4) \
-  X(frusta_device_def, reserved0, 716, 4) \
+  X(frusta_device_def, hand, 4, 8) \
+  X(frusta_device_def, reserved1, 12, 4) \
+  X(frusta_device_def, output_rate_hz, 16, 8) \
+  X(frusta_device_def, watchdog_s, 24, 8) \
+  X(frusta_device_def, engine_timeout_s, 32, 8) \
+  X(frusta_device_def, host_timeout_s, 40, 8) \
+  X(frusta_device_def, reconnect_interval_s, 48, 8) \
+  X(frusta_device_def, max_force_rate, 56, 8) \
+  X(frusta_device_def, max_torque_rate, 64, 8) \
+  X(frusta_device_def, max_finger_resistance, 72, 8) \
+  X(frusta_device_def, max_fingertip_force, 80, 8) \
+  X(frusta_device_def, max_joint_torque, 88, 8) \
+  X(frusta_device_def, curl_open, 96, 120) \
+  X(frusta_device_def, curl_closed, 216, 120) \
+  X(frusta_device_def, flexion_open, 336, 120) \
+  X(frusta_device_def, flexion_closed, 456, 120) \
+  X(frusta_device_def, splay_center, 576, 40) \
+  X(frusta_device_def, splay_span, 616, 40) \
+  X(frusta_device_def, abduction_range, 656, 40) \
+  X(frusta_device_def, brake_full_scale, 696, 8) \
+  X(frusta_device_def, brake_units, 704, 8) \
+  X(frusta_device_def, analog_max, 712, 8) \
+  X(frusta_device_def, internal_value, 720, 4) \
+  X(frusta_device_def, reserved0, 724, 4) \
   X(frusta_device_status, struct_size, 0, 4) \
   X(frusta_device_status, state, 4, 4) \
   X(frusta_device_status, watchdog, 8, 4) \
@@ -235,11 +236,10 @@
   X(frusta_device_status, max_joint_torque, 152, 8) \
   X(frusta_device_status, finger_resistance, 160, 40) \
   X(frusta_device_status, fingertip_force, 200, 120) \
-  X(frusta_device_info, struct_size, 0, 4) \
-  X(frusta_device_info, kind, 4, 4) \
-  X(frusta_device_info, vendor_id, 8, 4) \
-  X(frusta_device_info, product_id, 12, 4) \
-  X(frusta_device_info, uri, 16, 256)
+  X(frusta_device_info, kind, 0, 4) \
+  X(frusta_device_info, vendor_id, 4, 4) \
+  X(frusta_device_info, product_id, 8, 4) \
+  X(frusta_device_info, uri, 12, 256)
 
 // X(struct, sizeof, alignof)
 #define FRUSTA_ABI_STRUCTS(X)        \
@@ -263,12 +263,12 @@
   X(frusta_world_contact, 152, 8)    \
   X(frusta_object_state, 160, 8) \
   X(frusta_device_id, 8, 4) \
-  X(frusta_device_def, 720, 8) \
+  X(frusta_device_def, 728, 8) \
   X(frusta_device_status, 320, 8) \
-  X(frusta_device_info, 272, 4)
+  X(frusta_device_info, 268, 4)
 
-static_assert(FRUSTA_ABI_VERSION == 2,
-              "the layout table below is ABI 2: update it and the C# mirror with the ABI");
+static_assert(FRUSTA_ABI_VERSION == 3,
+              "the layout table below is ABI 3: update it and the C# mirror with the ABI");
 
 #define FRUSTA_CHECK_MEMBER(type, member, offset, size)                          \
   static_assert(offsetof(type, member) == (offset), #type "." #member " moved"); \
@@ -318,7 +318,8 @@ static_assert(FRUSTA_FEATURE_SIDE == 0 && FRUSTA_FEATURE_DISTAL == 1 &&
 static_assert(FRUSTA_CONSTRAINT_SQUARED == 0 && FRUSTA_CONSTRAINT_DISTANCE == 1);
 static_assert(FRUSTA_FINGER_COUNT == 5 && FRUSTA_SEGMENTS_PER_FINGER == 3 &&
               FRUSTA_JOINTS_PER_FINGER == 4 && FRUSTA_HAND_SEGMENT_COUNT == 15 &&
-              FRUSTA_HAND_JOINT_COUNT == 20 && FRUSTA_PALM_DOF == 6);
+              FRUSTA_HAND_JOINT_COUNT == 20 && FRUSTA_PALM_DOF == 6 &&
+              FRUSTA_POINT_JACOBIAN_LENGTH == 30);
 static_assert(FRUSTA_VERSION ==
               FRUSTA_VERSION_MAJOR * 1000000 + FRUSTA_VERSION_MINOR * 1000 + FRUSTA_VERSION_PATCH);
 
@@ -343,14 +344,14 @@ FRUSTA_CHECK_SIGNATURE(frusta_hand_set_palm_pose,
 FRUSTA_CHECK_SIGNATURE(frusta_hand_set_joint_angles,
                        frusta_result (*)(frusta_hand_id, const double*, int32_t))
 FRUSTA_CHECK_SIGNATURE(frusta_hand_get_joint_angles,
-                       frusta_result (*)(frusta_hand_id, double*, int32_t))
+                       frusta_result (*)(frusta_hand_id, double*, int32_t, int32_t*))
 FRUSTA_CHECK_SIGNATURE(frusta_hand_get_segments,
                        frusta_result (*)(frusta_hand_id, frusta_segment*, int32_t, int32_t*))
 FRUSTA_CHECK_SIGNATURE(frusta_hand_get_palm_spheres,
                        frusta_result (*)(frusta_hand_id, frusta_sphere*, int32_t, int32_t*))
 FRUSTA_CHECK_SIGNATURE(frusta_hand_point_jacobian,
                        frusta_result (*)(frusta_hand_id, int32_t, int32_t, const double*, double*,
-                                         double*, int32_t))
+                                         double*, int32_t, int32_t*))
 FRUSTA_CHECK_SIGNATURE(frusta_query_contact,
                        frusta_result (*)(const frusta_segment*, const frusta_sphere*,
                                          frusta_contact_query*))
@@ -358,12 +359,13 @@ FRUSTA_CHECK_SIGNATURE(frusta_constraint_eval,
                        frusta_result (*)(const frusta_segment*, const frusta_sphere*, int32_t,
                                          frusta_constraint*))
 FRUSTA_CHECK_SIGNATURE(frusta_default_bake_def, frusta_bake_def (*)())
-FRUSTA_CHECK_SIGNATURE(frusta_bake_sphere_tree,
+FRUSTA_CHECK_SIGNATURE(frusta_create_sphere_tree_from_mesh,
                        frusta_result (*)(const float*, int32_t, const int32_t*, int32_t,
                                          const frusta_bake_def*, frusta_tree_id*))
-FRUSTA_CHECK_SIGNATURE(frusta_load_sphere_tree, frusta_result (*)(const char*, frusta_tree_id*))
-FRUSTA_CHECK_SIGNATURE(frusta_save_sphere_tree, frusta_result (*)(frusta_tree_id, const char*))
+FRUSTA_CHECK_SIGNATURE(frusta_create_sphere_tree_from_file,
+                       frusta_result (*)(const char*, frusta_tree_id*))
 FRUSTA_CHECK_SIGNATURE(frusta_destroy_sphere_tree, frusta_result (*)(frusta_tree_id))
+FRUSTA_CHECK_SIGNATURE(frusta_sphere_tree_save, frusta_result (*)(frusta_tree_id, const char*))
 FRUSTA_CHECK_SIGNATURE(frusta_sphere_tree_is_valid, int32_t (*)(frusta_tree_id))
 FRUSTA_CHECK_SIGNATURE(frusta_sphere_tree_get_info,
                        frusta_result (*)(frusta_tree_id, frusta_sphere_tree_info*))
@@ -378,16 +380,15 @@ FRUSTA_CHECK_SIGNATURE(frusta_create_world,
                        frusta_result (*)(const frusta_world_def*, frusta_world_id*))
 FRUSTA_CHECK_SIGNATURE(frusta_destroy_world, frusta_result (*)(frusta_world_id))
 FRUSTA_CHECK_SIGNATURE(frusta_world_is_valid, int32_t (*)(frusta_world_id))
-FRUSTA_CHECK_SIGNATURE(frusta_world_add_hand,
-                       frusta_result (*)(frusta_world_id, const frusta_hand_def*, int32_t*))
+FRUSTA_CHECK_SIGNATURE(frusta_create_world_hand,
+                       frusta_result (*)(frusta_world_id, const frusta_hand_def*, frusta_hand_id*))
 FRUSTA_CHECK_SIGNATURE(frusta_world_set_haptic,
-                       frusta_result (*)(frusta_world_id, int32_t, const frusta_pose*,
+                       frusta_result (*)(frusta_world_id, frusta_hand_id, const frusta_pose*,
                                          const double*, int32_t))
-FRUSTA_CHECK_SIGNATURE(frusta_world_add_object,
+FRUSTA_CHECK_SIGNATURE(frusta_create_object,
                        frusta_result (*)(frusta_world_id, frusta_tree_id, const frusta_object_def*,
                                          frusta_object_id*))
-FRUSTA_CHECK_SIGNATURE(frusta_world_remove_object,
-                       frusta_result (*)(frusta_world_id, frusta_object_id))
+FRUSTA_CHECK_SIGNATURE(frusta_destroy_object, frusta_result (*)(frusta_object_id))
 FRUSTA_CHECK_SIGNATURE(frusta_world_set_object_pose,
                        frusta_result (*)(frusta_world_id, frusta_object_id, const frusta_pose*))
 FRUSTA_CHECK_SIGNATURE(frusta_world_set_object_dynamic,
@@ -398,19 +399,19 @@ FRUSTA_CHECK_SIGNATURE(frusta_world_stop, frusta_result (*)(frusta_world_id))
 FRUSTA_CHECK_SIGNATURE(frusta_world_read,
                        frusta_result (*)(frusta_world_id, frusta_world_state*))
 FRUSTA_CHECK_SIGNATURE(frusta_world_get_hand,
-                       frusta_result (*)(frusta_world_id, int32_t, frusta_world_hand*))
+                       frusta_result (*)(frusta_world_id, frusta_hand_id, frusta_world_hand*))
 FRUSTA_CHECK_SIGNATURE(frusta_world_get_contacts,
-                       frusta_result (*)(frusta_world_id, int32_t, frusta_world_contact*, int32_t,
-                                         int32_t*))
+                       frusta_result (*)(frusta_world_id, frusta_hand_id, frusta_world_contact*,
+                                         int32_t, int32_t*))
 FRUSTA_CHECK_SIGNATURE(frusta_world_get_object,
                        frusta_result (*)(frusta_world_id, frusta_object_id, frusta_object_state*))
 FRUSTA_CHECK_SIGNATURE(frusta_default_device_def, frusta_device_def (*)())
 FRUSTA_CHECK_SIGNATURE(frusta_enumerate_devices,
                        frusta_result (*)(frusta_device_info*, int32_t, int32_t*))
-FRUSTA_CHECK_SIGNATURE(frusta_world_open_device,
+FRUSTA_CHECK_SIGNATURE(frusta_create_device,
                        frusta_result (*)(frusta_world_id, const char*, const frusta_device_def*,
                                          frusta_device_id*))
-FRUSTA_CHECK_SIGNATURE(frusta_device_close, frusta_result (*)(frusta_device_id))
+FRUSTA_CHECK_SIGNATURE(frusta_destroy_device, frusta_result (*)(frusta_device_id))
 FRUSTA_CHECK_SIGNATURE(frusta_device_is_valid, int32_t (*)(frusta_device_id))
 FRUSTA_CHECK_SIGNATURE(frusta_device_get_status,
                        frusta_result (*)(frusta_device_id, frusta_device_status*))
@@ -471,7 +472,7 @@ TEST(abiLayout, DefaultDefCarriesItsSize) {
   EXPECT_EQ(frusta_default_bake_def().struct_size, 56);
   EXPECT_EQ(frusta_default_world_def().struct_size, 128);
   EXPECT_EQ(frusta_default_object_def().struct_size, 224);
-  EXPECT_EQ(frusta_default_device_def().struct_size, 720);
+  EXPECT_EQ(frusta_default_device_def().struct_size, 728);
 }
 
 // Bindings learn the native sizes at load from frusta_struct_size; it must know every

@@ -53,22 +53,23 @@ typedef struct snapshot {
   frusta_segment segments[FRUSTA_HAND_SEGMENT_COUNT];
   frusta_sphere palm[MAX_PALM_SPHERES];
   int32_t palm_count;
-  double jacobian[3 * (FRUSTA_JOINTS_PER_FINGER + FRUSTA_PALM_DOF)];
+  double jacobian[FRUSTA_POINT_JACOBIAN_LENGTH];
 } snapshot;
 
 static snapshot g_before, g_after; /* static: they are large */
 
 static int take_snapshot(frusta_hand_id hand, snapshot* s) {
   static const double kLocal[3] = {0.01, 0.002, -0.003};
-  int32_t count = 0;
+  int32_t count = 0, other = 0;
   memset(s, 0, sizeof *s);
-  if (frusta_hand_get_joint_angles(hand, s->angles, FRUSTA_HAND_JOINT_COUNT) != FRUSTA_OK) return 0;
+  if (frusta_hand_get_joint_angles(hand, s->angles, FRUSTA_HAND_JOINT_COUNT, &other) != FRUSTA_OK)
+    return 0;
   if (frusta_hand_get_segments(hand, s->segments, FRUSTA_HAND_SEGMENT_COUNT, &count) != FRUSTA_OK)
     return 0;
   if (frusta_hand_get_palm_spheres(hand, s->palm, MAX_PALM_SPHERES, &s->palm_count) != FRUSTA_OK)
     return 0;
   if (frusta_hand_point_jacobian(hand, FRUSTA_FINGER_INDEX, 2, kLocal, NULL, s->jacobian,
-                                 3 * (FRUSTA_JOINTS_PER_FINGER + FRUSTA_PALM_DOF)) != FRUSTA_OK)
+                                 FRUSTA_POINT_JACOBIAN_LENGTH, &other) != FRUSTA_OK)
     return 0;
   return count == FRUSTA_HAND_SEGMENT_COUNT;
 }
@@ -188,8 +189,10 @@ static void test_create_destroy(void) {
 
   double angles[FRUSTA_HAND_JOINT_COUNT];
   memset(angles, 0xff, sizeof angles);
+  int32_t angle_count = -1;
   expect_ok("get_joint_angles(new hand)",
-            frusta_hand_get_joint_angles(hand, angles, FRUSTA_HAND_JOINT_COUNT));
+            frusta_hand_get_joint_angles(hand, angles, FRUSTA_HAND_JOINT_COUNT, &angle_count));
+  check(angle_count == FRUSTA_HAND_JOINT_COUNT, "joint angle count %d", angle_count);
   int zero = 1;
   for (int i = 0; i < FRUSTA_HAND_JOINT_COUNT; ++i) zero &= angles[i] == 0.0;
   check(zero, "a new hand has every joint angle 0 (inside the default limits)");
@@ -359,7 +362,8 @@ static void test_def_errors(void) {
   expect_ok("create_hand(joint_min == joint_max: locked joint)", r);
   if (r == FRUSTA_OK) {
     double angles[FRUSTA_HAND_JOINT_COUNT];
-    frusta_hand_get_joint_angles(out, angles, FRUSTA_HAND_JOINT_COUNT);
+    int32_t count = 0;
+    frusta_hand_get_joint_angles(out, angles, FRUSTA_HAND_JOINT_COUNT, &count);
     check(angles[2 * FRUSTA_JOINTS_PER_FINGER + 1] == 0.25,
           "a locked joint starts at its only value (%g)", angles[2 * FRUSTA_JOINTS_PER_FINGER + 1]);
     frusta_destroy_hand(out);
@@ -485,8 +489,9 @@ static void expect_id_refused(frusta_hand_id id, frusta_result want, const char*
   expect_error(what, frusta_hand_set_joint_angles(id, angles, FRUSTA_HAND_JOINT_COUNT), want,
                needle, NULL);
   snprintf(what, sizeof what, "get_joint_angles(%s)", label);
-  expect_error(what, frusta_hand_get_joint_angles(id, angles, FRUSTA_HAND_JOINT_COUNT), want,
-               needle, NULL);
+  expect_error(what, frusta_hand_get_joint_angles(id, angles, FRUSTA_HAND_JOINT_COUNT, &count),
+               want, needle, NULL);
+  check(count == -7, "get_joint_angles(%s) leaves out_count unchanged", label);
   snprintf(what, sizeof what, "get_segments(%s)", label);
   expect_error(what, frusta_hand_get_segments(id, segments, FRUSTA_HAND_SEGMENT_COUNT, &count),
                want, needle, NULL);
@@ -495,8 +500,9 @@ static void expect_id_refused(frusta_hand_id id, frusta_result want, const char*
   expect_error(what, frusta_hand_get_palm_spheres(id, palm, 4, &count), want, needle, NULL);
   check(count == -7, "get_palm_spheres(%s) leaves out_count unchanged", label);
   snprintf(what, sizeof what, "point_jacobian(%s)", label);
-  expect_error(what, frusta_hand_point_jacobian(id, 1, 1, local, NULL, jacobian, 30), want, needle,
-               NULL);
+  expect_error(what, frusta_hand_point_jacobian(id, 1, 1, local, NULL, jacobian, 30, &count), want,
+               needle, NULL);
+  check(count == -7, "point_jacobian(%s) leaves out_count unchanged", label);
   check(frusta_hand_is_valid(id) == 0, "frusta_hand_is_valid(%s) == 0", label);
   snprintf(what, sizeof what, "calls on %s", label);
   expect_unchanged(witness, what);
@@ -649,54 +655,72 @@ static void test_hand_inputs(void) {
     expect_unchanged(hand, what);
   }
 
-  /* outputs */
-  double out_angles[FRUSTA_HAND_JOINT_COUNT];
+  /* outputs, by the output-array rule: the count, and min(capacity, count) elements */
+  double out_angles[FRUSTA_HAND_JOINT_COUNT + 1];
   memset(out_angles, 0x5a, sizeof out_angles);
-  double pattern[FRUSTA_HAND_JOINT_COUNT];
+  double pattern[FRUSTA_HAND_JOINT_COUNT + 1];
   memset(pattern, 0x5a, sizeof pattern);
-  expect_error("get_joint_angles(out null)",
-               frusta_hand_get_joint_angles(hand, NULL, FRUSTA_HAND_JOINT_COUNT),
+  int32_t count = -7;
+  expect_error("get_joint_angles(out null, capacity 20)",
+               frusta_hand_get_joint_angles(hand, NULL, FRUSTA_HAND_JOINT_COUNT, &count),
                FRUSTA_ERROR_NULL_POINTER, "out", NULL);
-  expect_error("get_joint_angles(capacity 19)",
-               frusta_hand_get_joint_angles(hand, out_angles, FRUSTA_HAND_JOINT_COUNT - 1),
-               FRUSTA_ERROR_CAPACITY, "19", "20");
-  check(memcmp(out_angles, pattern, sizeof pattern) == 0,
-        "get_joint_angles(capacity 19) writes nothing");
+  expect_error("get_joint_angles(capacity -1)",
+               frusta_hand_get_joint_angles(hand, out_angles, -1, &count),
+               FRUSTA_ERROR_OUT_OF_RANGE, "capacity", NULL);
+  expect_error("get_joint_angles(out_count null)",
+               frusta_hand_get_joint_angles(hand, out_angles, FRUSTA_HAND_JOINT_COUNT, NULL),
+               FRUSTA_ERROR_NULL_POINTER, "out_count", NULL);
+  check(memcmp(out_angles, pattern, sizeof pattern) == 0 && count == -7,
+        "failed get_joint_angles writes neither out nor out_count");
+  expect_ok("get_joint_angles(out null, capacity 0): count only",
+            frusta_hand_get_joint_angles(hand, NULL, 0, &count));
+  check(count == FRUSTA_HAND_JOINT_COUNT, "get_joint_angles counts %d angles", count);
+  count = -7;
+  expect_ok("get_joint_angles(capacity 19)",
+            frusta_hand_get_joint_angles(hand, out_angles, FRUSTA_HAND_JOINT_COUNT - 1, &count));
+  check(count == FRUSTA_HAND_JOINT_COUNT &&
+            memcmp(&out_angles[19], &pattern[19], 2 * sizeof out_angles[0]) == 0,
+        "get_joint_angles(capacity 19) writes 19 angles and counts 20 (got %d)", count);
 
   frusta_segment segments[FRUSTA_HAND_SEGMENT_COUNT], segment_pattern[FRUSTA_HAND_SEGMENT_COUNT];
   memset(segments, 0x5a, sizeof segments);
   memset(segment_pattern, 0x5a, sizeof segment_pattern);
-  int32_t count = -7;
+  count = -7;
   expect_error("get_segments(out null)",
                frusta_hand_get_segments(hand, NULL, FRUSTA_HAND_SEGMENT_COUNT, &count),
                FRUSTA_ERROR_NULL_POINTER, "out", NULL);
-  expect_error("get_segments(capacity 14)",
-               frusta_hand_get_segments(hand, segments, FRUSTA_HAND_SEGMENT_COUNT - 1, &count),
-               FRUSTA_ERROR_CAPACITY, "14", "15");
   /* a negative capacity is a wrong argument, as for every call with a capacity */
   expect_error("get_segments(capacity -1)", frusta_hand_get_segments(hand, segments, -1, &count),
                FRUSTA_ERROR_OUT_OF_RANGE, "capacity", NULL);
   check(memcmp(segments, segment_pattern, sizeof segments) == 0 && count == -7,
         "failed get_segments writes neither out nor out_count");
+  expect_ok("get_segments(capacity 14)",
+            frusta_hand_get_segments(hand, segments, FRUSTA_HAND_SEGMENT_COUNT - 1, &count));
+  check(count == FRUSTA_HAND_SEGMENT_COUNT &&
+            memcmp(&segments[14], &segment_pattern[14], sizeof segments[0]) == 0 &&
+            memcmp(&segments[13], &segment_pattern[13], sizeof segments[0]) != 0,
+        "get_segments(capacity 14) writes 14 segments and counts 15 (got %d)", count);
 
   int32_t palm_count = 0;
   frusta_hand_get_palm_spheres(hand, NULL, 0, &palm_count);
   frusta_sphere palm[MAX_PALM_SPHERES], palm_pattern[MAX_PALM_SPHERES];
   memset(palm, 0x5a, sizeof palm);
   memset(palm_pattern, 0x5a, sizeof palm_pattern);
+  count = -7;
   expect_error("get_palm_spheres(out null, capacity 4)",
                frusta_hand_get_palm_spheres(hand, NULL, 4, &count), FRUSTA_ERROR_NULL_POINTER,
                "out", NULL);
-  count = -7;
-  snprintf(what, sizeof what, "get_palm_spheres(capacity %d)", palm_count - 1);
-  expect_error(what, frusta_hand_get_palm_spheres(hand, palm, palm_count - 1, &count),
-               FRUSTA_ERROR_CAPACITY, "capacity", NULL);
-  check(memcmp(palm, palm_pattern, sizeof palm) == 0, "failed get_palm_spheres writes no sphere");
-  /* "On failure ... nothing the call would have changed has changed" (frusta.h) */
-  check(count == -7, "failed get_palm_spheres leaves out_count unchanged (got %d)", count);
   expect_error("get_palm_spheres(exact capacity, out_count null)",
                frusta_hand_get_palm_spheres(hand, palm, palm_count, NULL),
                FRUSTA_ERROR_NULL_POINTER, "out_count", NULL);
+  check(memcmp(palm, palm_pattern, sizeof palm) == 0, "failed get_palm_spheres writes no sphere");
+  /* "On failure ... nothing the call would have changed has changed" (frusta.h) */
+  check(count == -7, "failed get_palm_spheres leaves out_count unchanged (got %d)", count);
+  snprintf(what, sizeof what, "get_palm_spheres(capacity %d)", palm_count - 1);
+  expect_ok(what, frusta_hand_get_palm_spheres(hand, palm, palm_count - 1, &count));
+  check(count == palm_count &&
+            memcmp(&palm[palm_count - 1], &palm_pattern[palm_count - 1], sizeof palm[0]) == 0,
+        "a short get_palm_spheres writes what fits and counts them all (got %d)", count);
   expect_ok("get_palm_spheres(exact capacity)",
             frusta_hand_get_palm_spheres(hand, palm, palm_count, &count));
   check(memcmp(&palm[palm_count], &palm_pattern[palm_count], sizeof palm[0]) == 0,
@@ -709,6 +733,7 @@ static void test_hand_inputs(void) {
   memset(jacobian_pattern, 0x5a, sizeof jacobian_pattern);
   memset(point, 0x5a, sizeof point);
   memset(point_pattern, 0x5a, sizeof point_pattern);
+  count = -7;
   const struct {
     int finger, segment;
     const char* field;
@@ -718,35 +743,44 @@ static void test_hand_inputs(void) {
              index_bad[i].segment);
     expect_error(what,
                  frusta_hand_point_jacobian(hand, index_bad[i].finger, index_bad[i].segment, local,
-                                            point, jacobian, 30),
+                                            point, jacobian, 30, &count),
                  FRUSTA_ERROR_OUT_OF_RANGE, index_bad[i].field, NULL);
   }
   expect_error("point_jacobian(local_point null)",
-               frusta_hand_point_jacobian(hand, 1, 1, NULL, point, jacobian, 30),
+               frusta_hand_point_jacobian(hand, 1, 1, NULL, point, jacobian, 30, &count),
                FRUSTA_ERROR_NULL_POINTER, "local_point", NULL);
-  expect_error("point_jacobian(out_jacobian null)",
-               frusta_hand_point_jacobian(hand, 1, 1, local, point, NULL, 30),
+  expect_error("point_jacobian(out_jacobian null, capacity 30)",
+               frusta_hand_point_jacobian(hand, 1, 1, local, point, NULL, 30, &count),
                FRUSTA_ERROR_NULL_POINTER, "out_jacobian", NULL);
-  expect_error("point_jacobian(capacity 29)",
-               frusta_hand_point_jacobian(hand, 1, 1, local, point, jacobian, 29),
-               FRUSTA_ERROR_CAPACITY, "29", "30");
+  expect_error("point_jacobian(capacity -1)",
+               frusta_hand_point_jacobian(hand, 1, 1, local, point, jacobian, -1, &count),
+               FRUSTA_ERROR_OUT_OF_RANGE, "capacity", NULL);
+  expect_error("point_jacobian(out_count null)",
+               frusta_hand_point_jacobian(hand, 1, 1, local, point, jacobian, 30, NULL),
+               FRUSTA_ERROR_NULL_POINTER, "out_count", NULL);
   for (int b = 0; b < 5; ++b) {
     double bad_local[3] = {0.01, 0.0, 0.0};
     bad_local[1] = position_bad[b].value;
     snprintf(what, sizeof what, "point_jacobian(local_point[1] = %g)", position_bad[b].value);
-    expect_error(what, frusta_hand_point_jacobian(hand, 1, 1, bad_local, point, jacobian, 30),
+    expect_error(what,
+                 frusta_hand_point_jacobian(hand, 1, 1, bad_local, point, jacobian, 30, &count),
                  position_bad[b].want, "local_point[1]", position_bad[b].text);
   }
   check(memcmp(jacobian, jacobian_pattern, sizeof jacobian) == 0 &&
-            memcmp(point, point_pattern, sizeof point) == 0,
-        "failed point_jacobian writes neither out_point nor out_jacobian");
+            memcmp(point, point_pattern, sizeof point) == 0 && count == -7,
+        "failed point_jacobian writes neither out_point, out_jacobian nor out_count");
+  expect_ok("point_jacobian(capacity 29)",
+            frusta_hand_point_jacobian(hand, 1, 1, local, point, jacobian, 29, &count));
+  check(count == FRUSTA_POINT_JACOBIAN_LENGTH &&
+            memcmp(&jacobian[29], &jacobian_pattern[29], 2 * sizeof jacobian[0]) == 0,
+        "point_jacobian(capacity 29) writes 29 doubles and counts 30 (got %d)", count);
   expect_ok("point_jacobian(out_point null)",
-            frusta_hand_point_jacobian(hand, 1, 1, local, NULL, jacobian, 30));
+            frusta_hand_point_jacobian(hand, 1, 1, local, NULL, jacobian, 30, &count));
   check(memcmp(&jacobian[30], &jacobian_pattern[30], sizeof jacobian[30]) == 0,
         "point_jacobian writes only 30 doubles");
-  expect_ok(
-      "point_jacobian(finger 1, segment 2, origin)",
-      frusta_hand_point_jacobian(hand, 1, 2, (const double[3]){0, 0, 0}, point, jacobian, 30));
+  expect_ok("point_jacobian(finger 1, segment 2, origin)",
+            frusta_hand_point_jacobian(hand, 1, 2, (const double[3]){0, 0, 0}, point, jacobian, 30,
+                                       &count));
   frusta_hand_get_segments(hand, segments, FRUSTA_HAND_SEGMENT_COUNT, &count);
   check(memcmp(point, segments[1 * FRUSTA_SEGMENTS_PER_FINGER + 2].proximal, sizeof point) == 0,
         "the origin of segment (1, 2) is its proximal joint");
@@ -788,7 +822,7 @@ static void test_palm_pose_and_clamping(void) {
     wild[i] = i % 2 ? FRUSTA_MAX_JOINT_ANGLE : -FRUSTA_MAX_JOINT_ANGLE;
   expect_ok("set_joint_angles(+-FRUSTA_MAX_JOINT_ANGLE)",
             frusta_hand_set_joint_angles(hand, wild, FRUSTA_HAND_JOINT_COUNT));
-  frusta_hand_get_joint_angles(hand, got, FRUSTA_HAND_JOINT_COUNT);
+  frusta_hand_get_joint_angles(hand, got, FRUSTA_HAND_JOINT_COUNT, &count);
   int clamped = 1;
   for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f)
     for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j) {
@@ -998,8 +1032,8 @@ static void expect_tree_id_refused(frusta_tree_id id, frusta_result want, const 
   info.struct_size = (int32_t)sizeof info;
   snprintf(what, sizeof what, "destroy_sphere_tree(%s)", label);
   expect_error(what, frusta_destroy_sphere_tree(id), want, "sphere tree", NULL);
-  snprintf(what, sizeof what, "save_sphere_tree(%s)", label);
-  expect_error(what, frusta_save_sphere_tree(id, kTreePath), want, "sphere tree", NULL);
+  snprintf(what, sizeof what, "sphere_tree_save(%s)", label);
+  expect_error(what, frusta_sphere_tree_save(id, kTreePath), want, "sphere tree", NULL);
   snprintf(what, sizeof what, "sphere_tree_get_info(%s)", label);
   expect_error(what, frusta_sphere_tree_get_info(id, &info), want, "sphere tree", NULL);
   snprintf(what, sizeof what, "sphere_tree_get_leaves(%s)", label);
@@ -1037,54 +1071,58 @@ static void test_bake_errors(void) {
             defaults.internal_value != 0,
         "frusta_default_bake_def() has the documented defaults");
 
-  expect_error("bake(def null)", frusta_bake_sphere_tree(kCube, 8, kCubeTriangles, 36, NULL, &out),
+  expect_error("bake(def null)",
+               frusta_create_sphere_tree_from_mesh(kCube, 8, kCubeTriangles, 36, NULL, &out),
                FRUSTA_ERROR_NULL_POINTER, "def", NULL);
   def = good;
   expect_error("bake(out_tree null)",
-               frusta_bake_sphere_tree(kCube, 8, kCubeTriangles, 36, &def, NULL),
+               frusta_create_sphere_tree_from_mesh(kCube, 8, kCubeTriangles, 36, &def, NULL),
                FRUSTA_ERROR_NULL_POINTER, "out_tree", NULL);
   def.struct_size = 48;
   out = sentinel;
   expect_error("bake(def.struct_size 48)",
-               frusta_bake_sphere_tree(kCube, 8, kCubeTriangles, 36, &def, &out),
+               frusta_create_sphere_tree_from_mesh(kCube, 8, kCubeTriangles, 36, &def, &out),
                FRUSTA_ERROR_STRUCT_SIZE, "frusta_bake_def", "48");
   check(memcmp(&out, &sentinel, sizeof out) == 0, "bake(struct_size 48) leaves out_tree unchanged");
   memset(&def, 0, sizeof def);
   def.struct_size = (int32_t)sizeof def;
   expect_error("bake(memset def)",
-               frusta_bake_sphere_tree(kCube, 8, kCubeTriangles, 36, &def, &out),
+               frusta_create_sphere_tree_from_mesh(kCube, 8, kCubeTriangles, 36, &def, &out),
                FRUSTA_ERROR_DEF_NOT_DEFAULTED, "frusta_default_bake_def", NULL);
 
   /* the mesh */
   def = good;
   expect_error("bake(vertices null)",
-               frusta_bake_sphere_tree(NULL, 8, kCubeTriangles, 36, &def, &out),
+               frusta_create_sphere_tree_from_mesh(NULL, 8, kCubeTriangles, 36, &def, &out),
                FRUSTA_ERROR_NULL_POINTER, "vertices", NULL);
-  expect_error("bake(indices null)", frusta_bake_sphere_tree(kCube, 8, NULL, 36, &def, &out),
+  expect_error("bake(indices null)",
+               frusta_create_sphere_tree_from_mesh(kCube, 8, NULL, 36, &def, &out),
                FRUSTA_ERROR_NULL_POINTER, "indices", NULL);
   const int32_t vertex_counts[] = {2, 0, -1};
   for (int i = 0; i < 3; ++i) {
     snprintf(what, sizeof what, "bake(vertex_count %d)", vertex_counts[i]);
     expect_error(what,
-                 frusta_bake_sphere_tree(kCube, vertex_counts[i], kCubeTriangles, 36, &def, &out),
+                 frusta_create_sphere_tree_from_mesh(kCube, vertex_counts[i], kCubeTriangles, 36,
+                                                     &def, &out),
                  FRUSTA_ERROR_OUT_OF_RANGE, "vertex_count", NULL);
   }
   const int32_t index_counts[] = {35, 0, -3, 2};
   for (int i = 0; i < 4; ++i) {
     snprintf(what, sizeof what, "bake(index_count %d)", index_counts[i]);
-    expect_error(what,
-                 frusta_bake_sphere_tree(kCube, 8, kCubeTriangles, index_counts[i], &def, &out),
-                 FRUSTA_ERROR_OUT_OF_RANGE, "index_count", NULL);
+    expect_error(
+        what,
+        frusta_create_sphere_tree_from_mesh(kCube, 8, kCubeTriangles, index_counts[i], &def, &out),
+        FRUSTA_ERROR_OUT_OF_RANGE, "index_count", NULL);
   }
   int32_t bad_indices[36];
   memcpy(bad_indices, kCubeTriangles, sizeof bad_indices);
   bad_indices[5] = 8;
   expect_error("bake(indices[5] = 8 of 8 vertices)",
-               frusta_bake_sphere_tree(kCube, 8, bad_indices, 36, &def, &out),
+               frusta_create_sphere_tree_from_mesh(kCube, 8, bad_indices, 36, &def, &out),
                FRUSTA_ERROR_OUT_OF_RANGE, "indices[5]", NULL);
   bad_indices[5] = -1;
   expect_error("bake(indices[5] = -1)",
-               frusta_bake_sphere_tree(kCube, 8, bad_indices, 36, &def, &out),
+               frusta_create_sphere_tree_from_mesh(kCube, 8, bad_indices, 36, &def, &out),
                FRUSTA_ERROR_OUT_OF_RANGE, "indices[5]", "-1");
   float bad_vertices[8 * 3];
   const float float_bad[] = {NAN, INFINITY, -INFINITY, 2e6f};
@@ -1093,15 +1131,16 @@ static void test_bake_errors(void) {
     bad_vertices[3 * 6 + 1] = float_bad[b]; /* vertex 6, y */
     out = sentinel;
     snprintf(what, sizeof what, "bake(vertex 6 y = %g)", (double)float_bad[b]);
-    expect_error(what, frusta_bake_sphere_tree(bad_vertices, 8, kCubeTriangles, 36, &def, &out),
-                 b < 3 ? FRUSTA_ERROR_NOT_FINITE : FRUSTA_ERROR_OUT_OF_RANGE, "vertex 6", NULL);
+    expect_error(
+        what, frusta_create_sphere_tree_from_mesh(bad_vertices, 8, kCubeTriangles, 36, &def, &out),
+        b < 3 ? FRUSTA_ERROR_NOT_FINITE : FRUSTA_ERROR_OUT_OF_RANGE, "vertex 6", NULL);
     check(memcmp(&out, &sentinel, sizeof out) == 0, "%s leaves out_tree unchanged", what);
   }
   const float flat[9] = {0, 0, 0, 1, 1, 1, 2, 2, 2}; /* collinear: no area */
   const int32_t one[3] = {0, 1, 2};
   expect_error("bake(a triangle without area)",
-               frusta_bake_sphere_tree(flat, 3, one, 3, &def, &out), FRUSTA_ERROR_OUT_OF_RANGE,
-               "area", NULL);
+               frusta_create_sphere_tree_from_mesh(flat, 3, one, 3, &def, &out),
+               FRUSTA_ERROR_OUT_OF_RANGE, "area", NULL);
 
   /* the parameters */
   const struct {
@@ -1140,8 +1179,9 @@ static void test_bake_errors(void) {
     /* frusta.h: FRUSTA_ERROR_NOT_FINITE is "NaN or infinity in an input" */
     const frusta_result want =
         isfinite(params[i].value) ? FRUSTA_ERROR_OUT_OF_RANGE : FRUSTA_ERROR_NOT_FINITE;
-    expect_error(what, frusta_bake_sphere_tree(kCube, 8, kCubeTriangles, 36, &def, &out), want,
-                 params[i].needle, NULL);
+    expect_error(what,
+                 frusta_create_sphere_tree_from_mesh(kCube, 8, kCubeTriangles, 36, &def, &out),
+                 want, params[i].needle, NULL);
     check(memcmp(&out, &sentinel, sizeof out) == 0, "%s leaves out_tree unchanged", what);
   }
   /* a tree deeper than max_depth allows */
@@ -1149,7 +1189,7 @@ static void test_bake_errors(void) {
   def.branching = 2;
   def.max_depth = 1;
   expect_error("bake(branching 2, max_depth 1)",
-               frusta_bake_sphere_tree(kCube, 8, kCubeTriangles, 36, &def, &out),
+               frusta_create_sphere_tree_from_mesh(kCube, 8, kCubeTriangles, 36, &def, &out),
                FRUSTA_ERROR_OUT_OF_RANGE, "max_depth", NULL);
 }
 
@@ -1164,7 +1204,7 @@ static void test_sphere_trees(void) {
   frusta_bake_def def = quick_bake_def();
   frusta_tree_id tree;
   if (!expect_ok("bake(5 cm cube)",
-                 frusta_bake_sphere_tree(kCube, 8, kCubeTriangles, 36, &def, &tree)))
+                 frusta_create_sphere_tree_from_mesh(kCube, 8, kCubeTriangles, 36, &def, &tree)))
     return;
   check(!FRUSTA_IS_NULL(tree) && frusta_sphere_tree_is_valid(tree) == 1, "baked tree is valid");
 
@@ -1220,16 +1260,21 @@ static void test_sphere_trees(void) {
   expect_error("sphere_tree_get_leaves(out null, capacity 5)",
                frusta_sphere_tree_get_leaves(tree, NULL, 5, &count), FRUSTA_ERROR_NULL_POINTER,
                "out", NULL);
-  count = -7;
-  expect_error("sphere_tree_get_leaves(capacity count - 1)",
-               frusta_sphere_tree_get_leaves(tree, g_leaves, leaf_count - 1, &count),
-               FRUSTA_ERROR_CAPACITY, "capacity", NULL);
-  check(memcmp(g_leaves, g_leaves_again, sizeof g_leaves) == 0,
-        "refused get_leaves writes no leaf");
-  check(count == -7, "refused get_leaves leaves out_count unchanged (got %d)", count);
+  expect_error("sphere_tree_get_leaves(capacity -1)",
+               frusta_sphere_tree_get_leaves(tree, g_leaves, -1, &count), FRUSTA_ERROR_OUT_OF_RANGE,
+               "capacity", NULL);
   expect_error("sphere_tree_get_leaves(out_count null)",
                frusta_sphere_tree_get_leaves(tree, g_leaves, leaf_count, NULL),
                FRUSTA_ERROR_NULL_POINTER, "out_count", NULL);
+  check(memcmp(g_leaves, g_leaves_again, sizeof g_leaves) == 0,
+        "refused get_leaves writes no leaf");
+  check(count == -7, "refused get_leaves leaves out_count unchanged (got %d)", count);
+  /* a short buffer is no error: what fits is written, and the count says there is more */
+  expect_ok("sphere_tree_get_leaves(capacity count - 1)",
+            frusta_sphere_tree_get_leaves(tree, g_leaves, leaf_count - 1, &count));
+  check(count == leaf_count && memcmp(&g_leaves[leaf_count - 1], &g_leaves_again[leaf_count - 1],
+                                      sizeof g_leaves[0]) == 0,
+        "a short get_leaves writes count - 1 leaves and counts %d (got %d)", leaf_count, count);
   expect_ok("sphere_tree_get_leaves",
             frusta_sphere_tree_get_leaves(tree, g_leaves, leaf_count, &count));
   int inside = 1;
@@ -1398,15 +1443,15 @@ static void test_sphere_trees(void) {
       FRUSTA_ERROR_NULL_POINTER, "out_count", NULL);
 
   /* save and load: the same tree back */
-  expect_error("save_sphere_tree(path null)", frusta_save_sphere_tree(tree, NULL),
+  expect_error("sphere_tree_save(path null)", frusta_sphere_tree_save(tree, NULL),
                FRUSTA_ERROR_NULL_POINTER, "path", NULL);
-  expect_error("save_sphere_tree(into a missing folder)",
-               frusta_save_sphere_tree(tree, "no/such/folder/tree.frtree"), FRUSTA_ERROR_IO,
+  expect_error("sphere_tree_save(into a missing folder)",
+               frusta_sphere_tree_save(tree, "no/such/folder/tree.frtree"), FRUSTA_ERROR_IO,
                "no/such/folder", NULL);
-  expect_ok("save_sphere_tree", frusta_save_sphere_tree(tree, kTreePath));
+  expect_ok("save_sphere_tree", frusta_sphere_tree_save(tree, kTreePath));
   frusta_tree_id loaded;
-  r = frusta_load_sphere_tree(kTreePath, &loaded);
-  if (expect_ok("load_sphere_tree(saved file)", r)) {
+  r = frusta_create_sphere_tree_from_file(kTreePath, &loaded);
+  if (expect_ok("create_sphere_tree_from_file(saved file)", r)) {
     frusta_sphere_tree_info loaded_info;
     memset(&loaded_info, 0, sizeof loaded_info);
     loaded_info.struct_size = (int32_t)sizeof loaded_info;
@@ -1424,13 +1469,15 @@ static void test_sphere_trees(void) {
   }
   const frusta_tree_id tree_sentinel = {4321, 3, 77};
   frusta_tree_id not_loaded = tree_sentinel;
-  expect_error("load_sphere_tree(path null)", frusta_load_sphere_tree(NULL, &not_loaded),
-               FRUSTA_ERROR_NULL_POINTER, "path", NULL);
-  expect_error("load_sphere_tree(out_tree null)", frusta_load_sphere_tree(kTreePath, NULL),
-               FRUSTA_ERROR_NULL_POINTER, "out_tree", NULL);
-  expect_error("load_sphere_tree(missing file)",
-               frusta_load_sphere_tree("no_such_file.frtree", &not_loaded), FRUSTA_ERROR_IO,
-               "no_such_file.frtree", NULL);
+  expect_error("create_sphere_tree_from_file(path null)",
+               frusta_create_sphere_tree_from_file(NULL, &not_loaded), FRUSTA_ERROR_NULL_POINTER,
+               "path", NULL);
+  expect_error("create_sphere_tree_from_file(out_tree null)",
+               frusta_create_sphere_tree_from_file(kTreePath, NULL), FRUSTA_ERROR_NULL_POINTER,
+               "out_tree", NULL);
+  expect_error("create_sphere_tree_from_file(missing file)",
+               frusta_create_sphere_tree_from_file("no_such_file.frtree", &not_loaded),
+               FRUSTA_ERROR_IO, "no_such_file.frtree", NULL);
   /* a file cut short, and a file that is not a tree at all */
   FILE* in = fopen(kTreePath, "rb");
   static unsigned char bytes[1 << 20];
@@ -1442,10 +1489,10 @@ static void test_sphere_trees(void) {
     fwrite(bytes, 1, size - 17, cut);
     fclose(cut);
   }
-  r = frusta_load_sphere_tree(kTruncatedPath, &not_loaded);
+  r = frusta_create_sphere_tree_from_file(kTruncatedPath, &not_loaded);
   check((r == FRUSTA_ERROR_CORRUPT_FILE || r == FRUSTA_ERROR_FILE_FORMAT) &&
             contains(frusta_last_error(), kTruncatedPath),
-        "load_sphere_tree(file cut short) -> %s: \"%s\"", frusta_result_name(r),
+        "create_sphere_tree_from_file(file cut short) -> %s: \"%s\"", frusta_result_name(r),
         frusta_last_error());
   cut = fopen(kTruncatedPath, "wb");
   if (cut) {
@@ -1453,15 +1500,16 @@ static void test_sphere_trees(void) {
     fwrite(bytes, 1, size, cut);
     fclose(cut);
   }
-  expect_error("load_sphere_tree(one bit flipped)",
-               frusta_load_sphere_tree(kTruncatedPath, &not_loaded), FRUSTA_ERROR_CORRUPT_FILE,
-               kTruncatedPath, NULL);
+  expect_error("create_sphere_tree_from_file(one bit flipped)",
+               frusta_create_sphere_tree_from_file(kTruncatedPath, &not_loaded),
+               FRUSTA_ERROR_CORRUPT_FILE, kTruncatedPath, NULL);
   cut = fopen(kTruncatedPath, "wb");
   if (cut) {
     fputs("definitely not a sphere tree\n", cut);
     fclose(cut);
   }
-  expect_error("load_sphere_tree(text file)", frusta_load_sphere_tree(kTruncatedPath, &not_loaded),
+  expect_error("create_sphere_tree_from_file(text file)",
+               frusta_create_sphere_tree_from_file(kTruncatedPath, &not_loaded),
                FRUSTA_ERROR_FILE_FORMAT, kTruncatedPath, NULL);
   check(memcmp(&not_loaded, &tree_sentinel, sizeof not_loaded) == 0,
         "failed loads leave out_tree unchanged");
@@ -1473,7 +1521,7 @@ static void test_sphere_trees(void) {
   expect_tree_id_refused(tree, FRUSTA_ERROR_STALE_ID, "destroyed tree id");
   frusta_tree_id again;
   if (expect_ok("bake again",
-                frusta_bake_sphere_tree(kCube, 8, kCubeTriangles, 36, &def, &again))) {
+                frusta_create_sphere_tree_from_mesh(kCube, 8, kCubeTriangles, 36, &def, &again))) {
     check(again.index1 == tree.index1 && again.generation != tree.generation,
           "the new tree reuses the slot with a new generation");
     expect_tree_id_refused(tree, FRUSTA_ERROR_STALE_ID, "old tree id after reuse");

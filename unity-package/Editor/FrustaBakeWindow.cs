@@ -11,7 +11,7 @@ namespace Frusta.Editor
 {
     /// <summary>
     /// Window > Frusta > Bake Sphere Tree: bakes a mesh asset into a <c>.frtree</c> asset through the
-    /// native bake (frusta_bake_sphere_tree) on a worker thread, with a progress bar, and shows the
+    /// native bake (frusta_create_sphere_tree_from_mesh) on a worker thread, with a progress bar, and shows the
     /// tree's error figures.
     /// </summary>
     public sealed class FrustaBakeWindow : EditorWindow

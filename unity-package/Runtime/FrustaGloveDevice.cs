@@ -9,7 +9,7 @@ namespace Frusta.Unity
     /// <summary>
     /// A force-feedback glove driving a <see cref="FrustaHand"/>: opened by URI while enabled
     /// (<c>opengloves:/dev/ttyUSB0</c>, <c>serial:PATH</c>, <c>hid:VID:PID</c>,
-    /// <c>replay:FILE?speed=1&amp;loop=1</c>, see <see cref="World.OpenDevice(string, in FrustaDeviceDef)"/>),
+    /// <c>replay:FILE?speed=1&amp;loop=1</c>, see <see cref="World.CreateDevice(string, in FrustaDeviceDef)"/>),
     /// closed when disabled or destroyed. The glove runs on a native thread of its own and feeds
     /// the hand directly; this component polls its status once per frame and raises
     /// <see cref="StateChanged"/> and <see cref="WatchdogChanged"/> on the main thread. For a glove
@@ -139,13 +139,13 @@ namespace Frusta.Unity
         {
             if (device != null || !isActiveAndEnabled || string.IsNullOrEmpty(uri)) return;
             World world = hand != null && hand.WorldBehaviour != null ? hand.WorldBehaviour.World : null;
-            if (world == null || hand.Index < 0)
+            if (world == null || hand.Id.IsNull)
             {
                 Debug.LogError("FrustaGloveDevice needs a registered Frusta Hand (set one, or put this on the hand).", this);
                 return;
             }
             FrustaDeviceDef def = FrustaDeviceDef.Default;
-            def.Hand = hand.Index;
+            def.Hand = hand.Id;
             def.OutputRateHz = outputRateHz < 1f ? 0.0 : outputRateHz;  // 0 or 1..100000 natively
             def.WatchdogS = watchdogSeconds;
             def.HostTimeoutS = hostTimeoutSeconds;
@@ -155,7 +155,7 @@ namespace Frusta.Unity
             def.MaxJointTorque = maxJointTorque;
             try
             {
-                device = world.OpenDevice(uri, def);
+                device = world.CreateDevice(uri, def);
             }
             catch (FrustaException e)
             {

@@ -61,7 +61,7 @@ namespace Frusta.Unity
         [SerializeField] bool drawContacts = true;
 
         FrustaHandDef def;
-        int index = -1;
+        FrustaHandId id;                    // null until the hand is created in the world
         Hand preview;                       // the graphic hand's geometry, for gizmos
         readonly double[] angles = new double[FrustaConstants.HandJointCount];
         FrustaWorldHand latest;
@@ -69,8 +69,8 @@ namespace Frusta.Unity
         int contactCount;
         readonly FrustaSegment[] segments = new FrustaSegment[FrustaConstants.HandSegmentCount];
 
-        /// <summary>The hand's index in the world; -1 before it registered.</summary>
-        public int Index => index;
+        /// <summary>The hand's id in the world; null (<see cref="FrustaHandId.IsNull"/>) before it registered.</summary>
+        public FrustaHandId Id => id;
 
         /// <summary>The world component the hand belongs to (null if it found none).</summary>
         public FrustaWorldBehaviour WorldBehaviour => world;
@@ -117,7 +117,7 @@ namespace Frusta.Unity
                 return;
             }
             def = BuildDef();
-            index = world.World.AddHand(def); // before the world's first step
+            id = world.World.CreateHand(def); // before the world's first step
             preview = new Hand(def);
             contacts = new FrustaWorldContact[world.World.MaxContactsPerHand];
             for (int i = 0; i < bones.Length; ++i)
@@ -137,15 +137,15 @@ namespace Frusta.Unity
         void Update()
         {
             World w = world != null ? world.World : null;
-            if (w == null || index < 0 || DrivenByDevice) return;
-            w.SetHaptic(index, HapticSource.ToFrustaPose(), angles);
+            if (w == null || id.IsNull || DrivenByDevice) return;
+            w.SetHaptic(id, HapticSource.ToFrustaPose(), angles);
         }
 
         void OnLatched(FrustaWorldBehaviour source)
         {
             World w = source.World;
-            w.GetHand(index, ref latest);
-            contactCount = w.GetContacts(index, contacts);
+            w.GetHand(id, ref latest);
+            contactCount = w.GetContacts(id, contacts);
             if (!latest.Solved) return;
             if (graphicWrist != null) graphicWrist.SetFrustaPose(latest.GraphicPalm);
             for (int i = 0; i < bones.Length; ++i)

@@ -72,7 +72,7 @@ namespace Frusta.Unity
                 def.Stiffness = new Vector3d(stiffness.x, stiffness.y, stiffness.z);
                 def.Friction = friction;
                 def.Mass = body != null ? body.mass : mass;
-                id = world.World.AddObject(shape, def);
+                id = world.World.CreateObject(shape, def);
                 if (drawLeaves)
                 {
                     leaves = new FrustaSphere[shape.LeafCount];
@@ -132,7 +132,7 @@ namespace Frusta.Unity
             World w = world != null ? world.World : null;
             if (w != null && w.IsValid && !id.IsNull)
             {
-                try { w.RemoveObject(id); }
+                try { w.DestroyObject(id); }
                 catch (FrustaException) { /* already gone with its world */ }
             }
         }

@@ -7,13 +7,39 @@
  * - Units: metres, radians, newtons, seconds. Frames are right-handed.
  * - Every function returns a frusta_result (or a plain value documented as such).
  *   On failure the calling thread's frusta_last_error() names the field and value
- *   at fault, and nothing the call would have changed has changed.
- * - Structs that cross the boundary start with struct_size; defs must come from
- *   the matching frusta_default_*_def() (a hidden cookie catches hand-built ones).
- * - Calls that copy an array into a caller's buffer take an out_count, which may not
- *   be null (FRUSTA_ERROR_NULL_POINTER).
- * - Ids are small values passed by value. Zero-initialised means null. A stale id
- *   (its object destroyed) is refused with FRUSTA_ERROR_STALE_ID, never a crash.
+ *   at fault, and nothing the call would have changed has changed, its outputs
+ *   included.
+ * - Names: free functions put the verb first (frusta_create_world,
+ *   frusta_default_world_def); calls on an existing id put its noun first and take
+ *   the id first (frusta_world_step, frusta_sphere_tree_save).
+ * - One creation verb pair: whatever has an id is made by frusta_create_<thing> and
+ *   ended by frusta_destroy_<thing>(id), which turns the id and every copy of it
+ *   stale. A thing that lives in a world (frusta_create_object,
+ *   frusta_create_world_hand, frusta_create_device) takes the world first, its id
+ *   names that world (world0 != 0), and its destroy takes the id alone. A thing made
+ *   from different sources names the source: frusta_create_sphere_tree_from_mesh,
+ *   frusta_create_sphere_tree_from_file. A world's hands have no destroy: they live
+ *   as long as their world.
+ * - Ids are small values passed by value. Zero-initialised means null
+ *   (FRUSTA_ERROR_NULL_ID). An id whose thing was destroyed, that belongs to another
+ *   world, or a standalone hand's id given to a world, is refused with
+ *   FRUSTA_ERROR_STALE_ID naming it, never a crash.
+ * - struct_size opens every def (an input; from the matching frusta_default_*_def(),
+ *   whose hidden cookie catches hand-built ones) and every single struct a call fills
+ *   (the caller sets struct_size first): a mismatch is FRUSTA_ERROR_STRUCT_SIZE.
+ *   Elements of arrays have none: an array is counted in elements of this header.
+ * - Output arrays: a call that copies an array takes (out, capacity, out_count). It
+ *   sets *out_count to how many elements there are and writes the first
+ *   min(capacity, *out_count) of them, FRUSTA_OK even when capacity is short (the
+ *   caller sees *out_count > capacity and may ask again). out may be null only with
+ *   capacity 0, which asks for the count alone; capacity < 0 is
+ *   FRUSTA_ERROR_OUT_OF_RANGE; out_count may not be null (FRUSTA_ERROR_NULL_POINTER).
+ * - Threads: each function's "Thread:" line names one of
+ *     host  - the one thread that created the object the call acts on (a world, a
+ *             standalone hand), e.g. a game's main thread; calls on one object from
+ *             two host threads at once are not allowed;
+ *     input - any one thread per world hand (a glove's), concurrently with the host;
+ *     any   - any thread, concurrently.
  * - No C++ type, exception or abort crosses this header.
  * - Struct fields are fixed-width. An int32_t holding an enum names the enum first in
  *   its comment; a 0/1 flag's comment starts "1:" or "1 if". A double[3] is an
@@ -47,14 +73,14 @@
 /** This header's version, major.minor.patch: the major part. */
 #define FRUSTA_VERSION_MAJOR 0
 /** The minor part. */
-#define FRUSTA_VERSION_MINOR 3
+#define FRUSTA_VERSION_MINOR 4
 /** The patch part. */
 #define FRUSTA_VERSION_PATCH 0
 /** major*1000000 + minor*1000 + patch; frusta_version() returns the library's. */
 #define FRUSTA_VERSION \
   (FRUSTA_VERSION_MAJOR * 1000000 + FRUSTA_VERSION_MINOR * 1000 + FRUSTA_VERSION_PATCH)
 /** Bumped whenever a struct layout or a signature changes; see frusta_check_abi(). */
-#define FRUSTA_ABI_VERSION 2
+#define FRUSTA_ABI_VERSION 3
 
 /** The library's FRUSTA_VERSION. Thread: any. */
 FRUSTA_API int32_t frusta_version(void);
@@ -108,11 +134,13 @@ FRUSTA_API int32_t frusta_struct_size(const char* name);
 
 /* ---------------------------------------------------------------- ids */
 
-/** Hand handle. Opaque; pass by value. Zero-initialised means null. */
+/** Hand handle, of a standalone hand (frusta_create_hand) or of a world's
+ *  (frusta_create_world_hand). Opaque; pass by value. Zero-initialised means null. */
 typedef struct frusta_hand_id {
-  int32_t index1;      /* slot + 1; 0 is null */
-  uint16_t world0;     /* owning world slot (0: standalone) */
-  uint16_t generation; /* bumped when the slot is reused */
+  int32_t index1;      /* slot + 1 (a world's hand: its index in the world + 1); 0 is null */
+  uint16_t world0;     /* 0: standalone; else the owning world: slot + 1, and its
+                          generation's low byte */
+  uint16_t generation; /* bumped when the slot is reused (a world's hand: its world's) */
 } frusta_hand_id;
 #define FRUSTA_IS_NULL(id) ((id).index1 == 0)
 
@@ -227,44 +255,57 @@ FRUSTA_API frusta_result frusta_hand_def_set_size(frusta_hand_def* def, double h
                                                   double hand_breadth);
 
 /** Create a standalone hand at the identity pose with all joint angles zero (clamped
- *  into the limits). Thread: main (create/destroy are serialised internally). */
+ *  into the limits), for queries outside a world (a world's hands come from
+ *  frusta_create_world_hand). Thread: any (creation and destruction are serialised
+ *  internally); the calling thread is the hand's host. */
 FRUSTA_API frusta_result frusta_create_hand(const frusta_hand_def* def, frusta_hand_id* out_hand);
-/** Destroy a hand; its id and every copy of it become stale. Thread: main. */
+/** Destroy a standalone hand; its id and every copy of it become stale. A world's hand
+ *  is refused (FRUSTA_ERROR_STALE_ID): it lives as long as its world. Thread: host. */
 FRUSTA_API frusta_result frusta_destroy_hand(frusta_hand_id hand);
-/** 1 if the id names a live hand, else 0 (never an error). Thread: any. */
+/** 1 if the id names a live hand, standalone or in a live world, else 0 (never an
+ *  error). Thread: any. */
 FRUSTA_API int32_t frusta_hand_is_valid(frusta_hand_id hand);
 
+/* The frusta_hand_* calls below act on standalone hands: a world's hand id is refused
+ * with FRUSTA_ERROR_STALE_ID (its state is the world's: frusta_world_get_hand). */
+
 /** Set the palm pose (hand frame in world). The quaternion is normalised; its norm
- *  must lie in [0.5, 2] and positions within 1e6 m of the origin. Thread: main. */
+ *  must lie in [0.5, 2] and positions within 1e6 m of the origin. Thread: host. */
 FRUSTA_API frusta_result frusta_hand_set_palm_pose(frusta_hand_id hand, const frusta_pose* pose);
 /** Set all FRUSTA_HAND_JOINT_COUNT joint angles (finger-major: abduction, flexion 1,
  *  2, 3), radians. |angle| <= FRUSTA_MAX_JOINT_ANGLE is accepted and clamped into the
  *  def's limits; beyond it, or not finite, the call is refused as corrupt input.
- *  count must equal FRUSTA_HAND_JOINT_COUNT. Thread: main. */
+ *  count must equal FRUSTA_HAND_JOINT_COUNT. Thread: host. */
 FRUSTA_API frusta_result frusta_hand_set_joint_angles(frusta_hand_id hand, const double* angles,
                                                       int32_t count);
-/** Copy the (clamped) joint angles into out[FRUSTA_HAND_JOINT_COUNT]. Thread: main. */
+/** Copy the (clamped) joint angles, radians, finger-major: FRUSTA_HAND_JOINT_COUNT
+ *  of them, by the output-array rule (out null only with capacity 0). Thread: host. */
 FRUSTA_API frusta_result frusta_hand_get_joint_angles(frusta_hand_id hand, double* out,
-                                                      int32_t capacity);
+                                                      int32_t capacity, int32_t* out_count);
 /** Copy the world geometry of every finger segment, finger-major (thumb first),
- *  proximal to distal: FRUSTA_HAND_SEGMENT_COUNT entries. The last segment of each
- *  finger has its tip hemisphere at the distal end. Thread: main. */
+ *  proximal to distal: FRUSTA_HAND_SEGMENT_COUNT of them, by the output-array rule.
+ *  The last segment of each finger has its tip hemisphere at the distal end.
+ *  Thread: host. */
 FRUSTA_API frusta_result frusta_hand_get_segments(frusta_hand_id hand, frusta_segment* out,
                                                   int32_t capacity, int32_t* out_count);
-/** Copy the palm's spheres in world coordinates. Pass capacity 0 and out null to
- *  learn the count. A failed call writes nothing, out_count included. Thread: main. */
+/** Copy the palm's spheres in world coordinates, by the output-array rule (capacity
+ *  0 and out null ask for the count). Thread: host. */
 FRUSTA_API frusta_result frusta_hand_get_palm_spheres(frusta_hand_id hand, frusta_sphere* out,
                                                       int32_t capacity, int32_t* out_count);
-/** Jacobian of a material point of one segment, in world coordinates, with respect to
- *  the finger's four joint angles followed by the palm's 6 DOF (world translation,
- *  then a world-frame rotation vector): out is row-major 3 x (4 + 6) = 30 doubles.
- *  The point is given in the segment frame: origin at the proximal joint, +x along
- *  the segment, y and z as the finger's flexion and its normal. Also writes the
- *  point's world position to out_point (may be null). Thread: main. */
+/** Doubles in one point Jacobian: 3 rows x (4 joint angles + 6 palm DOF) = 30. */
+#define FRUSTA_POINT_JACOBIAN_LENGTH (3 * (FRUSTA_JOINTS_PER_FINGER + FRUSTA_PALM_DOF))
+/** Jacobian of a material point of one segment, in world coordinates (metres per
+ *  radian, and per metre or radian of the palm), with respect to the finger's four
+ *  joint angles followed by the palm's 6 DOF (world translation, then a world-frame
+ *  rotation vector): row-major 3 x 10, FRUSTA_POINT_JACOBIAN_LENGTH doubles copied to
+ *  out_jacobian by the output-array rule. The point is given in metres in the segment
+ *  frame: origin at the proximal joint, +x along the segment, y and z as the finger's
+ *  flexion and its normal. Also writes the point's world position, metres, to
+ *  out_point (may be null). Thread: host. */
 FRUSTA_API frusta_result frusta_hand_point_jacobian(frusta_hand_id hand, int32_t finger,
                                                     int32_t segment, const double local_point[3],
                                                     double* out_point, double* out_jacobian,
-                                                    int32_t capacity);
+                                                    int32_t capacity, int32_t* out_count);
 
 /* ---------------------------------------------------------------- geometry queries */
 
@@ -331,9 +372,9 @@ typedef struct frusta_tree_id {
 
 /** Bake parameters. Leaves are spheres fitted to the surface from inside plus
  *  inscribed spheres filling the interior; see README "Sphere trees and baking".
- *  Every field has a range, checked by frusta_bake_sphere_tree before anything is
- *  baked (FRUSTA_ERROR_OUT_OF_RANGE, or FRUSTA_ERROR_NOT_FINITE for NaN/infinity,
- *  naming the field); frusta-bake's options have the same ranges. */
+ *  Every field has a range, checked by frusta_create_sphere_tree_from_mesh before
+ *  anything is baked (FRUSTA_ERROR_OUT_OF_RANGE, or FRUSTA_ERROR_NOT_FINITE for
+ *  NaN/infinity, naming the field); frusta-bake's options have the same ranges. */
 typedef struct frusta_bake_def {
   int32_t struct_size;   /* sizeof(frusta_bake_def) */
   int32_t branching;     /* children per node, 2..16; default 4 */
@@ -378,12 +419,12 @@ typedef struct frusta_tree_hit {
   frusta_sphere sphere;  /* world frame (through the pose given to the query) */
 } frusta_tree_hit;
 
-/** Defaults for frusta_bake_sphere_tree. Thread: any. */
+/** Defaults for frusta_create_sphere_tree_from_mesh. Thread: any. */
 FRUSTA_API frusta_bake_def frusta_default_bake_def(void);
 
-/** Bake a sphere tree from triangles: vertices are vertex_count xyz triples in
- *  metres (right-handed object frame), indices are index_count / 3 triangles
- *  wound counter-clockwise seen from outside. Blocks for the bake's duration
+/** Create a sphere tree by baking it from triangles: vertices are vertex_count xyz
+ *  triples in metres (right-handed object frame), indices are index_count / 3
+ *  triangles wound counter-clockwise seen from outside. Blocks for the bake's duration
  *  (seconds for 10^5 triangles): call it off any frame loop. A tree that misses
  *  the target within max_leaves is still returned; check info.target_met.
  *  The baking is done by the baker library (libfrusta_bake.so; Embree), loaded from
@@ -391,33 +432,36 @@ FRUSTA_API frusta_bake_def frusta_default_bake_def(void);
  *  it is not installed (platforms without Embree) this fails with
  *  FRUSTA_ERROR_UNAVAILABLE, and trees come from frusta-bake's .frtree files.
  *  Thread: any; bakes on different threads run concurrently. */
-FRUSTA_API frusta_result frusta_bake_sphere_tree(const float* vertices, int32_t vertex_count,
-                                                 const int32_t* indices, int32_t index_count,
-                                                 const frusta_bake_def* def,
-                                                 frusta_tree_id* out_tree);
-/** Load a .frtree file. Truncated, corrupt or other-version files are refused with
- *  FRUSTA_ERROR_FILE_FORMAT or FRUSTA_ERROR_CORRUPT_FILE naming the problem.
- *  Thread: any. */
-FRUSTA_API frusta_result frusta_load_sphere_tree(const char* path, frusta_tree_id* out_tree);
-/** Write a tree to path atomically (a reader never sees half a file). Thread: any. */
-FRUSTA_API frusta_result frusta_save_sphere_tree(frusta_tree_id tree, const char* path);
-/** Destroy a tree; its id becomes stale. Thread: any, but not while another thread
- *  uses the same tree. */
+FRUSTA_API frusta_result frusta_create_sphere_tree_from_mesh(const float* vertices,
+                                                             int32_t vertex_count,
+                                                             const int32_t* indices,
+                                                             int32_t index_count,
+                                                             const frusta_bake_def* def,
+                                                             frusta_tree_id* out_tree);
+/** Create a sphere tree from a .frtree file (UTF-8 path). Truncated, corrupt or
+ *  other-version files are refused with FRUSTA_ERROR_FILE_FORMAT or
+ *  FRUSTA_ERROR_CORRUPT_FILE naming the problem. Thread: any. */
+FRUSTA_API frusta_result frusta_create_sphere_tree_from_file(const char* path,
+                                                             frusta_tree_id* out_tree);
+/** Destroy a tree; its id becomes stale. Worlds whose objects use it keep it alive.
+ *  Thread: any, but not while another thread uses the same tree. */
 FRUSTA_API frusta_result frusta_destroy_sphere_tree(frusta_tree_id tree);
+/** Write a tree to path (UTF-8) atomically (a reader never sees half a file).
+ *  Thread: any. */
+FRUSTA_API frusta_result frusta_sphere_tree_save(frusta_tree_id tree, const char* path);
 /** 1 if the id names a live tree, else 0. Thread: any. */
 FRUSTA_API int32_t frusta_sphere_tree_is_valid(frusta_tree_id tree);
 /** Fill info (set info->struct_size first). Thread: any. */
 FRUSTA_API frusta_result frusta_sphere_tree_get_info(frusta_tree_id tree,
                                                      frusta_sphere_tree_info* info);
-/** Copy the leaf spheres, object frame, in their stable numbering. Pass out null and
- *  capacity 0 to learn the count. A failed call writes nothing, out_count included.
- *  Thread: any. */
+/** Copy the leaf spheres, metres, object frame, in their stable numbering, by the
+ *  output-array rule (capacity 0 and out null ask for the count). Thread: any. */
 FRUSTA_API frusta_result frusta_sphere_tree_get_leaves(frusta_tree_id tree, frusta_sphere* out,
                                                        int32_t capacity, int32_t* out_count);
 /** Every leaf (or, with max_level >= 0, every node at that level) within margin
- *  metres of a world segment, for the object placed at pose (null: identity).
- *  Writes at most capacity hits; *out_count is the number found, which may be
- *  larger. Thread: any. */
+ *  metres of a world segment, for the object placed at pose (null: identity), copied
+ *  by the output-array rule: *out_count is the number found, which may exceed
+ *  capacity. Thread: any. */
 FRUSTA_API frusta_result frusta_sphere_tree_query_segment(frusta_tree_id tree,
                                                           const frusta_pose* pose,
                                                           const frusta_segment* segment,
@@ -433,12 +477,9 @@ FRUSTA_API frusta_result frusta_sphere_tree_query_segment(frusta_tree_id tree,
  * object receives. It runs on its own thread at rate_hz (frusta_world_start) or is
  * stepped by the host (frusta_world_step). Host and stepping thread never wait for
  * each other: object commands are queued and applied at the next step; outputs are
- * published as a snapshot the host latches with frusta_world_read.
- *
- * Threads, per function below:
- *   host   - one thread (the one that created the world), e.g. a game's main thread;
- *   input  - any one thread per hand (a device thread), concurrently with the rest;
- *   any    - any thread. */
+ * published as a snapshot the host latches with frusta_world_read. The threads
+ * named below (host, input, any) are the Conventions' at the top: the host is the
+ * thread that created the world. */
 
 /** World handle. Opaque; pass by value; zero means null. */
 typedef struct frusta_world_id {
@@ -587,47 +628,54 @@ typedef struct frusta_object_state {
 
 /** Defaults for frusta_create_world. Thread: any. */
 FRUSTA_API frusta_world_def frusta_default_world_def(void);
-/** Defaults for frusta_world_add_object. Thread: any. */
+/** Defaults for frusta_create_object. Thread: any. */
 FRUSTA_API frusta_object_def frusta_default_object_def(void);
 
-/** Create a world (no thread yet; see frusta_world_start). Thread: host. */
+/** Create a world (no thread yet; see frusta_world_start). Thread: any; the calling
+ *  thread is the world's host. */
 FRUSTA_API frusta_result frusta_create_world(const frusta_world_def* def, frusta_world_id* out_world);
-/** Stop the world's thread if running, then destroy it with its objects (the trees
- *  they used stay the caller's). Its id and object ids turn stale. No other thread
- *  may be calling into the world meanwhile. Thread: host. */
+/** Stop the world's thread if running, close its gloves, then destroy it with its
+ *  hands and objects (the trees they used stay the caller's). Its id and every id
+ *  naming it (hands, objects, gloves) turn stale. No other thread may be calling into
+ *  the world meanwhile. Thread: host. */
 FRUSTA_API frusta_result frusta_destroy_world(frusta_world_id world);
 /** 1 if the id names a live world, else 0. Thread: any. */
 FRUSTA_API int32_t frusta_world_is_valid(frusta_world_id world);
 
-/** Add a hand built from def; its index (0, 1, ...) names it in this world. Only
- *  before the first step: FRUSTA_ERROR_WRONG_STATE afterwards. The world's solver
- *  settings are checked against the hand here. Thread: host. */
-FRUSTA_API frusta_result frusta_world_add_hand(frusta_world_id world, const frusta_hand_def* def,
-                                               int32_t* out_hand);
-/** Set a hand's haptic input (the glove): palm pose and FRUSTA_HAND_JOINT_COUNT joint
- *  angles (radians, finger-major). The newest input wins; the next step uses it. The
- *  one rule for every input of a hand (this call, frusta_hand_set_joint_angles, a
- *  glove's samples): positions within 1e6 m, quaternion norm in [0.5, 2] (normalised),
- *  |angle| <= FRUSTA_MAX_JOINT_ANGLE (clamped into the hand's limits). What this call
- *  accepts the next step uses; what breaks the rule is refused here. Lock-free and
- *  allocation-free. FRUSTA_ERROR_WRONG_STATE on a hand a glove drives
- *  (frusta_world_open_device). Thread: input. */
-FRUSTA_API frusta_result frusta_world_set_haptic(frusta_world_id world, int32_t hand,
+/** Create a hand in the world, built from def; *out_hand names it in every call on
+ *  the world's hands (frusta_world_set_haptic, frusta_world_get_hand, ...,
+ *  frusta_device_def.hand). It lives as long as the world. Only before the first
+ *  step: FRUSTA_ERROR_WRONG_STATE afterwards. The world's solver settings are checked
+ *  against the hand here. Thread: host. */
+FRUSTA_API frusta_result frusta_create_world_hand(frusta_world_id world,
+                                                  const frusta_hand_def* def,
+                                                  frusta_hand_id* out_hand);
+/** Set a world hand's haptic input (the glove): palm pose (metres, world frame) and
+ *  FRUSTA_HAND_JOINT_COUNT joint angles (radians, finger-major). The newest input
+ *  wins; the next step uses it. The one rule for every input of a hand (this call,
+ *  frusta_hand_set_joint_angles, a glove's samples): positions within 1e6 m,
+ *  quaternion norm in [0.5, 2] (normalised), |angle| <= FRUSTA_MAX_JOINT_ANGLE
+ *  (clamped into the hand's limits). What this call accepts the next step uses; what
+ *  breaks the rule is refused here. Lock-free and allocation-free.
+ *  FRUSTA_ERROR_WRONG_STATE on a hand a glove drives (frusta_create_device).
+ *  Thread: input. */
+FRUSTA_API frusta_result frusta_world_set_haptic(frusta_world_id world, frusta_hand_id hand,
                                                  const frusta_pose* palm, const double* angles,
                                                  int32_t count);
 
-/** Add an object with the tree's shape; queued, present from the next step. The world
- *  keeps the tree alive while it uses it, even if the tree's id is destroyed.
- *  FRUSTA_ERROR_CAPACITY when max_objects are present or the command queue is full
- *  (step the world). Thread: host. */
-FRUSTA_API frusta_result frusta_world_add_object(frusta_world_id world, frusta_tree_id tree,
-                                                 const frusta_object_def* def,
-                                                 frusta_object_id* out_object);
-/** Remove an object (queued). Its id is refused by the calls that change the world at
- *  once; frusta_world_get_object reports the latched step, in which the object is
- *  present until a step has applied the removal. Thread: host. */
-FRUSTA_API frusta_result frusta_world_remove_object(frusta_world_id world, frusta_object_id object);
-/** Put an object at a pose, at rest (queued). Thread: host. */
+/** Create an object in the world with the tree's shape; queued, present from the next
+ *  step. The world keeps the tree alive while it uses it, even if the tree's id is
+ *  destroyed. FRUSTA_ERROR_CAPACITY when max_objects are present or the command queue
+ *  is full (step the world). Thread: host. */
+FRUSTA_API frusta_result frusta_create_object(frusta_world_id world, frusta_tree_id tree,
+                                              const frusta_object_def* def,
+                                              frusta_object_id* out_object);
+/** Destroy an object of a world (queued; the id names its world). Its id is refused at
+ *  once by the calls that change the world; frusta_world_get_object reports the
+ *  latched step, in which the object is present until a step has applied the removal.
+ *  Thread: host (of the object's world). */
+FRUSTA_API frusta_result frusta_destroy_object(frusta_object_id object);
+/** Put an object at a pose (metres, world frame), at rest (queued). Thread: host. */
 FRUSTA_API frusta_result frusta_world_set_object_pose(frusta_world_id world,
                                                       frusta_object_id object,
                                                       const frusta_pose* pose);
@@ -647,21 +695,21 @@ FRUSTA_API frusta_result frusta_world_start(frusta_world_id world);
  *  none runs. Thread: host. */
 FRUSTA_API frusta_result frusta_world_stop(frusta_world_id world);
 
-/** Latch the newest published step (lock-free; never a torn one) and fill state.
- *  The frusta_world_get_* functions below read the latched step until the next
- *  call. Thread: host. */
+/** Latch the newest published step (lock-free; never a torn one) and fill state (set
+ *  state->struct_size first). The frusta_world_get_* functions below read the latched
+ *  step until the next call. Thread: host. */
 FRUSTA_API frusta_result frusta_world_read(frusta_world_id world, frusta_world_state* state);
-/** One hand of the latched step. Thread: host. */
-FRUSTA_API frusta_result frusta_world_get_hand(frusta_world_id world, int32_t hand,
+/** One hand of the latched step (set out->struct_size first). Thread: host. */
+FRUSTA_API frusta_result frusta_world_get_hand(frusta_world_id world, frusta_hand_id hand,
                                                frusta_world_hand* out);
-/** The contacts of one hand in the latched step (at most max_contacts_per_hand).
- *  Pass out null and capacity 0 to learn the count. A failed call writes nothing.
- *  Thread: host. */
-FRUSTA_API frusta_result frusta_world_get_contacts(frusta_world_id world, int32_t hand,
+/** The contacts of one hand in the latched step (at most max_contacts_per_hand), by
+ *  the output-array rule (capacity 0 and out null ask for the count). Thread: host. */
+FRUSTA_API frusta_result frusta_world_get_contacts(frusta_world_id world, frusta_hand_id hand,
                                                    frusta_world_contact* out, int32_t capacity,
                                                    int32_t* out_count);
-/** One object of the latched step. FRUSTA_ERROR_STALE_ID for an object removed, or
- *  added after the latched step. Thread: host. */
+/** One object of the latched step (set out->struct_size first).
+ *  FRUSTA_ERROR_STALE_ID for an object destroyed, or created after the latched step.
+ *  Thread: host. */
 FRUSTA_API frusta_result frusta_world_get_object(frusta_world_id world, frusta_object_id object,
                                                  frusta_object_state* out);
 
@@ -703,7 +751,7 @@ typedef enum frusta_device_output {
 typedef enum frusta_device_state {
   FRUSTA_DEVICE_CONNECTED = 1,    /* open, and its stream is up */
   FRUSTA_DEVICE_DISCONNECTED = 2, /* retrying every reconnect_interval_s */
-  FRUSTA_DEVICE_CLOSED = 3        /* closed (frusta_device_close, or its world destroyed) */
+  FRUSTA_DEVICE_CLOSED = 3        /* closed (frusta_destroy_device, or its world destroyed) */
 } frusta_device_state;
 
 /** Why the glove's output is held at zero now (frusta_device_status.watchdog). */
@@ -718,7 +766,9 @@ typedef enum frusta_watchdog_reason {
 /** How a glove is opened; from frusta_default_device_def(). */
 typedef struct frusta_device_def {
   int32_t struct_size;           /* sizeof(frusta_device_def) */
-  int32_t hand;                  /* the world's hand it drives; default 0 */
+  frusta_hand_id hand;           /* the world's hand it drives (frusta_create_world_hand);
+                                    default null: set it */
+  int32_t reserved1;             /* explicit padding */
   double output_rate_hz;         /* commands per second, 0 or 1..100000; 0: the world's rate,
                                     never above what the glove takes (100 for OpenGloves);
                                     default 0 */
@@ -798,7 +848,6 @@ typedef enum frusta_device_kind {
 
 /** One device frusta_enumerate_devices found. */
 typedef struct frusta_device_info {
-  int32_t struct_size;           /* sizeof(frusta_device_info) */
   int32_t kind;                  /* frusta_device_kind */
   int32_t vendor_id;             /* USB/HID ids; -1 when unknown */
   int32_t product_id;            /* -1 when unknown */
@@ -806,27 +855,29 @@ typedef struct frusta_device_info {
                                     as serial:PATH; use opengloves:PATH for those) */
 } frusta_device_info;
 
-/** Defaults for frusta_world_open_device. Thread: any. */
+/** Defaults for frusta_create_device. Thread: any. */
 FRUSTA_API frusta_device_def frusta_default_device_def(void);
-/** List serial ports, HID devices and USB devices present now (up to capacity;
- *  *out_count is how many there are). out may be null with capacity 0. Thread: any
- *  (it reads /dev, hidapi and libusb; slow: not for a frame loop). */
+/** List the serial ports, HID devices and USB devices present now, by the
+ *  output-array rule (capacity 0 and out null ask for the count). Thread: any (it
+ *  reads /dev, hidapi and libusb; slow: not for a frame loop). */
 FRUSTA_API frusta_result frusta_enumerate_devices(frusta_device_info* out, int32_t capacity,
                                                   int32_t* out_count);
-/** Open the glove at uri to drive def->hand of the world, and start its thread. A
- *  glove absent at open is an error (FRUSTA_ERROR_IO, naming it), not a retry; one
- *  glove per hand (FRUSTA_ERROR_WRONG_STATE). While open, frusta_world_set_haptic on
- *  that hand is refused: its palm comes from frusta_device_set_palm_pose unless the
- *  glove reports one. Thread: host. */
-FRUSTA_API frusta_result frusta_world_open_device(frusta_world_id world, const char* uri,
-                                                  const frusta_device_def* def,
-                                                  frusta_device_id* out_device);
-/** Send the glove a zero command, stop its thread, close it. The id turns stale.
+/** Open the glove at uri (UTF-8) to drive the world's hand def->hand, and start its
+ *  thread. A glove absent at open is an error (FRUSTA_ERROR_IO, naming it), not a
+ *  retry; one glove per hand (FRUSTA_ERROR_WRONG_STATE); gloves drive the first 16
+ *  hands of a world. While open, frusta_world_set_haptic on that hand is refused: its
+ *  palm comes from frusta_device_set_palm_pose unless the glove reports one.
+ *  Thread: host. */
+FRUSTA_API frusta_result frusta_create_device(frusta_world_id world, const char* uri,
+                                              const frusta_device_def* def,
+                                              frusta_device_id* out_device);
+/** Send the glove a zero command, stop its thread, close it (the id names its world).
+ *  The id turns stale and the hand takes frusta_world_set_haptic again.
  *  frusta_destroy_world closes a world's gloves first. Thread: host. */
-FRUSTA_API frusta_result frusta_device_close(frusta_device_id device);
+FRUSTA_API frusta_result frusta_destroy_device(frusta_device_id device);
 /** 1 if the id names an open glove, else 0. Thread: any. */
 FRUSTA_API int32_t frusta_device_is_valid(frusta_device_id device);
-/** The newest status (lock-free). Thread: host (one thread). */
+/** The newest status (lock-free; set out->struct_size first). Thread: host. */
 FRUSTA_API frusta_result frusta_device_get_status(frusta_device_id device,
                                                   frusta_device_status* out);
 /** The palm pose (metres, tracking frame) for a glove without a tracker: the next

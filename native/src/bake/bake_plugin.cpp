@@ -69,7 +69,7 @@ FRUSTA_BAKE_PLUGIN_API frusta_result frusta_bake_plugin_bake(
     const float* vertices, int32_t vertex_count, const int32_t* indices, int32_t index_count,
     const frusta_bake_plugin_params* params, uint8_t** out_tree_file, int64_t* out_size,
     int32_t* out_target_met, char* error, int32_t error_capacity) {
-  frusta_result r = guarded("frusta_bake_sphere_tree", [&] {
+  frusta_result r = guarded("frusta_create_sphere_tree_from_mesh", [&] {
     if (frusta_result p = check_pointer(params, "params")) return p;
     if (frusta_result p = check_pointer(out_tree_file, "out_tree_file")) return p;
     std::vector<uint8_t> file;

@@ -1,11 +1,12 @@
 /* SPDX-License-Identifier: MIT
  * The baker as a plugin of the runtime library. Baking needs Embree, which exists
  * only on some platforms (Linux x86_64 here), while the runtime must run everywhere a
- * Unity player does. So the runtime's frusta_bake_sphere_tree loads the baker library
- * (libfrusta_bake.so, frusta_bake.dll) from beside itself when first called, and hands
- * it the mesh; the baker answers with the tree in the .frtree format, which the
- * runtime decodes as it would a file. Where the baker is absent the call fails with
- * FRUSTA_ERROR_UNAVAILABLE, and trees come from frusta-bake's files instead.
+ * Unity player does. So the runtime's frusta_create_sphere_tree_from_mesh loads the
+ * baker library (libfrusta_bake.so, frusta_bake.dll) from beside itself when first
+ * called, and hands it the mesh; the baker answers with the tree in the .frtree
+ * format, which the runtime decodes as it would a file. Where the baker is absent the
+ * call fails with FRUSTA_ERROR_UNAVAILABLE, and trees come from frusta-bake's files
+ * instead.
  * This interface is private to the two libraries; its version guards against a
  * baker from another build. */
 #ifndef FRUSTA_BAKE_PLUGIN_H
@@ -45,10 +46,10 @@ typedef struct frusta_bake_plugin_params {
 /** FRUSTA_BAKE_PLUGIN_VERSION of the baker's build. */
 FRUSTA_BAKE_PLUGIN_API int32_t frusta_bake_plugin_version(void);
 
-/** Bake as frusta_bake_sphere_tree documents (params already checked by the runtime).
- *  On success *out_tree_file holds the tree as a .frtree file of *out_size bytes,
- *  to release with frusta_bake_plugin_free, and *out_target_met is 1 when both error
- *  figures met the target. On failure, the message is written to error (at most
+/** Bake as frusta_create_sphere_tree_from_mesh documents (params already checked by the
+ *  runtime). On success *out_tree_file holds the tree as a .frtree file of *out_size
+ *  bytes, to release with frusta_bake_plugin_free, and *out_target_met is 1 when both
+ *  error figures met the target. On failure, the message is written to error (at most
  *  error_capacity bytes with the terminating NUL) without the code's name, which
  *  the caller reports with the result. Thread: any. */
 FRUSTA_BAKE_PLUGIN_API frusta_result frusta_bake_plugin_bake(

@@ -43,16 +43,15 @@ FRUSTA_API frusta_bake_def frusta_default_bake_def(void) {
   return def;
 }
 
-FRUSTA_API frusta_result frusta_bake_sphere_tree(const float* vertices, int32_t vertex_count,
-                                                 const int32_t* indices, int32_t index_count,
-                                                 const frusta_bake_def* def,
-                                                 frusta_tree_id* out_tree) {
+FRUSTA_API frusta_result frusta_create_sphere_tree_from_mesh(
+    const float* vertices, int32_t vertex_count, const int32_t* indices, int32_t index_count,
+    const frusta_bake_def* def, frusta_tree_id* out_tree) {
   if (frusta_result r = check_def_input(def, "frusta_bake_def")) return r;
   if (frusta_result r = check_pointer(out_tree, "out_tree")) return r;
   // the parameters' one check, before the baker is loaded (bake/bake_params.h)
   const BakeParams params = read_bake_def(*def);
   if (frusta_result r = check_bake_params(params)) return r;
-  return guarded("frusta_bake_sphere_tree", [&] {
+  return guarded("frusta_create_sphere_tree_from_mesh", [&] {
     std::string why;
     const BakePlugin* plugin = bake_plugin(&why);
     if (plugin == nullptr) return fail(FRUSTA_ERROR_UNAVAILABLE, "cannot bake: %s", why.c_str());

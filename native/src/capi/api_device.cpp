@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstring>
+#include <string>
 #include <vector>
 
 #include "capi/convert.h"
@@ -162,7 +163,7 @@ frusta_result find_device(frusta_device_id id, WorldObject** world, DeviceLink**
 // A glove id's generation, from one counter for every world: world0 keeps only the
 // low byte of its world's generation, so with a count per world, a glove id of a world
 // destroyed 256 generations of its slot ago named the new world's glove on that hand
-// (and frusta_device_close through it closed that glove). Never 0.
+// (and frusta_destroy_device through it closed that glove). Never 0.
 uint16_t next_glove_generation() {
   static std::atomic<uint32_t> count{0};
   uint16_t generation;
@@ -185,8 +186,7 @@ FRUSTA_API frusta_device_def frusta_default_device_def(void) {
   const GloveCalibration c = default_glove_calibration();
   frusta_device_def def;
   std::memset(&def, 0, sizeof def);
-  def.struct_size = sizeof(frusta_device_def);
-  def.hand = 0;
+  def.struct_size = sizeof(frusta_device_def);  // hand stays null: the caller names one
   def.output_rate_hz = d.output_rate_hz;
   def.watchdog_s = d.watchdog_s;
   def.engine_timeout_s = d.engine_timeout_s;
@@ -204,15 +204,7 @@ FRUSTA_API frusta_device_def frusta_default_device_def(void) {
 
 FRUSTA_API frusta_result frusta_enumerate_devices(frusta_device_info* out, int32_t capacity,
                                                   int32_t* out_count) {
-  if (frusta_result r = check_pointer(out_count, "out_count")) return r;
-  if (capacity < 0) return fail(FRUSTA_ERROR_OUT_OF_RANGE, "capacity is %d, must be >= 0", capacity);
-  if (capacity > 0)  // a buffer promised but not given: as every other call says it
-    if (frusta_result r = check_pointer(out, "out")) return r;
-  for (int32_t i = 0; i < capacity; ++i) {
-    if (frusta_result r = check_struct_size(out[i].struct_size, static_cast<int32_t>(sizeof(frusta_device_info)),
-                                            "frusta_device_info"))
-      return r;
-  }
+  if (frusta_result r = check_output_array(out, "out", capacity, out_count)) return r;
   return guarded("frusta_enumerate_devices", [&] {
     std::vector<DeviceInfo> found;
     enumerate_devices(&found);
@@ -229,9 +221,9 @@ FRUSTA_API frusta_result frusta_enumerate_devices(frusta_device_info* out, int32
   });
 }
 
-FRUSTA_API frusta_result frusta_world_open_device(frusta_world_id world, const char* uri,
-                                                  const frusta_device_def* def,
-                                                  frusta_device_id* out_device) {
+FRUSTA_API frusta_result frusta_create_device(frusta_world_id world, const char* uri,
+                                              const frusta_device_def* def,
+                                              frusta_device_id* out_device) {
   WorldObject* w = nullptr;
   if (frusta_result r = world_registry().find(world, &w)) return r;
   if (frusta_result r = check_pointer(uri, "uri")) return r;
@@ -240,14 +232,21 @@ FRUSTA_API frusta_result frusta_world_open_device(frusta_world_id world, const c
   DeviceLinkDef link_def;
   GloveCalibration calibration;
   if (frusta_result r = read_device_def(*def, &link_def, &calibration)) return r;
-  const int32_t hand = def->hand;
-  if (hand < 0 || hand >= w->world.hand_count() || hand >= kMaxGloves)
+  int32_t hand = -1;
+  if (frusta_result r = world_hand_index(world, *w, def->hand, &hand)) {
+    // the field, then why, without the code's name that opens the message
+    const std::string why = last_error_message();
+    const size_t colon = why.find(": ");
+    return fail(r, "frusta_device_def.hand: %s",
+                colon == std::string::npos ? why.c_str() : why.c_str() + colon + 2);
+  }
+  if (hand >= kMaxGloves)
     return fail(FRUSTA_ERROR_OUT_OF_RANGE,
-                "frusta_device_def.hand is %d; the world has %d hands (gloves drive the first %d)",
-                hand, w->world.hand_count(), kMaxGloves);
+                "frusta_device_def.hand is the world's hand %d; gloves drive the first %d", hand,
+                kMaxGloves);
   DeviceAddress address;
   if (frusta_result r = parse_device_uri(uri, &address)) return r;
-  return guarded("frusta_world_open_device", [&] {
+  return guarded("frusta_create_device", [&] {
     Glove glove;
     if (frusta_result r = make_glove(address, calibration, &glove)) return r;
     link_def.record_path = address.record_path;
@@ -263,12 +262,12 @@ FRUSTA_API frusta_result frusta_world_open_device(frusta_world_id world, const c
   });
 }
 
-FRUSTA_API frusta_result frusta_device_close(frusta_device_id device) {
+FRUSTA_API frusta_result frusta_destroy_device(frusta_device_id device) {
   WorldObject* w = nullptr;
   DeviceLink* link = nullptr;
   int32_t hand = -1;
   if (frusta_result r = find_device(device, &w, &link, &hand)) return r;
-  return guarded("frusta_device_close", [&] {
+  return guarded("frusta_destroy_device", [&] {
     // zeroes the glove, joins its thread, gives the hand back to the host
     w->gloves[static_cast<size_t>(hand)].reset();
     return FRUSTA_OK;

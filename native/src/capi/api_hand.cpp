@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // C ABI: hands. Each function checks every input before it changes anything.
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -8,6 +9,7 @@
 
 #include "capi/convert.h"
 #include "capi/hand_registry.h"
+#include "capi/world_registry.h"
 #include "core/error.h"
 #include "core/validate.h"
 #include "frusta/frusta.h"
@@ -17,17 +19,15 @@ using namespace frusta;
 
 namespace {
 
-// A negative capacity is a wrong argument, not a small buffer: OUT_OF_RANGE, as every
-// other call with a capacity says
-frusta_result check_capacity(int32_t capacity) {
-  if (capacity >= 0) return FRUSTA_OK;
-  return fail(FRUSTA_ERROR_OUT_OF_RANGE, "capacity is %d, must be >= 0", capacity);
-}
-
-frusta_result check_output(int32_t capacity, int32_t needed, const char* what) {
-  if (frusta_result r = check_capacity(capacity)) return r;
-  if (capacity >= needed) return FRUSTA_OK;
-  return fail(FRUSTA_ERROR_CAPACITY, "capacity is %d but %s needs %d", capacity, what, needed);
+// The standalone hand of id. A live world's hand id is refused by name: its state lives
+// in the world (frusta_world_get_hand), and the registry would only call it stale.
+frusta_result find_hand(frusta_hand_id id, HandObject** out) {
+  if (world_hand_is_valid(id))
+    return fail(FRUSTA_ERROR_STALE_ID,
+                "hand id {index1=%d, world0=%u, generation=%u} names a world's hand, not a "
+                "standalone one: the frusta_world_* calls take it",
+                id.index1, id.world0, id.generation);
+  return hand_registry().find(id, out);
 }
 
 }  // namespace
@@ -72,16 +72,19 @@ FRUSTA_API frusta_result frusta_create_hand(const frusta_hand_def* def, frusta_h
 }
 
 FRUSTA_API frusta_result frusta_destroy_hand(frusta_hand_id hand) {
+  HandObject* h = nullptr;
+  if (frusta_result r = find_hand(hand, &h)) return r;
   return hand_registry().destroy(hand);
 }
 
 FRUSTA_API int32_t frusta_hand_is_valid(frusta_hand_id hand) {
+  if (hand.world0 != 0) return world_hand_is_valid(hand) ? 1 : 0;
   return hand_registry().is_valid(hand) ? 1 : 0;
 }
 
 FRUSTA_API frusta_result frusta_hand_set_palm_pose(frusta_hand_id hand, const frusta_pose* pose) {
   HandObject* h = nullptr;
-  if (frusta_result r = hand_registry().find(hand, &h)) return r;
+  if (frusta_result r = find_hand(hand, &h)) return r;
   Pose p;
   if (frusta_result r = read_pose(pose, "pose", &p)) return r;
   h->state.palm_position = p.position;
@@ -93,7 +96,7 @@ FRUSTA_API frusta_result frusta_hand_set_palm_pose(frusta_hand_id hand, const fr
 FRUSTA_API frusta_result frusta_hand_set_joint_angles(frusta_hand_id hand, const double* angles,
                                                       int32_t count) {
   HandObject* h = nullptr;
-  if (frusta_result r = hand_registry().find(hand, &h)) return r;
+  if (frusta_result r = find_hand(hand, &h)) return r;
   if (frusta_result r = read_joint_angles(angles, count, "angles", &h->state.angles)) return r;
   clamp_to_limits(h->model, h->state);
   forward_kinematics(h->model, h->state, h->pose);
@@ -101,35 +104,30 @@ FRUSTA_API frusta_result frusta_hand_set_joint_angles(frusta_hand_id hand, const
 }
 
 FRUSTA_API frusta_result frusta_hand_get_joint_angles(frusta_hand_id hand, double* out,
-                                                      int32_t capacity) {
+                                                      int32_t capacity, int32_t* out_count) {
   HandObject* h = nullptr;
-  if (frusta_result r = hand_registry().find(hand, &h)) return r;
-  if (frusta_result r = check_pointer(out, "out")) return r;
-  if (frusta_result r = check_output(capacity, FRUSTA_HAND_JOINT_COUNT, "the joint angles"))
-    return r;
-  std::memcpy(out, h->state.angles.data(), sizeof(double) * FRUSTA_HAND_JOINT_COUNT);
+  if (frusta_result r = find_hand(hand, &h)) return r;
+  if (frusta_result r = check_output_array(out, "out", capacity, out_count)) return r;
+  const int32_t n = std::min(capacity, FRUSTA_HAND_JOINT_COUNT);
+  if (n > 0) std::memcpy(out, h->state.angles.data(), sizeof(double) * static_cast<size_t>(n));
+  *out_count = FRUSTA_HAND_JOINT_COUNT;
   return FRUSTA_OK;
 }
 
 FRUSTA_API frusta_result frusta_hand_get_segments(frusta_hand_id hand, frusta_segment* out,
                                                   int32_t capacity, int32_t* out_count) {
   HandObject* h = nullptr;
-  if (frusta_result r = hand_registry().find(hand, &h)) return r;
-  if (frusta_result r = check_pointer(out, "out")) return r;
-  if (frusta_result r = check_pointer(out_count, "out_count")) return r;
-  if (frusta_result r = check_output(capacity, FRUSTA_HAND_SEGMENT_COUNT, "the segments"))
-    return r;
-  for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
-    for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s) {
-      const Segment seg = finger_segment(h->model, h->pose, f, s);
-      frusta_segment& o = out[f * FRUSTA_SEGMENTS_PER_FINGER + s];
-      for (int k = 0; k < 3; ++k) {
-        o.proximal[k] = seg.proximal[k];
-        o.distal[k] = seg.distal[k];
-      }
-      o.proximal_radius = seg.proximal_radius;
-      o.distal_radius = seg.distal_radius;
-    }
+  if (frusta_result r = find_hand(hand, &h)) return r;
+  if (frusta_result r = check_output_array(out, "out", capacity, out_count)) return r;
+  const int32_t n = std::min(capacity, FRUSTA_HAND_SEGMENT_COUNT);
+  for (int32_t i = 0; i < n; ++i) {
+    const Segment seg = finger_segment(h->model, h->pose, i / FRUSTA_SEGMENTS_PER_FINGER,
+                                       i % FRUSTA_SEGMENTS_PER_FINGER);
+    frusta_segment& o = out[i];
+    store(seg.proximal, o.proximal);
+    store(seg.distal, o.distal);
+    o.proximal_radius = seg.proximal_radius;
+    o.distal_radius = seg.distal_radius;
   }
   *out_count = FRUSTA_HAND_SEGMENT_COUNT;
   return FRUSTA_OK;
@@ -138,31 +136,25 @@ FRUSTA_API frusta_result frusta_hand_get_segments(frusta_hand_id hand, frusta_se
 FRUSTA_API frusta_result frusta_hand_get_palm_spheres(frusta_hand_id hand, frusta_sphere* out,
                                                       int32_t capacity, int32_t* out_count) {
   HandObject* h = nullptr;
-  if (frusta_result r = hand_registry().find(hand, &h)) return r;
-  if (frusta_result r = check_pointer(out_count, "out_count")) return r;
-  if (frusta_result r = check_capacity(capacity)) return r;
+  if (frusta_result r = find_hand(hand, &h)) return r;
+  if (frusta_result r = check_output_array(out, "out", capacity, out_count)) return r;
   const int32_t count = static_cast<int32_t>(h->model.palm_spheres.size());
-  if (capacity == 0 && !out) {  // a size query
-    *out_count = count;
-    return FRUSTA_OK;
-  }
-  if (frusta_result r = check_pointer(out, "out")) return r;
-  if (frusta_result r = check_output(capacity, count, "the palm spheres")) return r;
-  *out_count = count;
-  for (int32_t i = 0; i < count; ++i) {
+  const int32_t n = std::min(capacity, count);
+  for (int32_t i = 0; i < n; ++i) {
     const Sphere s = palm_sphere(h->model, h->pose, i);
-    for (int k = 0; k < 3; ++k) out[i].center[k] = s.center[k];
+    store(s.center, out[i].center);
     out[i].radius = s.radius;
   }
+  *out_count = count;
   return FRUSTA_OK;
 }
 
 FRUSTA_API frusta_result frusta_hand_point_jacobian(frusta_hand_id hand, int32_t finger,
                                                     int32_t segment, const double local_point[3],
                                                     double* out_point, double* out_jacobian,
-                                                    int32_t capacity) {
+                                                    int32_t capacity, int32_t* out_count) {
   HandObject* h = nullptr;
-  if (frusta_result r = hand_registry().find(hand, &h)) return r;
+  if (frusta_result r = find_hand(hand, &h)) return r;
   if (finger < 0 || finger >= FRUSTA_FINGER_COUNT)
     return fail(FRUSTA_ERROR_OUT_OF_RANGE, "finger is %d, must be 0..%d", finger,
                 FRUSTA_FINGER_COUNT - 1);
@@ -171,13 +163,17 @@ FRUSTA_API frusta_result frusta_hand_point_jacobian(frusta_hand_id hand, int32_t
                 FRUSTA_SEGMENTS_PER_FINGER - 1);
   if (frusta_result r = check_pointer(local_point, "local_point")) return r;
   if (frusta_result r = check_bounded(local_point, 3, kMaxCoordinate, "local_point")) return r;
-  if (frusta_result r = check_pointer(out_jacobian, "out_jacobian")) return r;
-  if (frusta_result r = check_output(capacity, 3 * kJacobianColumns, "a 3 x 10 Jacobian"))
+  if (frusta_result r = check_output_array(out_jacobian, "out_jacobian", capacity, out_count))
     return r;
+  static_assert(3 * kJacobianColumns == FRUSTA_POINT_JACOBIAN_LENGTH, "a 3 x 10 Jacobian");
   const vec3 world = segment_point(h->pose, finger, segment,
                                    vec3(local_point[0], local_point[1], local_point[2]));
-  point_jacobian(h->pose, finger, segment, world, out_jacobian);
-  if (out_point)
-    for (int k = 0; k < 3; ++k) out_point[k] = world[k];
+  // computed whole, copied as far as the caller's buffer reaches
+  double jacobian[FRUSTA_POINT_JACOBIAN_LENGTH];
+  point_jacobian(h->pose, finger, segment, world, jacobian);
+  const int32_t n = std::min(capacity, FRUSTA_POINT_JACOBIAN_LENGTH);
+  if (n > 0) std::memcpy(out_jacobian, jacobian, sizeof(double) * static_cast<size_t>(n));
+  if (out_point) store(world, out_point);
+  *out_count = FRUSTA_POINT_JACOBIAN_LENGTH;
   return FRUSTA_OK;
 }

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // C ABI: sphere trees (load, save, inspect, query); baking is in api_bake.cpp.
+#include <algorithm>
 #include <cstring>
 
 #include <glm/gtc/quaternion.hpp>
@@ -20,10 +21,11 @@ TreeRegistry& tree_registry() {
 }
 }  // namespace frusta
 
-FRUSTA_API frusta_result frusta_load_sphere_tree(const char* path, frusta_tree_id* out_tree) {
+FRUSTA_API frusta_result frusta_create_sphere_tree_from_file(const char* path,
+                                                             frusta_tree_id* out_tree) {
   if (frusta_result r = check_pointer(path, "path")) return r;
   if (frusta_result r = check_pointer(out_tree, "out_tree")) return r;
-  return guarded("frusta_load_sphere_tree", [&] {
+  return guarded("frusta_create_sphere_tree_from_file", [&] {
     auto tree = std::make_unique<TreeObject>();
     if (frusta_result r = load_tree_file(path, &tree->file)) return r;
     const BakeRecord& b = tree->file.bake;
@@ -32,11 +34,11 @@ FRUSTA_API frusta_result frusta_load_sphere_tree(const char* path, frusta_tree_i
   });
 }
 
-FRUSTA_API frusta_result frusta_save_sphere_tree(frusta_tree_id tree, const char* path) {
+FRUSTA_API frusta_result frusta_sphere_tree_save(frusta_tree_id tree, const char* path) {
   TreeObject* t = nullptr;
   if (frusta_result r = tree_registry().find(tree, &t)) return r;
   if (frusta_result r = check_pointer(path, "path")) return r;
-  return guarded("frusta_save_sphere_tree", [&] { return save_tree_file(path, t->file); });
+  return guarded("frusta_sphere_tree_save", [&] { return save_tree_file(path, t->file); });
 }
 
 FRUSTA_API frusta_result frusta_destroy_sphere_tree(frusta_tree_id tree) {
@@ -77,23 +79,15 @@ FRUSTA_API frusta_result frusta_sphere_tree_get_leaves(frusta_tree_id tree, frus
                                                        int32_t capacity, int32_t* out_count) {
   TreeObject* t = nullptr;
   if (frusta_result r = tree_registry().find(tree, &t)) return r;
-  if (frusta_result r = check_pointer(out_count, "out_count")) return r;
-  if (capacity < 0)  // a wrong argument, not a small buffer (as in every call with a capacity)
-    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "capacity is %d, must be >= 0", capacity);
+  if (frusta_result r = check_output_array(out, "out", capacity, out_count)) return r;
   const std::vector<Sphere>& leaves = t->file.tree.leaves;
   const int32_t count = static_cast<int32_t>(leaves.size());
-  if (capacity == 0 && !out) {  // a size query
-    *out_count = count;
-    return FRUSTA_OK;
-  }
-  if (frusta_result r = check_pointer(out, "out")) return r;
-  if (capacity < count)
-    return fail(FRUSTA_ERROR_CAPACITY, "capacity is %d but the tree has %d leaves", capacity, count);
-  *out_count = count;
-  for (int32_t i = 0; i < count; ++i) {
+  const int32_t n = std::min(capacity, count);
+  for (int32_t i = 0; i < n; ++i) {
     store(leaves[static_cast<size_t>(i)].center, out[i].center);
     out[i].radius = leaves[static_cast<size_t>(i)].radius;
   }
+  *out_count = count;
   return FRUSTA_OK;
 }
 
@@ -114,10 +108,7 @@ FRUSTA_API frusta_result frusta_sphere_tree_query_segment(frusta_tree_id tree,
   if (max_level < -1 || max_level > kMaxTreeDepth)
     return fail(FRUSTA_ERROR_OUT_OF_RANGE, "max_level is %d, must be -1 (leaves) or 0..%d",
                 max_level, kMaxTreeDepth);
-  if (capacity < 0) return fail(FRUSTA_ERROR_OUT_OF_RANGE, "capacity is %d", capacity);
-  if (capacity > 0)
-    if (frusta_result r = check_pointer(out, "out")) return r;
-  if (frusta_result r = check_pointer(out_count, "out_count")) return r;
+  if (frusta_result r = check_output_array(out, "out", capacity, out_count)) return r;
 
   RigidPose rigid;
   rigid.position = p.position;

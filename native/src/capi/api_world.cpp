@@ -2,6 +2,7 @@
 // C ABI: worlds. Each function checks every input before it changes anything; the
 // calls a device thread makes (frusta_world_set_haptic) take no lock and allocate
 // nothing.
+#include <algorithm>
 #include <cstring>
 #include <glm/gtc/quaternion.hpp>
 
@@ -94,9 +95,10 @@ frusta_result latched(WorldObject* w, const WorldSnapshot** out) {
   return FRUSTA_OK;
 }
 
+// A checked hand in the latched step (which has every hand: creating one unlatches).
 frusta_result hand_of(const WorldSnapshot& snap, int32_t hand, const HandSnapshot** out) {
-  if (hand < 0 || hand >= static_cast<int32_t>(snap.hands.size()))
-    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "hand is %d, the world has %zu", hand, snap.hands.size());
+  if (hand >= static_cast<int32_t>(snap.hands.size()))
+    return fail(FRUSTA_ERROR_INTERNAL, "hand %d is not in the latched step", hand);
   *out = &snap.hands[static_cast<size_t>(hand)];
   return FRUSTA_OK;
 }
@@ -170,26 +172,30 @@ FRUSTA_API int32_t frusta_world_is_valid(frusta_world_id world) {
   return world_registry().is_valid(world) ? 1 : 0;
 }
 
-FRUSTA_API frusta_result frusta_world_add_hand(frusta_world_id world, const frusta_hand_def* def,
-                                               int32_t* out_hand) {
+FRUSTA_API frusta_result frusta_create_world_hand(frusta_world_id world, const frusta_hand_def* def,
+                                                  frusta_hand_id* out_hand) {
   WorldObject* w = nullptr;
   if (frusta_result r = world_registry().find(world, &w)) return r;
   if (frusta_result r = check_def_input(def, "frusta_hand_def")) return r;
   if (frusta_result r = check_pointer(out_hand, "out_hand")) return r;
   const HandDef d = read_hand_def(*def);
   if (frusta_result r = check_hand_def(d)) return r;
-  return guarded("frusta_world_add_hand", [&] {
-    const frusta_result r = w->world.add_hand(make_hand_model(d), out_hand);
-    if (r == FRUSTA_OK) w->latched = nullptr;  // the snapshots were rebuilt for the new hand
-    return r;
+  return guarded("frusta_create_world_hand", [&] {
+    int32_t hand = -1;
+    if (frusta_result r = w->world.add_hand(make_hand_model(d), &hand)) return r;
+    w->latched = nullptr;  // the snapshots were rebuilt for the new hand
+    *out_hand = world_hand_id(world, hand);
+    return FRUSTA_OK;
   });
 }
 
-FRUSTA_API frusta_result frusta_world_set_haptic(frusta_world_id world, int32_t hand,
+FRUSTA_API frusta_result frusta_world_set_haptic(frusta_world_id world, frusta_hand_id hand_id,
                                                  const frusta_pose* palm, const double* angles,
                                                  int32_t count) {
   WorldObject* w = nullptr;
   if (frusta_result r = world_registry().find(world, &w)) return r;
+  int32_t hand = -1;
+  if (frusta_result r = world_hand_index(world, *w, hand_id, &hand)) return r;
   Pose pose;
   if (frusta_result r = read_pose(palm, "palm", &pose)) return r;
   HandState state;
@@ -199,9 +205,9 @@ FRUSTA_API frusta_result frusta_world_set_haptic(frusta_world_id world, int32_t 
   return w->world.set_haptic(hand, state);  // the hand's port refuses it while a glove drives it
 }
 
-FRUSTA_API frusta_result frusta_world_add_object(frusta_world_id world, frusta_tree_id tree,
-                                                 const frusta_object_def* def,
-                                                 frusta_object_id* out_object) {
+FRUSTA_API frusta_result frusta_create_object(frusta_world_id world, frusta_tree_id tree,
+                                              const frusta_object_def* def,
+                                              frusta_object_id* out_object) {
   WorldObject* w = nullptr;
   if (frusta_result r = world_registry().find(world, &w)) return r;
   std::shared_ptr<TreeObject> shape;
@@ -210,7 +216,7 @@ FRUSTA_API frusta_result frusta_world_add_object(frusta_world_id world, frusta_t
   if (frusta_result r = check_pointer(out_object, "out_object")) return r;
   ObjectDef d;
   if (frusta_result r = read_object_def(*def, &d)) return r;
-  return guarded("frusta_world_add_object", [&] {
+  return guarded("frusta_create_object", [&] {
     // the world shares the tree object, and sees only its file
     std::shared_ptr<const TreeFile> file(shape, &shape->file);
     ObjectHandle handle;
@@ -220,12 +226,14 @@ FRUSTA_API frusta_result frusta_world_add_object(frusta_world_id world, frusta_t
   });
 }
 
-FRUSTA_API frusta_result frusta_world_remove_object(frusta_world_id world, frusta_object_id object) {
+FRUSTA_API frusta_result frusta_destroy_object(frusta_object_id object) {
+  if (object.index1 == 0) return fail(FRUSTA_ERROR_NULL_ID, "object id is null (zero-initialised)");
   WorldObject* w = nullptr;
-  if (frusta_result r = world_registry().find(world, &w)) return r;
+  frusta_world_id world;
+  if (frusta_result r = world_registry().find_by_tag(object.world0, "object", &w, &world)) return r;
   ObjectHandle handle;
   if (frusta_result r = object_handle(world, object, &handle)) return r;
-  return guarded("frusta_world_remove_object", [&] { return w->world.remove_object(handle); });
+  return guarded("frusta_destroy_object", [&] { return w->world.remove_object(handle); });
 }
 
 FRUSTA_API frusta_result frusta_world_set_object_pose(frusta_world_id world,
@@ -299,7 +307,7 @@ FRUSTA_API frusta_result frusta_world_read(frusta_world_id world, frusta_world_s
   return FRUSTA_OK;
 }
 
-FRUSTA_API frusta_result frusta_world_get_hand(frusta_world_id world, int32_t hand,
+FRUSTA_API frusta_result frusta_world_get_hand(frusta_world_id world, frusta_hand_id hand,
                                                frusta_world_hand* out) {
   WorldObject* w = nullptr;
   if (frusta_result r = world_registry().find(world, &w)) return r;
@@ -307,10 +315,12 @@ FRUSTA_API frusta_result frusta_world_get_hand(frusta_world_id world, int32_t ha
   if (frusta_result r = check_struct_size(out->struct_size, sizeof(frusta_world_hand),
                                           "frusta_world_hand"))
     return r;
+  int32_t index = -1;
+  if (frusta_result r = world_hand_index(world, *w, hand, &index)) return r;
   const WorldSnapshot* snap = nullptr;
   if (frusta_result r = latched(w, &snap)) return r;
   const HandSnapshot* h = nullptr;
-  if (frusta_result r = hand_of(*snap, hand, &h)) return r;
+  if (frusta_result r = hand_of(*snap, index, &h)) return r;
   out->solved = h->solved ? 1 : 0;
   store_state(h->graphic, &out->graphic_palm, out->graphic_angles);
   store_state(h->haptic, &out->haptic_palm, out->haptic_angles);
@@ -330,42 +340,36 @@ FRUSTA_API frusta_result frusta_world_get_hand(frusta_world_id world, int32_t ha
   return FRUSTA_OK;
 }
 
-FRUSTA_API frusta_result frusta_world_get_contacts(frusta_world_id world, int32_t hand,
+FRUSTA_API frusta_result frusta_world_get_contacts(frusta_world_id world, frusta_hand_id hand,
                                                    frusta_world_contact* out, int32_t capacity,
                                                    int32_t* out_count) {
   WorldObject* w = nullptr;
   if (frusta_result r = world_registry().find(world, &w)) return r;
-  if (frusta_result r = check_pointer(out_count, "out_count")) return r;
+  int32_t index = -1;
+  if (frusta_result r = world_hand_index(world, *w, hand, &index)) return r;
+  if (frusta_result r = check_output_array(out, "out", capacity, out_count)) return r;
   const WorldSnapshot* snap = nullptr;
   if (frusta_result r = latched(w, &snap)) return r;
   const HandSnapshot* h = nullptr;
-  if (frusta_result r = hand_of(*snap, hand, &h)) return r;
+  if (frusta_result r = hand_of(*snap, index, &h)) return r;
   const int32_t kept = std::min(h->contact_count, static_cast<int32_t>(h->contacts.size()));
-  if (capacity < 0) return fail(FRUSTA_ERROR_OUT_OF_RANGE, "capacity is %d, must be >= 0", capacity);
-  if (capacity != 0 || out) {
-    if (frusta_result r = check_pointer(out, "out")) return r;
-    if (capacity < kept)
-      return fail(FRUSTA_ERROR_CAPACITY, "capacity is %d but the hand has %d contacts", capacity,
-                  kept);
-  }
-  if (out) {
-    for (int32_t i = 0; i < kept; ++i) {
-      const SolverContact& c = h->contacts[static_cast<size_t>(i)];
-      const ContactForce& f = h->forces[static_cast<size_t>(i)];
-      frusta_world_contact& o = out[i];
-      const ObjectSnapshot& object = snap->objects[static_cast<size_t>(c.object)];
-      o.object = object_id(world, c.object, object.generation);
-      o.body = c.body;
-      o.leaf = c.leaf;
-      o.slipping = f.slipping ? 1 : 0;
-      o.reserved0 = 0;
-      o.distance = c.distance;
-      store(f.graphic_point, o.graphic_point);
-      store(f.haptic_point, o.haptic_point);
-      store(c.normal, o.normal);
-      store(f.normal_force, o.normal_force);
-      store(f.friction, o.friction);
-    }
+  const int32_t n = std::min(capacity, kept);
+  for (int32_t i = 0; i < n; ++i) {
+    const SolverContact& c = h->contacts[static_cast<size_t>(i)];
+    const ContactForce& f = h->forces[static_cast<size_t>(i)];
+    frusta_world_contact& o = out[i];
+    const ObjectSnapshot& object = snap->objects[static_cast<size_t>(c.object)];
+    o.object = object_id(world, c.object, object.generation);
+    o.body = c.body;
+    o.leaf = c.leaf;
+    o.slipping = f.slipping ? 1 : 0;
+    o.reserved0 = 0;
+    o.distance = c.distance;
+    store(f.graphic_point, o.graphic_point);
+    store(f.haptic_point, o.haptic_point);
+    store(c.normal, o.normal);
+    store(f.normal_force, o.normal_force);
+    store(f.friction, o.friction);
   }
   *out_count = kept;
   return FRUSTA_OK;

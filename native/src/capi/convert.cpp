@@ -20,6 +20,18 @@ vec3 to_vec3(const double v[3]) { return vec3(v[0], v[1], v[2]); }
 
 }  // namespace
 
+frusta_result check_output_array(const void* out, const char* out_name, int32_t capacity,
+                                 const int32_t* out_count) {
+  if (frusta_result r = check_pointer(out_count, "out_count")) return r;
+  // a wrong argument, not a small buffer
+  if (capacity < 0)
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "capacity is %d, must be >= 0", capacity);
+  if (capacity > 0 && out == nullptr)
+    return fail(FRUSTA_ERROR_NULL_POINTER, "%s is null but capacity is %d (null only with 0)",
+                out_name, capacity);
+  return FRUSTA_OK;
+}
+
 frusta_result read_segment(const frusta_segment* in, const char* name, Segment* out) {
   const std::string n = name;
   if (frusta_result r = check_pointer(in, name)) return r;

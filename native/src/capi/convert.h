@@ -26,6 +26,12 @@ frusta_result check_def_input(const Def* def, const char* struct_name) {
   return check_def_cookie(def->internal_value, struct_name);
 }
 
+// The header's output-array rule, checked before anything is written: out_count not
+// null, capacity >= 0, out null only with capacity 0. The caller then sets *out_count
+// to the count and writes min(capacity, count) elements.
+frusta_result check_output_array(const void* out, const char* out_name, int32_t capacity,
+                                 const int32_t* out_count);
+
 // name prefixes the field names in messages, e.g. "segment" -> "segment.distal[1]"
 frusta_result read_segment(const frusta_segment* in, const char* name, Segment* out);
 frusta_result read_sphere(const frusta_sphere* in, const char* name, Sphere* out);

@@ -81,6 +81,40 @@ frusta_result WorldRegistry::find_by_tag(uint16_t tag, const char* what, WorldOb
               what, tag);
 }
 
+frusta_hand_id world_hand_id(frusta_world_id world, int32_t hand) {
+  return {hand + 1, world_tag(world), world.generation};
+}
+
+frusta_result world_hand_index(frusta_world_id world, const WorldObject& w, frusta_hand_id id,
+                               int32_t* out) {
+  if (id.index1 == 0) return fail(FRUSTA_ERROR_NULL_ID, "hand id is null (zero-initialised)");
+  if (id.world0 == 0)
+    return fail(FRUSTA_ERROR_STALE_ID,
+                "hand id {index1=%d, world0=0, generation=%u} names a standalone hand "
+                "(frusta_create_hand), not a hand of a world (frusta_create_world_hand)",
+                id.index1, id.generation);
+  if (id.world0 != world_tag(world) || id.generation != world.generation)
+    return fail(FRUSTA_ERROR_STALE_ID,
+                "hand id {index1=%d, world0=%u, generation=%u} belongs to another world, or to "
+                "a destroyed one",
+                id.index1, id.world0, id.generation);
+  // index1 is checked before 1 is taken off it: INT32_MIN - 1 overflows
+  if (id.index1 < 1 || id.index1 > w.world.hand_count())
+    return fail(FRUSTA_ERROR_STALE_ID,
+                "hand id {index1=%d} names no hand of this world (it has %d)", id.index1,
+                w.world.hand_count());
+  *out = id.index1 - 1;
+  return FRUSTA_OK;
+}
+
+bool world_hand_is_valid(frusta_hand_id id) {
+  if (id.index1 == 0 || id.world0 == 0) return false;
+  WorldObject* w = nullptr;
+  frusta_world_id world;
+  if (world_registry().find_by_tag(id.world0, nullptr, &w, &world) != FRUSTA_OK) return false;
+  return id.generation == world.generation && id.index1 >= 1 && id.index1 <= w->world.hand_count();
+}
+
 bool WorldRegistry::is_valid(frusta_world_id id) const {
   WorldObject* world = nullptr;
   return find(id, false, &world) == FRUSTA_OK;

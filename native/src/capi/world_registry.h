@@ -32,6 +32,17 @@ struct WorldObject {
 // generation's low byte above.
 uint16_t world_tag(frusta_world_id world);
 
+// A world's hand as the header names it: its index + 1, the world's tag, and the
+// world's whole generation (hands are never removed, so the world's generation tells a
+// hand of this world from one of a world that had the slot 256 generations ago).
+frusta_hand_id world_hand_id(frusta_world_id world, int32_t hand);
+// The index of a hand id in this world, or why not: null, standalone (world0 0),
+// another world's, or never issued (STALE_ID naming it).
+frusta_result world_hand_index(frusta_world_id world, const WorldObject& w, frusta_hand_id id,
+                               int32_t* out);
+// 1 if id names a hand of a live world (never an error).
+bool world_hand_is_valid(frusta_hand_id id);
+
 class WorldRegistry {
  public:
   static constexpr int32_t kMaxWorlds = 255;  // a slot + 1 fits an object id's byte

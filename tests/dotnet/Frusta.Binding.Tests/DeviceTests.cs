@@ -37,7 +37,7 @@ namespace Frusta.Binding.Tests
         static World WorldWithHand(bool run)
         {
             var world = new World();
-            Assert.Equal(0, world.AddHand(FrustaHandDef.Default));
+            Assert.Equal(1, world.CreateHand(FrustaHandDef.Default).Index1);
             if (run) world.Start();
             return world;
         }
@@ -61,7 +61,7 @@ namespace Frusta.Binding.Tests
             $"{s.Disconnects} disconnects, {s.Reconnects} reconnects";
 
         /// <summary>Latch a step taken after this call, then read one hand of it.</summary>
-        static FrustaWorldHand HandAfterNextSteps(World world, int hand)
+        static FrustaWorldHand HandAfterNextSteps(World world, FrustaHandId hand)
         {
             var state = new FrustaWorldState();
             world.Read(ref state);
@@ -80,10 +80,11 @@ namespace Frusta.Binding.Tests
         public void DefaultsAreTheHeadersDocumentedDefaults()
         {
             FrustaDeviceDef d = FrustaDeviceDef.Default;
-            Assert.Equal(720, d.struct_size);
+            Assert.Equal(728, d.struct_size);
             Assert.NotEqual(0, d.internal_value);
             Assert.Equal(0, d.reserved0);
-            Assert.Equal(0, d.Hand);
+            Assert.True(d.Hand.IsNull, "the caller names the hand");
+            Assert.Equal(0, d.reserved1);
             Assert.Equal(0.0, d.OutputRateHz);
             Assert.Equal((0.05, 0.05, 0.25, 0.2), (d.WatchdogS, d.EngineTimeoutS, d.HostTimeoutS, d.ReconnectIntervalS));
             Assert.Equal((500.0, 25.0), (d.MaxForceRate, d.MaxTorqueRate));
@@ -133,27 +134,36 @@ namespace Frusta.Binding.Tests
         public void BadUrisAndDefsAreRefusedNamingTheProblem()
         {
             using World world = WorldWithHand(run: false);
-            Fails(FrustaResult.OutOfRange, () => world.OpenDevice("bogus:x"), "\"bogus:x\"", "unknown scheme", "opengloves:");
-            Fails(FrustaResult.OutOfRange, () => world.OpenDevice("no-scheme"), "\"no-scheme\"", "no scheme");
-            Fails(FrustaResult.OutOfRange, () => world.OpenDevice("opengloves:"), "\"opengloves:\"", "no device path");
-            Fails(FrustaResult.Io, () => world.OpenDevice("serial:/nonexistent/tty"), "/nonexistent/tty", "cannot open");
-            Fails(FrustaResult.OutOfRange, () => world.OpenDevice("hid:zz:1"), "\"hid:zz:1\"", "hid:VID:PID", "hexadecimal");
-            Fails(FrustaResult.OutOfRange, () => world.OpenDevice($"replay:{Recording}?speed=fast"), "unknown parameter", "speed=1|max");
-            Fails(FrustaResult.Io, () => world.OpenDevice("replay:/nonexistent/glove.frrec"), "/nonexistent/glove.frrec");
+            Fails(FrustaResult.OutOfRange, () => world.CreateDevice("bogus:x", world.Hands[0]), "\"bogus:x\"", "unknown scheme", "opengloves:");
+            Fails(FrustaResult.OutOfRange, () => world.CreateDevice("no-scheme", world.Hands[0]), "\"no-scheme\"", "no scheme");
+            Fails(FrustaResult.OutOfRange, () => world.CreateDevice("opengloves:", world.Hands[0]), "\"opengloves:\"", "no device path");
+            Fails(FrustaResult.Io, () => world.CreateDevice("serial:/nonexistent/tty", world.Hands[0]), "/nonexistent/tty", "cannot open");
+            Fails(FrustaResult.OutOfRange, () => world.CreateDevice("hid:zz:1", world.Hands[0]), "\"hid:zz:1\"", "hid:VID:PID", "hexadecimal");
+            Fails(FrustaResult.OutOfRange, () => world.CreateDevice($"replay:{Recording}?speed=fast", world.Hands[0]), "unknown parameter", "speed=1|max");
+            Fails(FrustaResult.Io, () => world.CreateDevice("replay:/nonexistent/glove.frrec", world.Hands[0]), "/nonexistent/glove.frrec");
 
             FrustaDeviceDef def = FrustaDeviceDef.Default;
+            def.Hand = world.Hands[0];
             def.WatchdogS = 0;
-            Fails(FrustaResult.OutOfRange, () => world.OpenDevice(ReplayAsFastAsRead, def), "watchdog_s");
+            Fails(FrustaResult.OutOfRange, () => world.CreateDevice(ReplayAsFastAsRead, def), "watchdog_s");
             def = FrustaDeviceDef.Default;
-            def.Hand = 1;
-            Fails(FrustaResult.OutOfRange, () => world.OpenDevice(ReplayAsFastAsRead, def), "hand is 1", "1 hands");
+            Fails(FrustaResult.NullId, () => world.CreateDevice(ReplayAsFastAsRead, def), "frusta_device_def.hand", "null");
+            def.Hand = world.Hands[0];
+            def.Hand.Index1 = 2;
+            Fails(FrustaResult.StaleId, () => world.CreateDevice(ReplayAsFastAsRead, def), "frusta_device_def.hand", "no hand of this world");
+            using (var hand = new Hand())
+            {
+                def.Hand = hand.Id;
+                Fails(FrustaResult.StaleId, () => world.CreateDevice(ReplayAsFastAsRead, def), "frusta_device_def.hand", "standalone");
+            }
             def = FrustaDeviceDef.Default;
+            def.Hand = world.Hands[0];
             def.SetCurlClosed(FrustaFinger.Index, 0, 0);
-            Fails(FrustaResult.OutOfRange, () => world.OpenDevice(ReplayAsFastAsRead, def), "curl_open and curl_closed");
-            Assert.Throws<ArgumentNullException>(() => world.OpenDevice(null));
+            Fails(FrustaResult.OutOfRange, () => world.CreateDevice(ReplayAsFastAsRead, def), "curl_open and curl_closed");
+            Assert.Throws<ArgumentNullException>(() => world.CreateDevice(null, world.Hands[0]));
 
             // nothing was opened: the host still drives the hand
-            world.SetHaptic(0, FrustaPose.Identity, new double[FrustaConstants.HandJointCount]);
+            world.SetHaptic(world.Hands[0], FrustaPose.Identity, new double[FrustaConstants.HandJointCount]);
         }
 
         [Fact]
@@ -162,9 +172,9 @@ namespace Frusta.Binding.Tests
             string[] frames = CsvFrames();
             double[] last = Numbers(frames[^1]);
             using World world = WorldWithHand(run: true);
-            using Device glove = world.OpenDevice(ReplayAsFastAsRead);
+            using Device glove = world.CreateDevice(ReplayAsFastAsRead, world.Hands[0]);
             Assert.Equal(ReplayAsFastAsRead, glove.Uri);
-            Assert.Equal(0, glove.Hand);
+            Assert.Equal(world.Hands[0], glove.Hand);
             Assert.Same(world, glove.World);
             Assert.False(glove.Id.IsNull);
             Assert.True(glove.IsValid);
@@ -202,7 +212,7 @@ namespace Frusta.Binding.Tests
 
             // the world's haptic hand took the recording's last sample: palm (1e-5 m steps on the wire)
             // and joint angles (1e-4 rad steps)
-            FrustaWorldHand h = HandAfterNextSteps(world, 0);
+            FrustaWorldHand h = HandAfterNextSteps(world, world.Hands[0]);
             Assert.True(h.Solved);
             Near(new Vector3d(last[1], last[2], last[3]), h.HapticPalm.Position, 1e-5, "haptic palm");
             SameRotation(new Quaterniond(last[4], last[5], last[6], last[7]), h.HapticPalm.Rotation, 1e-8, "haptic palm rotation");
@@ -226,12 +236,12 @@ namespace Frusta.Binding.Tests
         {
             using World world = WorldWithHand(run: true);
             var angles = new double[FrustaConstants.HandJointCount];
-            world.SetHaptic(0, FrustaPose.Identity, angles);
-            Device glove = world.OpenDevice(ReplayAsFastAsRead);
+            world.SetHaptic(world.Hands[0], FrustaPose.Identity, angles);
+            Device glove = world.CreateDevice(ReplayAsFastAsRead, world.Hands[0]);
             FrustaDeviceId first = glove.Id;
 
-            Fails(FrustaResult.WrongState, () => world.SetHaptic(0, FrustaPose.Identity, angles), "glove");
-            Fails(FrustaResult.WrongState, () => world.OpenDevice(ReplayAsFastAsRead), "hand 0 already has a glove");
+            Fails(FrustaResult.WrongState, () => world.SetHaptic(world.Hands[0], FrustaPose.Identity, angles), "glove");
+            Fails(FrustaResult.WrongState, () => world.CreateDevice(ReplayAsFastAsRead, world.Hands[0]), "hand 0 already has a glove");
             Assert.True(glove.IsValid);
 
             glove.Dispose();
@@ -241,10 +251,10 @@ namespace Frusta.Binding.Tests
             Assert.False(glove.Poll());
             Assert.Throws<ObjectDisposedException>(() => glove.Status);
             Assert.Throws<ObjectDisposedException>(() => glove.SetPalmPose(FrustaPose.Identity));
-            world.SetHaptic(0, FrustaPose.Identity, angles);
+            world.SetHaptic(world.Hands[0], FrustaPose.Identity, angles);
 
             // the hand takes a glove again, under a new id; the old one stays stale
-            using Device again = world.OpenDevice(ReplayAsFastAsRead);
+            using Device again = world.CreateDevice(ReplayAsFastAsRead, world.Hands[0]);
             Assert.NotEqual(first, again.Id);
             Assert.True(again.IsValid);
             Assert.Equal(0, Native.frusta_device_is_valid(first));
@@ -254,7 +264,7 @@ namespace Frusta.Binding.Tests
         public void DisposingTheWorldClosesItsGloves()
         {
             World world = WorldWithHand(run: true);
-            using Device glove = world.OpenDevice(ReplayAsFastAsRead + "&loop=1");
+            using Device glove = world.CreateDevice(ReplayAsFastAsRead + "&loop=1", world.Hands[0]);
             FrustaDeviceId id = glove.Id;
             var closed = new List<(FrustaDeviceState, FrustaDeviceState)>();
             glove.StateChanged += (_, e) => closed.Add((e.OldState, e.NewState));
@@ -285,7 +295,7 @@ namespace Frusta.Binding.Tests
         public void APalmPoseIsCheckedAndTakenWhileOpen()
         {
             using World world = WorldWithHand(run: false);
-            using Device glove = world.OpenDevice(ReplayAsFastAsRead);
+            using Device glove = world.CreateDevice(ReplayAsFastAsRead, world.Hands[0]);
             glove.SetPalmPose(new FrustaPose(new Vector3d(0.1, 0.2, 0.3), Quaterniond.Identity));
             Fails(FrustaResult.NotFinite, () => glove.SetPalmPose(new FrustaPose(new Vector3d(double.NaN, 0, 0), Quaterniond.Identity)), "palm");
             var zero = new FrustaPose(Vector3d.Zero, new Quaterniond(0, 0, 0, 0));
@@ -302,7 +312,7 @@ namespace Frusta.Binding.Tests
             // timed from before the open: frame i is due i/100 s after the open, never sooner.
             // Looped, so that on a busy machine the wait below may last its whole deadline.
             var clock = Stopwatch.StartNew();
-            using Device glove = world.OpenDevice($"replay:{Recording}?speed=1&loop=1");
+            using Device glove = world.CreateDevice($"replay:{Recording}?speed=1&loop=1", world.Hands[0]);
             FrustaDeviceStatus flowing = default;
             bool sawFlowing = false;
             double tookSeconds = 0;
@@ -348,7 +358,7 @@ namespace Frusta.Binding.Tests
         public void AFrameOfPollingAllocatesNothing()
         {
             using World world = WorldWithHand(run: true);
-            using Device glove = world.OpenDevice(ReplayAsFastAsRead);
+            using Device glove = world.CreateDevice(ReplayAsFastAsRead, world.Hands[0]);
             int changes = 0;
             glove.StateChanged += (_, e) => ++changes;
             glove.WatchdogChanged += (_, e) => ++changes;

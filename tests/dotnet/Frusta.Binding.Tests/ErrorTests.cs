@@ -33,7 +33,7 @@ namespace Frusta.Binding.Tests
             objectDef.internal_value = 0;
             using var world = new World();
             using var tree = Box.Bake();
-            Fails(FrustaResult.DefNotDefaulted, () => world.AddObject(tree, objectDef), "internal_value");
+            Fails(FrustaResult.DefNotDefaulted, () => world.CreateObject(tree, objectDef), "internal_value");
             FrustaWorldDef drifted = FrustaWorldDef.Default;
             drifted.struct_size -= 8; // what a drifted mirror would send
             Fails(FrustaResult.StructSize, () => new World(drifted), "frusta_world_def");
@@ -46,20 +46,20 @@ namespace Frusta.Binding.Tests
             using var tree = Box.Bake();
             FrustaObjectDef def = FrustaObjectDef.Default;
             def.Friction = -0.1;
-            Fails(FrustaResult.OutOfRange, () => world.AddObject(tree, def), "friction", "-0.1");
+            Fails(FrustaResult.OutOfRange, () => world.CreateObject(tree, def), "friction", "-0.1");
             def = FrustaObjectDef.Default;
             def.Mass = 0;
-            Fails(FrustaResult.OutOfRange, () => world.AddObject(tree, def), "mass");
+            Fails(FrustaResult.OutOfRange, () => world.CreateObject(tree, def), "mass");
             def = FrustaObjectDef.Default;
             def.Pose.Rotation = new Quaterniond(0, 0, 0, 3);
-            Fails(FrustaResult.OutOfRange, () => world.AddObject(tree, def), "pose.rotation", "norm 3");
+            Fails(FrustaResult.OutOfRange, () => world.CreateObject(tree, def), "pose.rotation", "norm 3");
 
             FrustaHandDef hand = FrustaHandDef.Default;
             hand.SetJointRadius(FrustaFinger.Middle, 1, -0.01);
-            Fails(FrustaResult.OutOfRange, () => world.AddHand(hand), "joint_radius[2][1]", "-0.01");
+            Fails(FrustaResult.OutOfRange, () => world.CreateHand(hand), "joint_radius[2][1]", "-0.01");
             hand = FrustaHandDef.Default;
             hand.Side = (FrustaHandSide)7;
-            Fails(FrustaResult.OutOfRange, () => world.AddHand(hand), "side", "7");
+            Fails(FrustaResult.OutOfRange, () => world.CreateHand(hand), "side", "7");
             hand = FrustaHandDef.Default;
             Fails(FrustaResult.NotFinite, () => hand.SetSize(double.NaN, 0.085), "nan");
             Assert.Equal(0.19, hand.HandLength); // unchanged on error
@@ -75,11 +75,15 @@ namespace Frusta.Binding.Tests
         public void BadHapticInputIsRefusedAndLeavesTheHandAlone()
         {
             using var world = new World();
-            int hand = world.AddHand(FrustaHandDef.Default);
+            FrustaHandId hand = world.CreateHand(FrustaHandDef.Default);
             var angles = new double[20];
             var palm = FrustaPose.Identity;
             Fails(FrustaResult.OutOfRange, () => world.SetHaptic(hand, palm, new double[19]), "count", "19");
-            Fails(FrustaResult.OutOfRange, () => world.SetHaptic(1, palm, angles), "hand", "1");
+            var second = hand;
+            second.Index1 = 2;
+            Fails(FrustaResult.StaleId, () => world.SetHaptic(second, palm, angles), "hand id", "no hand of this world");
+            using (var standalone = new Hand())
+                Fails(FrustaResult.StaleId, () => world.SetHaptic(standalone.Id, palm, angles), "standalone");
             angles[7] = double.PositiveInfinity;
             Fails(FrustaResult.NotFinite, () => world.SetHaptic(hand, palm, angles), "angles[7]", "inf");
             angles[7] = 0;
@@ -94,9 +98,16 @@ namespace Frusta.Binding.Tests
             FrustaObjectId removed;
             using (var world = new World())
             {
-                removed = world.AddObject(tree, FrustaObjectDef.Default);
-                world.RemoveObject(removed);
-                Fails(FrustaResult.StaleId, () => world.RemoveObject(removed), "names no object");
+                removed = world.CreateObject(tree, FrustaObjectDef.Default);
+                world.DestroyObject(removed);
+                Fails(FrustaResult.StaleId, () => world.DestroyObject(removed), "names no object");
+                using (var other = new World())
+                {
+                    // the id names its world: another World refuses to destroy it
+                    FrustaObjectId kept = world.CreateObject(tree, FrustaObjectDef.Default);
+                    Fails(FrustaResult.StaleId, () => other.DestroyObject(kept), "another world");
+                    world.DestroyObject(kept);
+                }
                 Fails(FrustaResult.NullId, () => world.SetObjectDynamic(FrustaObjectId.Null, true), "null");
                 var forged = removed;
                 forged.World0 = 0;
@@ -113,13 +124,16 @@ namespace Frusta.Binding.Tests
         public void ReadsBeforeAnyReadAreWrongState()
         {
             using var world = new World();
-            int hand = world.AddHand(FrustaHandDef.Default);
+            FrustaHandId hand = world.CreateHand(FrustaHandDef.Default);
             world.Step();
             var h = new FrustaWorldHand();
             Fails(FrustaResult.WrongState, () => world.GetHand(hand, ref h), "frusta_world_read");
             var state = new FrustaWorldState();
             world.Read(ref state);
-            Fails(FrustaResult.OutOfRange, () => world.GetHand(3, ref h), "hand", "3");
+            var fourth = hand;
+            fourth.Index1 = 4;
+            Fails(FrustaResult.StaleId, () => world.GetHand(fourth, ref h), "hand id", "no hand of this world");
+            Fails(FrustaResult.NullId, () => world.GetHand(FrustaHandId.Null, ref h), "null");
             world.GetHand(hand, ref h);
             Assert.False(h.Solved);
             Assert.Equal(0, world.GetContactCount(hand));
@@ -174,7 +188,7 @@ namespace Frusta.Binding.Tests
             Assert.Throws<ArgumentException>(() => SphereTree.Load("a\0b"));
             Assert.Throws<ArgumentException>(() => SphereTree.Bake(new float[4], Box.Triangles));
             using var world = new World();
-            Assert.Throws<ArgumentNullException>(() => world.AddObject(null, FrustaObjectDef.Default));
+            Assert.Throws<ArgumentNullException>(() => world.CreateObject(null, FrustaObjectDef.Default));
             Assert.Throws<ArgumentOutOfRangeException>(() => FrustaHandDef.Default.GetJointRadius(FrustaFinger.Index, 4));
         }
 

@@ -131,7 +131,7 @@ namespace Frusta.Binding.Tests
             Assert.Equal(56, FrustaBakeDef.Default.struct_size);
             Assert.Equal(128, FrustaWorldDef.Default.struct_size);
             Assert.Equal(224, FrustaObjectDef.Default.struct_size);
-            Assert.Equal(720, FrustaDeviceDef.Default.struct_size);
+            Assert.Equal(728, FrustaDeviceDef.Default.struct_size);
             Assert.NotEqual(0, FrustaWorldDef.Default.internal_value);
             Assert.NotEqual(0, FrustaObjectDef.Default.internal_value);
             Assert.NotEqual(0, FrustaDeviceDef.Default.internal_value);
@@ -187,7 +187,7 @@ namespace Frusta.Binding.Tests
             FrustaLibrary.EnsureCompatible();
             Assert.Equal(FrustaConstants.AbiVersion, FrustaLibrary.AbiVersion);
             Assert.Equal(FrustaConstants.Version, FrustaLibrary.Version);
-            Assert.Equal("0.3.0", FrustaLibrary.VersionString);
+            Assert.Equal("0.4.0", FrustaLibrary.VersionString);
             Assert.Equal("FRUSTA_ERROR_STALE_ID", FrustaLibrary.GetResultName(FrustaResult.StaleId));
             Assert.Equal(0, FrustaLibrary.GetNativeStructSize("frusta_no_such_struct"));
         }

@@ -17,13 +17,13 @@ namespace Frusta.Binding.Tests
         {
             using var tree = SphereTree.Load(TestEnv.SampleObject("ball"));
             using var world = new World();
-            int right = world.AddHand(FrustaHandDef.Default);
+            FrustaHandId right = world.CreateHand(FrustaHandDef.Default);
             FrustaHandDef leftDef = FrustaHandDef.Default;
             leftDef.Side = FrustaHandSide.Left;
-            int left = world.AddHand(leftDef);
+            FrustaHandId left = world.CreateHand(leftDef);
             FrustaObjectDef ball = FrustaObjectDef.Default;
             ball.Pose.Position = new Vector3d(0.15, 0.0, -0.04);
-            world.AddObject(tree, ball);
+            world.CreateObject(tree, ball);
             var angles = new double[20];
             var palm = FrustaPose.Identity;
             world.SetHaptic(right, palm, angles);
@@ -110,7 +110,7 @@ namespace Frusta.Binding.Tests
         public void DisposeWaitsForAReaderInFlightAndThenRefusesIt()
         {
             var world = new World();
-            world.AddHand(FrustaHandDef.Default);
+            world.CreateHand(FrustaHandDef.Default);
             world.Start();
             var snapshot = world.CreateSnapshot();
             Exception end = null;

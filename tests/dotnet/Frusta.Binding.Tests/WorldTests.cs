@@ -48,10 +48,13 @@ namespace Frusta.Binding.Tests
             Assert.True(info.TargetMet);
 
             using var world = new World();
-            int hand = world.AddHand(FrustaHandDef.Default);
-            Assert.Equal(0, hand);
+            FrustaHandId hand = world.CreateHand(FrustaHandDef.Default);
+            Assert.Equal(1, hand.Index1);
+            Assert.NotEqual(0, hand.World0);
+            Assert.Equal(hand, world.Hands[0]);
+            Assert.Equal(1, Native.frusta_hand_is_valid(hand));
             FrustaObjectDef boxDef = BoxUnderTip(tip);
-            FrustaObjectId boxId = world.AddObject(box, boxDef);
+            FrustaObjectId boxId = world.CreateObject(box, boxDef);
             Assert.False(boxId.IsNull);
 
             // the haptic hand 3 mm below the surface, 50 steps
@@ -142,10 +145,10 @@ namespace Frusta.Binding.Tests
             using var world = new World(def);
             FrustaObjectDef objectDef = FrustaObjectDef.Default;
             objectDef.Dynamic = true;
-            FrustaObjectId falling = world.AddObject(tree, objectDef);
+            FrustaObjectId falling = world.CreateObject(tree, objectDef);
             objectDef.Dynamic = false;
             objectDef.Pose.Position = new Vector3d(1, 0, 0);
-            FrustaObjectId still = world.AddObject(tree, objectDef);
+            FrustaObjectId still = world.CreateObject(tree, objectDef);
 
             // semi-implicit Euler at 1 kHz; after n steps the box was integrated n - 1 times
             const int n = 100;
@@ -179,7 +182,7 @@ namespace Frusta.Binding.Tests
         {
             using var tree = Box.Bake();
             using var world = new World();
-            FrustaObjectId id = world.AddObject(tree, FrustaObjectDef.Default);
+            FrustaObjectId id = world.CreateObject(tree, FrustaObjectDef.Default);
             world.Step();
             var state = new FrustaWorldState();
             world.Read(ref state);
@@ -196,7 +199,7 @@ namespace Frusta.Binding.Tests
             Near(moved.Position, o.Pose.Position, 1e-15, "moved");
             SameRotation(moved.Rotation, o.Pose.Rotation, 1e-15, "turned");
 
-            world.RemoveObject(id);
+            world.DestroyObject(id);
             Fails(FrustaResult.StaleId, () => world.SetObjectPose(id, moved), "names no object");
             world.Step();
             world.Read(ref state);
@@ -211,11 +214,11 @@ namespace Frusta.Binding.Tests
         {
             using var tree = Box.Bake();
             using var world = new World();
-            int hand = world.AddHand(FrustaHandDef.Default);
+            FrustaHandId hand = world.CreateHand(FrustaHandDef.Default);
             FrustaSegment tip = IndexTip();
             FrustaObjectDef def = FrustaObjectDef.Default;
             def.Pose.Position = new Vector3d(tip.Distal.X + Box.Half - 0.005, tip.Distal.Y, tip.Distal.Z - (tip.DistalRadius + Box.Half));
-            world.AddObject(tree, def);
+            world.CreateObject(tree, def);
             var angles = new double[20];
             world.SetHaptic(hand, Lowered(0.002), angles);
 
@@ -224,7 +227,7 @@ namespace Frusta.Binding.Tests
             Assert.True(world.IsRunning);
             Fails(FrustaResult.WrongState, () => world.Start(), "already running");
             Fails(FrustaResult.WrongState, () => world.Step(), "own thread");
-            Fails(FrustaResult.WrongState, () => world.AddHand(FrustaHandDef.Default), "first step");
+            Fails(FrustaResult.WrongState, () => world.CreateHand(FrustaHandDef.Default), "first step");
 
             var state = new FrustaWorldState();
             Waiting.Until(() =>
@@ -288,7 +291,7 @@ namespace Frusta.Binding.Tests
         {
             using var world = new World();
             var tree = Box.Bake();
-            FrustaObjectId id = world.AddObject(tree, FrustaObjectDef.Default);
+            FrustaObjectId id = world.CreateObject(tree, FrustaObjectDef.Default);
             tree.Dispose();
             world.Step(3);
             var state = new FrustaWorldState();
@@ -304,8 +307,8 @@ namespace Frusta.Binding.Tests
         {
             using var tree = SphereTree.Load(TestEnv.SampleObject("box"));
             using var world = new World();
-            int hand = world.AddHand(FrustaHandDef.Default);
-            FrustaObjectId box = world.AddObject(tree, BoxUnderTip(IndexTip()));
+            FrustaHandId hand = world.CreateHand(FrustaHandDef.Default);
+            FrustaObjectId box = world.CreateObject(tree, BoxUnderTip(IndexTip()));
             var angles = new double[20];
             var palm = Lowered(0.003);
             var state = new FrustaWorldState();
@@ -328,7 +331,7 @@ namespace Frusta.Binding.Tests
             for (int i = 0; i < 100; ++i) Frame();
             long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
             Assert.True(allocated == 0, $"{allocated} bytes allocated over 100 frames");
-            Assert.True(snapshot.GetContacts(hand).Length > 0);
+            Assert.True(snapshot.GetContacts(0).Length > 0);
         }
     }
 }

@@ -22,7 +22,7 @@ const int32_t kIndices[] = {0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4
 frusta_result bake_cube(frusta_tree_id* tree) {
   frusta_bake_def def = frusta_default_bake_def();
   def.error_samples = 20000;
-  return frusta_bake_sphere_tree(kVertices, 8, kIndices, 36, &def, tree);
+  return frusta_create_sphere_tree_from_mesh(kVertices, 8, kIndices, 36, &def, tree);
 }
 
 TEST(capiBakePlugin, BakesThroughTheBakerBesideTheProgram) {
@@ -38,7 +38,8 @@ TEST(capiBakePlugin, BakesThroughTheBakerBesideTheProgram) {
   // the baker's own errors come back with their message
   frusta_bake_def def = frusta_default_bake_def();
   const int32_t bad[] = {0, 1, 9};
-  EXPECT_EQ(frusta_bake_sphere_tree(kVertices, 8, bad, 3, &def, &tree), FRUSTA_ERROR_OUT_OF_RANGE);
+  EXPECT_EQ(frusta_create_sphere_tree_from_mesh(kVertices, 8, bad, 3, &def, &tree),
+            FRUSTA_ERROR_OUT_OF_RANGE);
   EXPECT_NE(std::string(frusta_last_error()).find("indices[2] is 9"), std::string::npos)
       << frusta_last_error();
 }

@@ -19,16 +19,17 @@ TEST_F(DeviceApiTest, ABinaryProfileGloveOnACOMPortDrivesItsHand) {
   const char* port = std::getenv("FRUSTA_TEST_COM_PORT");
   if (port == nullptr)
     GTEST_SKIP() << "no FRUSTA_TEST_COM_PORT: tools/test sets COM42 with a glove behind it";
-  const frusta_device_def def = frusta_default_device_def();
+  const frusta_device_def def = device_def();
   frusta_device_id device{};
   const std::string uri = std::string("serial:") + port + "?baud=921600";
-  ASSERT_EQ(frusta_world_open_device(world_, uri.c_str(), &def, &device), FRUSTA_OK) << frusta_last_error();
+  ASSERT_EQ(frusta_create_device(world_, uri.c_str(), &def, &device), FRUSTA_OK)
+      << frusta_last_error();
   ASSERT_TRUE(run_until([&] { return status(device).frames_ok > 100; }, 5.0))
       << "frames taken: " << status(device).frames_ok;
 
   frusta_world_hand hand{};
   hand.struct_size = sizeof hand;
-  ASSERT_EQ(frusta_world_get_hand(world_, 0, &hand), FRUSTA_OK);
+  ASSERT_EQ(frusta_world_get_hand(world_, hand_, &hand), FRUSTA_OK);
   EXPECT_NEAR(hand.haptic_angles[spec::kIndexFlexion1], spec::kIndexFlexion,
               0.5 * binary_profile::kAngleUnit);
   const frusta_device_status before = status(device);
@@ -45,7 +46,7 @@ TEST_F(DeviceApiTest, ABinaryProfileGloveOnACOMPortDrivesItsHand) {
   EXPECT_EQ(after.frames_corrupt + after.frames_truncated + after.frames_out_of_range, 0);
   EXPECT_EQ(after.disconnects, 0);
   EXPECT_EQ(after.watchdog, FRUSTA_WATCHDOG_NONE);
-  EXPECT_EQ(frusta_device_close(device), FRUSTA_OK);
+  EXPECT_EQ(frusta_destroy_device(device), FRUSTA_OK);
 }
 
 }  // namespace

@@ -26,7 +26,7 @@ using testing::ScopedHand;
 // suite names start with "capi" so that `ctest -R capi` selects them
 using capiHand = testing::CapiTest;
 
-constexpr int kJacobianSize = 3 * (FRUSTA_JOINTS_PER_FINGER + FRUSTA_PALM_DOF);
+constexpr int kJacobianSize = FRUSTA_POINT_JACOBIAN_LENGTH;
 using Segments = std::array<frusta_segment, FRUSTA_HAND_SEGMENT_COUNT>;
 using Angles = std::array<double, FRUSTA_HAND_JOINT_COUNT>;
 
@@ -69,9 +69,24 @@ Segments segments_of(frusta_hand_id hand) {
   return s;
 }
 
+// The whole Jacobian (its count checked) and the point.
+frusta_result point_jacobian_of(frusta_hand_id hand, int finger, int segment, const double local[3],
+                                double* point, double* jacobian) {
+  int32_t count = 0;
+  const frusta_result r = frusta_hand_point_jacobian(hand, finger, segment, local, point, jacobian,
+                                                     kJacobianSize, &count);
+  if (r == FRUSTA_OK) {
+    EXPECT_EQ(count, kJacobianSize);
+  }
+  return r;
+}
+
 Angles angles_of(frusta_hand_id hand) {
   Angles a{};
-  EXPECT_EQ(frusta_hand_get_joint_angles(hand, a.data(), FRUSTA_HAND_JOINT_COUNT), FRUSTA_OK);
+  int32_t count = 0;
+  EXPECT_EQ(frusta_hand_get_joint_angles(hand, a.data(), FRUSTA_HAND_JOINT_COUNT, &count),
+            FRUSTA_OK);
+  EXPECT_EQ(count, FRUSTA_HAND_JOINT_COUNT);
   return a;
 }
 
@@ -165,8 +180,7 @@ TEST_F(capiHand, SegmentsEqualInternalForwardKinematics) {
       const double local[3] = {0.01, 0.002, -0.004};
       const int f = trial % FRUSTA_FINGER_COUNT, s = trial % FRUSTA_SEGMENTS_PER_FINGER;
       double point[3], jacobian[kJacobianSize];
-      ASSERT_EQ(frusta_hand_point_jacobian(hand.get(), f, s, local, point, jacobian, kJacobianSize),
-                FRUSTA_OK);
+      ASSERT_EQ(point_jacobian_of(hand.get(), f, s, local, point, jacobian), FRUSTA_OK);
       const vec3 want_point = segment_point(ref.pose, f, s, v(local));
       expect_vec_near(point, want_point, 1e-14, "jacobian point");
       double want_jacobian[kJacobianSize];
@@ -345,10 +359,8 @@ TEST_F(capiHand, LeftHandIsTheRightMirroredThroughThePalmXZPlane) {
     const int f = trial % FRUSTA_FINGER_COUNT, s = trial % FRUSTA_SEGMENTS_PER_FINGER;
     const double local[3] = {0.005, 0.0, 0.004};
     double rp[3], lp[3], rj[kJacobianSize], lj[kJacobianSize];
-    ASSERT_EQ(frusta_hand_point_jacobian(right.get(), f, s, local, rp, rj, kJacobianSize),
-              FRUSTA_OK);
-    ASSERT_EQ(frusta_hand_point_jacobian(left.get(), f, s, local, lp, lj, kJacobianSize),
-              FRUSTA_OK);
+    ASSERT_EQ(point_jacobian_of(right.get(), f, s, local, rp, rj), FRUSTA_OK);
+    ASSERT_EQ(point_jacobian_of(left.get(), f, s, local, lp, lj), FRUSTA_OK);
     expect_vec_near(lp, v(rp) * vec3(1.0, -1.0, 1.0), 1e-15, "dorsal point");
     for (int row = 0; row < 3; ++row)
       for (int col = 0; col < FRUSTA_JOINTS_PER_FINGER; ++col) {
@@ -398,16 +410,12 @@ TEST_F(capiHand, PointJacobianMatchesFiniteDifferences) {
         EXPECT_EQ(frusta_hand_set_palm_pose(hand.get(), &p), FRUSTA_OK);
         EXPECT_EQ(frusta_hand_set_joint_angles(hand.get(), a.data(), FRUSTA_HAND_JOINT_COUNT),
                   FRUSTA_OK);
-        EXPECT_EQ(
-            frusta_hand_point_jacobian(hand.get(), f, s, local, point, jacobian, kJacobianSize),
-            FRUSTA_OK);
+        EXPECT_EQ(point_jacobian_of(hand.get(), f, s, local, point, jacobian), FRUSTA_OK);
         return v(point);
       };
       point_at(angles, palm);
       double jacobian[kJacobianSize];
-      ASSERT_EQ(
-          frusta_hand_point_jacobian(hand.get(), f, s, local, nullptr, jacobian, kJacobianSize),
-          FRUSTA_OK);
+      ASSERT_EQ(point_jacobian_of(hand.get(), f, s, local, nullptr, jacobian), FRUSTA_OK);
       for (int col = 0; col < 10; ++col) {
         Angles ap = angles, am = angles;
         frusta_pose pp = palm, pm = palm;

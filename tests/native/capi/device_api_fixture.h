@@ -18,8 +18,7 @@ class DeviceApiTest : public CapiTest {
     const frusta_world_def def = frusta_default_world_def();
     ASSERT_EQ(frusta_create_world(&def, &world_), FRUSTA_OK) << frusta_last_error();
     const frusta_hand_def hand = frusta_default_hand_def();
-    int32_t index = -1;
-    ASSERT_EQ(frusta_world_add_hand(world_, &hand, &index), FRUSTA_OK);
+    ASSERT_EQ(frusta_create_world_hand(world_, &hand, &hand_), FRUSTA_OK);
   }
   void TearDown() override {
     if (frusta_world_is_valid(world_)) {
@@ -42,6 +41,13 @@ class DeviceApiTest : public CapiTest {
     return false;
   }
 
+  // the defaults, driving the world's hand
+  frusta_device_def device_def() const {
+    frusta_device_def def = frusta_default_device_def();
+    def.hand = hand_;
+    return def;
+  }
+
   frusta_device_status status(frusta_device_id device) {
     frusta_device_status s{};
     s.struct_size = sizeof s;
@@ -50,6 +56,7 @@ class DeviceApiTest : public CapiTest {
   }
 
   frusta_world_id world_{};
+  frusta_hand_id hand_{};
 };
 
 }  // namespace frusta::testing

@@ -76,7 +76,8 @@ TEST(BakeLimits, TheCAbiRefusesEveryParameterOutsideItsRange) {
     c.edit(&def);
     const frusta_tree_id sentinel{77, 0, 5};
     frusta_tree_id tree = sentinel;
-    EXPECT_EQ(frusta_bake_sphere_tree(kVertices, 8, kIndices, 36, &def, &tree), c.code) << c.field;
+    EXPECT_EQ(frusta_create_sphere_tree_from_mesh(kVertices, 8, kIndices, 36, &def, &tree), c.code)
+        << c.field;
     EXPECT_NE(std::string(frusta_last_error()).find(c.field), std::string::npos)
         << frusta_last_error();
     expect_code_once(c.code);
@@ -91,7 +92,8 @@ TEST(BakeLimits, TheEdgesOfTheRangesBake) {
     def.error_samples = kMinErrorSamples;
     def.seed = std::numeric_limits<uint64_t>::max();
     frusta_tree_id tree{};
-    ASSERT_EQ(frusta_bake_sphere_tree(kVertices, 8, kIndices, 36, &def, &tree), FRUSTA_OK)
+    ASSERT_EQ(frusta_create_sphere_tree_from_mesh(kVertices, 8, kIndices, 36, &def, &tree),
+              FRUSTA_OK)
         << target << ": " << frusta_last_error();
     frusta_sphere_tree_info info{};
     info.struct_size = sizeof info;
@@ -106,13 +108,14 @@ TEST(BakeLimits, TheEdgesOfTheRangesBake) {
 TEST(BakeLimits, TheBakerLibrarysMessagesSayTheirCodeOnce) {
   frusta_bake_def def = frusta_default_bake_def();
   frusta_tree_id tree{};
-  EXPECT_EQ(frusta_bake_sphere_tree(nullptr, 8, kIndices, 36, &def, &tree),
+  EXPECT_EQ(frusta_create_sphere_tree_from_mesh(nullptr, 8, kIndices, 36, &def, &tree),
             FRUSTA_ERROR_NULL_POINTER);
   EXPECT_NE(std::string(frusta_last_error()).find("vertices"), std::string::npos)
       << frusta_last_error();
   expect_code_once(FRUSTA_ERROR_NULL_POINTER);
   const int32_t bad[] = {0, 1, 9};
-  EXPECT_EQ(frusta_bake_sphere_tree(kVertices, 8, bad, 3, &def, &tree), FRUSTA_ERROR_OUT_OF_RANGE);
+  EXPECT_EQ(frusta_create_sphere_tree_from_mesh(kVertices, 8, bad, 3, &def, &tree),
+            FRUSTA_ERROR_OUT_OF_RANGE);
   EXPECT_NE(std::string(frusta_last_error()).find("indices[2] is 9"), std::string::npos);
   expect_code_once(FRUSTA_ERROR_OUT_OF_RANGE);
 }

@@ -7,8 +7,6 @@ namespace Frusta.Binding
     {
         /// <summary>The body index of the palm in <see cref="FrustaWorldContact.Body"/> (15).</summary>
         public const int PalmBody = HandSegmentCount;
-        /// <summary>Doubles in one point Jacobian: 3 rows x (4 joints + 6 palm DOF) = 30.</summary>
-        public const int PointJacobianLength = 3 * (JointsPerFinger + PalmDof);
         /// <summary>Flexion joints per finger a glove calibration maps (3): first, second, third.</summary>
         public const int FlexionJointsPerFinger = 3;
         /// <summary>Bytes of <see cref="FrustaDeviceInfo.Uri"/> in UTF-8, its NUL included (256).</summary>

@@ -5,7 +5,7 @@ namespace Frusta.Binding
 {
     /// <summary>
     /// A force-feedback glove driving one hand of a <see cref="World"/>, from
-    /// <see cref="World.OpenDevice(string, in FrustaDeviceDef)"/>. The glove runs on a native thread
+    /// <see cref="World.CreateDevice(string, in FrustaDeviceDef)"/>. The glove runs on a native thread
     /// of its own: it feeds the glove's samples to the hand and sends the glove the world's outputs,
     /// cut to its limits and held at zero whenever a watchdog trips (no sample, no step, no
     /// <see cref="World.Read"/>, or a disconnect). No C# runs on that thread and no delegate is
@@ -30,7 +30,7 @@ namespace Frusta.Binding
         FrustaDeviceState state = FrustaDeviceState.Connected;
         FrustaWatchdogReason watchdog = FrustaWatchdogReason.None;
 
-        internal Device(World world, DeviceHandle handle, string uri, int hand)
+        internal Device(World world, DeviceHandle handle, string uri, FrustaHandId hand)
         {
             World = world;
             this.handle = handle;
@@ -45,7 +45,7 @@ namespace Frusta.Binding
         public string Uri { get; }
 
         /// <summary>The world's hand the glove drives (the def's <see cref="FrustaDeviceDef.Hand"/>).</summary>
-        public int Hand { get; }
+        public FrustaHandId Hand { get; }
 
         /// <summary>The world the glove drives a hand of.</summary>
         public World World { get; }
@@ -194,14 +194,13 @@ namespace Frusta.Binding
         public static int Enumerate(Span<FrustaDeviceInfo> destination)
         {
             FrustaLibrary.EnsureCompatible();
-            for (int i = 0; i < destination.Length; ++i) destination[i].struct_size = sizeof(FrustaDeviceInfo);
             int count;
             fixed (FrustaDeviceInfo* p = destination)
                 Errors.Check(Native.frusta_enumerate_devices(p, destination.Length, &count), "frusta_enumerate_devices");
             return count;
         }
 
-        /// <summary>Send the glove a zero command, stop its thread and close it (<c>frusta_device_close</c>);
+        /// <summary>Send the glove a zero command, stop its thread and close it (<c>frusta_destroy_device</c>);
         /// the hand takes <see cref="World.SetHaptic"/> again. Raises no event. Safe to call twice, and
         /// after the world was disposed (which closed the glove already). Thread: host.</summary>
         public void Dispose() => handle.Dispose();

@@ -43,7 +43,7 @@ namespace Frusta.Binding
             }
         }
 
-        /// <summary>The library's version as "major.minor.patch", e.g. "0.3.0". Thread: any.</summary>
+        /// <summary>The library's version as "major.minor.patch", e.g. "0.4.0". Thread: any.</summary>
         public static string VersionString
         {
             get

@@ -5,8 +5,9 @@ namespace Frusta.Binding
 {
     /// <summary>
     /// A standalone hand: its geometry at a pose and joint angles, for queries, previews and
-    /// gizmos outside a world (a world builds its own hands from defs: <see cref="World.AddHand"/>).
-    /// Thread: main (the native side serialises creation and destruction).
+    /// gizmos outside a world (a world creates its own hands from defs: <see cref="World.CreateHand"/>).
+    /// Thread: the creating thread, the hand's host (the native side serialises creation and
+    /// destruction).
     /// </summary>
     public sealed unsafe class Hand : IDisposable
     {
@@ -56,19 +57,24 @@ namespace Frusta.Binding
                 Errors.Check(Native.frusta_hand_set_joint_angles(handle.Id, a, angles.Length), "frusta_hand_set_joint_angles");
         }
 
-        /// <summary>Copy the (clamped) joint angles, radians (<c>frusta_hand_get_joint_angles</c>).</summary>
-        /// <param name="destination">At least 20 doubles.</param>
-        public void GetJointAngles(Span<double> destination)
+        /// <summary>Copy the (clamped) joint angles, radians, finger-major: the first
+        /// min(destination.Length, 20) (<c>frusta_hand_get_joint_angles</c>).</summary>
+        /// <param name="destination">Receives the angles; <see cref="FrustaConstants.HandJointCount"/> holds all.</param>
+        /// <returns>How many angles the hand has (20).</returns>
+        public int GetJointAngles(Span<double> destination)
         {
+            int count;
             using (new HandleUse(handle))
             fixed (double* a = destination)
-                Errors.Check(Native.frusta_hand_get_joint_angles(handle.Id, a, destination.Length), "frusta_hand_get_joint_angles");
+                Errors.Check(Native.frusta_hand_get_joint_angles(handle.Id, a, destination.Length, &count),
+                             "frusta_hand_get_joint_angles");
+            return count;
         }
 
         /// <summary>Copy every finger segment in world coordinates, finger-major (thumb first),
-        /// proximal to distal (<c>frusta_hand_get_segments</c>).</summary>
-        /// <param name="destination">At least <see cref="FrustaConstants.HandSegmentCount"/> segments.</param>
-        /// <returns>The number copied (15).</returns>
+        /// proximal to distal: the first min(destination.Length, 15) (<c>frusta_hand_get_segments</c>).</summary>
+        /// <param name="destination">Receives the segments; <see cref="FrustaConstants.HandSegmentCount"/> holds all.</param>
+        /// <returns>How many segments the hand has (15).</returns>
         public int GetSegments(Span<FrustaSegment> destination)
         {
             int count;
@@ -90,9 +96,10 @@ namespace Frusta.Binding
             }
         }
 
-        /// <summary>Copy the palm's spheres in world coordinates (<c>frusta_hand_get_palm_spheres</c>).</summary>
-        /// <param name="destination">At least <see cref="PalmSphereCount"/> spheres.</param>
-        /// <returns>The number copied.</returns>
+        /// <summary>Copy the palm's spheres in world coordinates: the first min(destination.Length, count)
+        /// (<c>frusta_hand_get_palm_spheres</c>).</summary>
+        /// <param name="destination">Receives the spheres; <see cref="PalmSphereCount"/> holds all.</param>
+        /// <returns>How many palm spheres the hand has.</returns>
         public int GetPalmSpheres(Span<FrustaSphere> destination)
         {
             int count;
@@ -110,15 +117,17 @@ namespace Frusta.Binding
         /// <param name="finger">The finger.</param>
         /// <param name="segment">0..2, proximal to distal.</param>
         /// <param name="localPoint">Metres in the segment frame: origin at the proximal joint, +x along the segment.</param>
-        /// <param name="jacobian">At least <see cref="FrustaConstants.PointJacobianLength"/> doubles.</param>
+        /// <param name="jacobian">Receives the first min(jacobian.Length, 30) entries;
+        /// <see cref="FrustaConstants.PointJacobianLength"/> holds all.</param>
         /// <returns>The point's world position, metres.</returns>
         public Vector3d GetPointJacobian(FrustaFinger finger, int segment, Vector3d localPoint, Span<double> jacobian)
         {
             Vector3d point = default;
+            int count;
             using (new HandleUse(handle))
             fixed (double* j = jacobian)
                 Errors.Check(Native.frusta_hand_point_jacobian(handle.Id, (int)finger, segment, &localPoint.X, &point.X, j,
-                                                               jacobian.Length), "frusta_hand_point_jacobian");
+                                                               jacobian.Length, &count), "frusta_hand_point_jacobian");
             return point;
         }
 

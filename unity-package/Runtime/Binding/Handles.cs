@@ -94,7 +94,7 @@ namespace Frusta.Binding
             }
             try
             {
-                Native.frusta_device_close(Id);
+                Native.frusta_destroy_device(Id);
             }
             finally
             {

@@ -26,7 +26,7 @@ namespace Frusta.Binding
         /// <summary>false once disposed or when the native tree is gone (<c>frusta_sphere_tree_is_valid</c>).</summary>
         public bool IsValid => !handle.IsClosed && Native.frusta_sphere_tree_is_valid(handle.Id) == 1;
 
-        /// <summary>Load a <c>.frtree</c> file (<c>frusta_load_sphere_tree</c>). Thread: any.</summary>
+        /// <summary>Load a <c>.frtree</c> file (<c>frusta_create_sphere_tree_from_file</c>). Thread: any.</summary>
         /// <param name="path">A file path (UTF-8 on the native side).</param>
         /// <returns>The tree; dispose it.</returns>
         /// <exception cref="FrustaException"><see cref="FrustaResult.Io"/> for a missing or unreadable file,
@@ -42,8 +42,8 @@ namespace Frusta.Binding
             Utf8.Encode(path, text, nameof(path));
             FrustaTreeId id;
             FrustaResult r;
-            fixed (byte* p = text) r = Native.frusta_load_sphere_tree(p, &id);
-            Errors.Check(r, "frusta_load_sphere_tree");
+            fixed (byte* p = text) r = Native.frusta_create_sphere_tree_from_file(p, &id);
+            Errors.Check(r, "frusta_create_sphere_tree_from_file");
             h.Own(id);
             return new SphereTree(h);
         }
@@ -57,7 +57,7 @@ namespace Frusta.Binding
             Bake(vertices, indices, FrustaBakeDef.Default);
 
         /// <summary>
-        /// Bake a tree from triangles (<c>frusta_bake_sphere_tree</c>). Blocks for the bake's
+        /// Bake a tree from triangles (<c>frusta_create_sphere_tree_from_mesh</c>). Blocks for the bake's
         /// duration (seconds for 10^5 triangles): call it off any frame loop. A tree that misses the
         /// target within MaxLeaves is still returned: check <see cref="FrustaSphereTreeInfo.TargetMet"/>.
         /// Thread: any; bakes on different threads run concurrently.
@@ -77,14 +77,14 @@ namespace Frusta.Binding
             fixed (float* v = vertices)
             fixed (int* i = indices)
             fixed (FrustaBakeDef* d = &def)
-                r = Native.frusta_bake_sphere_tree(v, vertices.Length / 3, i, indices.Length, d, &id);
-            Errors.Check(r, "frusta_bake_sphere_tree");
+                r = Native.frusta_create_sphere_tree_from_mesh(v, vertices.Length / 3, i, indices.Length, d, &id);
+            Errors.Check(r, "frusta_create_sphere_tree_from_mesh");
             h.Own(id);
             return new SphereTree(h);
         }
 
         /// <summary>Write the tree to <paramref name="path"/> atomically (a reader never sees half a
-        /// file; <c>frusta_save_sphere_tree</c>). Thread: any.</summary>
+        /// file; <c>frusta_sphere_tree_save</c>). Thread: any.</summary>
         /// <param name="path">A file path.</param>
         /// <exception cref="FrustaException"><see cref="FrustaResult.Io"/> when the file cannot be written.</exception>
         public void Save(string path)
@@ -95,7 +95,7 @@ namespace Frusta.Binding
             Utf8.Encode(path, text, nameof(path));
             using (new HandleUse(handle))
             fixed (byte* p = text)
-                Errors.Check(Native.frusta_save_sphere_tree(handle.Id, p), "frusta_save_sphere_tree");
+                Errors.Check(Native.frusta_sphere_tree_save(handle.Id, p), "frusta_sphere_tree_save");
         }
 
         /// <summary>What the tree holds and how well it fits its mesh (<c>frusta_sphere_tree_get_info</c>).
@@ -123,12 +123,10 @@ namespace Frusta.Binding
             }
         }
 
-        /// <summary>Copy the leaf spheres (object frame, metres) in their stable numbering
-        /// (<c>frusta_sphere_tree_get_leaves</c>). Thread: any.</summary>
-        /// <param name="destination">At least <see cref="LeafCount"/> spheres.</param>
-        /// <returns>The number copied.</returns>
-        /// <exception cref="FrustaException"><see cref="FrustaResult.Capacity"/> when destination is too small
-        /// (nothing is written then).</exception>
+        /// <summary>Copy the leaf spheres (object frame, metres) in their stable numbering: the first
+        /// min(destination.Length, <see cref="LeafCount"/>) (<c>frusta_sphere_tree_get_leaves</c>). Thread: any.</summary>
+        /// <param name="destination">Receives the leaves; <see cref="LeafCount"/> holds all.</param>
+        /// <returns>How many leaves the tree has, which exceeds destination.Length when it was short.</returns>
         public int GetLeaves(Span<FrustaSphere> destination)
         {
             int count;

@@ -303,7 +303,7 @@ namespace Frusta.Binding
         public double GetJointTorque(int joint) => joint_torque[Joint(joint)];
     }
 
-    /// <remarks>Filled by <see cref="World.GetContacts(int, Span{FrustaWorldContact})"/>.</remarks>
+    /// <remarks>Filled by <see cref="World.GetContacts(FrustaHandId, Span{FrustaWorldContact})"/>.</remarks>
     public partial struct FrustaWorldContact
     {
         /// <summary>true when friction is at mu |F| (sliding).</summary>
@@ -327,14 +327,15 @@ namespace Frusta.Binding
     }
 
     /// <remarks>From <see cref="Default"/>, then edited, then passed to
-    /// <see cref="World.OpenDevice(string, in FrustaDeviceDef)"/>. The OpenGloves calibration (raw
+    /// <see cref="World.CreateDevice(string, in FrustaDeviceDef)"/>. The OpenGloves calibration (raw
     /// readings to radians, newtons to brake units) is read only by <c>opengloves:</c> gloves;
     /// gloves that speak Frusta's binary profile send radians.</remarks>
     public unsafe partial struct FrustaDeviceDef
     {
         const int Flexions = FrustaConstants.FlexionJointsPerFinger;
 
-        /// <summary>The library's defaults (<c>frusta_default_device_def</c>): hand 0, the world's
+        /// <summary>The library's defaults (<c>frusta_default_device_def</c>): no hand (set
+        /// <see cref="Hand"/> to an id from <see cref="World.CreateHand"/>), the world's
         /// rate, the timeouts and limits above, and a calibration from a straight hand (raw 0, 0 rad)
         /// to a fist (raw 4095). Thread: any.</summary>
         public static FrustaDeviceDef Default

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 using System;
+using System.Collections.Generic;
 
 namespace Frusta.Binding
 {
@@ -14,8 +15,8 @@ namespace Frusta.Binding
     /// unless its documentation says otherwise; <see cref="SetHaptic"/> may come from one input
     /// thread per hand; <see cref="ReadSnapshot"/> from any thread. Dispose is safe twice and
     /// from any thread; it waits for calls in flight, then stops the own thread, closes the
-    /// world's gloves (<see cref="OpenDevice(string, in FrustaDeviceDef)"/>) and destroys the
-    /// world.</para>
+    /// world's gloves (<see cref="CreateDevice(string, in FrustaDeviceDef)"/>) and destroys the
+    /// world with its hands and objects.</para>
     /// </summary>
     public sealed unsafe class World : IDisposable
     {
@@ -24,7 +25,9 @@ namespace Frusta.Binding
         readonly object readGate = new object();
         readonly int maxContactsPerHand;
         volatile bool running;
-        int handCount;
+        // the world's hands in creation order; replaced whole, so readers on other threads
+        // see one list or the next
+        volatile FrustaHandId[] hands = new FrustaHandId[0];
 
         /// <summary>A world with the library's default parameters (1 kHz, no gravity).</summary>
         public World() : this(FrustaWorldDef.Default) { }
@@ -60,26 +63,33 @@ namespace Frusta.Binding
         /// <summary>The stepping rate from the def, Hz; a step advances time by 1/RateHz seconds.</summary>
         public double RateHz { get; }
 
-        /// <summary>Hands added so far.</summary>
-        public int HandCount => handCount;
+        /// <summary>Hands created so far.</summary>
+        public int HandCount => hands.Length;
+
+        /// <summary>The world's hands, in creation order (the order of <see cref="WorldSnapshot"/>'s hands).</summary>
+        public IReadOnlyList<FrustaHandId> Hands => hands;
 
         /// <summary>The most contacts a hand reports per step (the def's MaxContactsPerHand): a
         /// contact buffer this long is never too small.</summary>
         public int MaxContactsPerHand => maxContactsPerHand;
 
-        /// <summary>Add a hand built from <paramref name="def"/> (<c>frusta_world_add_hand</c>).
-        /// Only before the first step.</summary>
+        /// <summary>Create a hand in this world built from <paramref name="def"/>
+        /// (<c>frusta_create_world_hand</c>). Only before the first step; the hand lives as long as
+        /// the world.</summary>
         /// <param name="def">From <see cref="FrustaHandDef.Default"/>, then edited.</param>
-        /// <returns>The hand's index in this world: 0, 1, ...</returns>
+        /// <returns>The hand's id, which every call on the world's hands takes.</returns>
         /// <exception cref="FrustaException"><see cref="FrustaResult.WrongState"/> after the first step;
         /// a def value out of range.</exception>
-        public int AddHand(in FrustaHandDef def)
+        public FrustaHandId CreateHand(in FrustaHandDef def)
         {
-            int hand;
+            FrustaHandId hand;
             using (new HandleUse(handle))
             fixed (FrustaHandDef* d = &def)
-                Errors.Check(Native.frusta_world_add_hand(handle.Id, d, &hand), "frusta_world_add_hand");
-            handCount = hand + 1;
+                Errors.Check(Native.frusta_create_world_hand(handle.Id, d, &hand), "frusta_create_world_hand");
+            var grown = new FrustaHandId[hands.Length + 1];
+            Array.Copy(hands, grown, hands.Length);
+            grown[hands.Length] = hand;
+            hands = grown;
             return hand;
         }
 
@@ -88,12 +98,13 @@ namespace Frusta.Binding
         /// newest input wins and the next step uses it (<c>frusta_world_set_haptic</c>).
         /// Lock-free and allocation-free. Thread: one input thread per hand (or the host).
         /// </summary>
-        /// <param name="hand">The index from <see cref="AddHand"/>.</param>
+        /// <param name="hand">The id from <see cref="CreateHand"/>.</param>
         /// <param name="palm">Metres, world frame; quaternion norm in [0.5, 2].</param>
         /// <param name="angles">Exactly 20 radians, |angle| &lt;= 4 pi (FrustaConstants.MaxJointAngle; beyond the limits is clamped).</param>
         /// <exception cref="FrustaException"><see cref="FrustaResult.WrongState"/> on a hand a glove drives
-        /// (<see cref="OpenDevice(string, in FrustaDeviceDef)"/>) until the glove is disposed.</exception>
-        public void SetHaptic(int hand, in FrustaPose palm, ReadOnlySpan<double> angles)
+        /// (<see cref="CreateDevice(string, in FrustaDeviceDef)"/>) until the glove is disposed;
+        /// <see cref="FrustaResult.StaleId"/> for a hand of another world or a standalone hand.</exception>
+        public void SetHaptic(FrustaHandId hand, in FrustaPose palm, ReadOnlySpan<double> angles)
         {
             using (new HandleUse(handle))
             fixed (FrustaPose* p = &palm)
@@ -101,32 +112,40 @@ namespace Frusta.Binding
                 Errors.Check(Native.frusta_world_set_haptic(handle.Id, hand, p, a, angles.Length), "frusta_world_set_haptic");
         }
 
-        /// <summary>Add an object with a tree's shape; queued, present from the next step
-        /// (<c>frusta_world_add_object</c>). The world keeps the tree alive while it uses it.</summary>
+        /// <summary>Create an object in this world with a tree's shape; queued, present from the next step
+        /// (<c>frusta_create_object</c>). The world keeps the tree alive while it uses it.</summary>
         /// <param name="tree">The object's shape.</param>
         /// <param name="def">From <see cref="FrustaObjectDef.Default"/>, then edited.</param>
         /// <returns>The object's id in this world.</returns>
         /// <exception cref="FrustaException"><see cref="FrustaResult.Capacity"/> when MaxObjects are present or the
         /// command queue is full (step the world); a def value out of range.</exception>
-        public FrustaObjectId AddObject(SphereTree tree, in FrustaObjectDef def)
+        public FrustaObjectId CreateObject(SphereTree tree, in FrustaObjectDef def)
         {
             if (tree == null) throw new ArgumentNullException(nameof(tree));
             FrustaObjectId id;
             using (new HandleUse(handle))
             using (new HandleUse(tree.Handle))
             fixed (FrustaObjectDef* d = &def)
-                Errors.Check(Native.frusta_world_add_object(handle.Id, tree.Id, d, &id), "frusta_world_add_object");
+                Errors.Check(Native.frusta_create_object(handle.Id, tree.Id, d, &id), "frusta_create_object");
             return id;
         }
 
-        /// <summary>Remove an object (queued; <c>frusta_world_remove_object</c>). Its id is refused at once
-        /// by the calls that change the world; <see cref="GetObject"/> still reports it until a step
-        /// has applied the removal.</summary>
+        /// <summary>Destroy an object of this world (queued; <c>frusta_destroy_object</c>). Its id is
+        /// refused at once by the calls that change the world; <see cref="GetObject"/> still reports it
+        /// until a step has applied the removal.</summary>
         /// <param name="id">The object.</param>
-        public void RemoveObject(FrustaObjectId id)
+        /// <exception cref="FrustaException"><see cref="FrustaResult.StaleId"/> for an object already destroyed
+        /// or of another world.</exception>
+        public void DestroyObject(FrustaObjectId id)
         {
             using (new HandleUse(handle))
-                Errors.Check(Native.frusta_world_remove_object(handle.Id, id), "frusta_world_remove_object");
+            {
+                // the id names its world: refuse another world's here, as every other call does
+                if (id.World0 != 0 && !BelongsHere(id))
+                    throw new FrustaException(FrustaResult.StaleId,
+                        $"object id {id} belongs to another world, or to a destroyed one", "frusta_destroy_object");
+                Errors.Check(Native.frusta_destroy_object(id), "frusta_destroy_object");
+            }
         }
 
         /// <summary>Put an object at a pose, at rest (queued; <c>frusta_world_set_object_pose</c>).</summary>
@@ -190,7 +209,7 @@ namespace Frusta.Binding
 
         /// <summary>
         /// Latch the newest published step (never a torn one) and fill <paramref name="state"/>
-        /// (<c>frusta_world_read</c>). <see cref="GetHand"/>, <see cref="GetContacts(int, Span{FrustaWorldContact})"/>
+        /// (<c>frusta_world_read</c>). <see cref="GetHand"/>, <see cref="GetContacts(FrustaHandId, Span{FrustaWorldContact})"/>
         /// and <see cref="GetObject"/> then read the latched step. Allocation-free: reuse one state.
         /// Thread: host; for one consistent step from any thread use <see cref="ReadSnapshot"/>.
         /// </summary>
@@ -205,11 +224,11 @@ namespace Frusta.Binding
         }
 
         /// <summary>One hand of the latched step (<c>frusta_world_get_hand</c>). Allocation-free.</summary>
-        /// <param name="hand">The index from <see cref="AddHand"/>.</param>
+        /// <param name="hand">The id from <see cref="CreateHand"/>.</param>
         /// <param name="output">Filled; reuse one per hand.</param>
         /// <exception cref="FrustaException"><see cref="FrustaResult.WrongState"/> before any <see cref="Read"/>;
-        /// <see cref="FrustaResult.OutOfRange"/> for a hand the world does not have.</exception>
-        public void GetHand(int hand, ref FrustaWorldHand output)
+        /// <see cref="FrustaResult.StaleId"/> for a hand this world does not have.</exception>
+        public void GetHand(FrustaHandId hand, ref FrustaWorldHand output)
         {
             output.struct_size = sizeof(FrustaWorldHand);
             using (new HandleUse(handle))
@@ -219,9 +238,9 @@ namespace Frusta.Binding
         }
 
         /// <summary>How many contacts one hand has in the latched step (at most <see cref="MaxContactsPerHand"/>).</summary>
-        /// <param name="hand">The index from <see cref="AddHand"/>.</param>
+        /// <param name="hand">The id from <see cref="CreateHand"/>.</param>
         /// <returns>The count.</returns>
-        public int GetContactCount(int hand)
+        public int GetContactCount(FrustaHandId hand)
         {
             int count;
             using (new HandleUse(handle))
@@ -230,14 +249,13 @@ namespace Frusta.Binding
             return count;
         }
 
-        /// <summary>Copy one hand's contacts of the latched step (<c>frusta_world_get_contacts</c>).
-        /// Allocation-free: reuse a buffer of <see cref="MaxContactsPerHand"/>.</summary>
-        /// <param name="hand">The index from <see cref="AddHand"/>.</param>
+        /// <summary>Copy one hand's contacts of the latched step (<c>frusta_world_get_contacts</c>): the first
+        /// min(destination.Length, count) of them. Allocation-free: reuse a buffer of
+        /// <see cref="MaxContactsPerHand"/>, which is never short.</summary>
+        /// <param name="hand">The id from <see cref="CreateHand"/>.</param>
         /// <param name="destination">Receives the contacts.</param>
-        /// <returns>The number copied.</returns>
-        /// <exception cref="FrustaException"><see cref="FrustaResult.Capacity"/> when destination is shorter than
-        /// the count (nothing is written then).</exception>
-        public int GetContacts(int hand, Span<FrustaWorldContact> destination)
+        /// <returns>How many contacts the hand has, which exceeds destination.Length when it was short.</returns>
+        public int GetContacts(FrustaHandId hand, Span<FrustaWorldContact> destination)
         {
             int count;
             using (new HandleUse(handle))
@@ -247,19 +265,15 @@ namespace Frusta.Binding
                     Errors.Check(Native.frusta_world_get_contacts(handle.Id, hand, c, destination.Length, &count),
                                  "frusta_world_get_contacts");
             }
-            // an empty buffer is the native size query: it copied nothing
-            if (destination.Length == 0 && count > 0)
-                throw new FrustaException(FrustaResult.Capacity, $"capacity is 0, the hand has {count} contacts",
-                                          "frusta_world_get_contacts");
             return count;
         }
 
         /// <summary>Copy one hand's contacts of the latched step into an array (see
-        /// <see cref="GetContacts(int, Span{FrustaWorldContact})"/>).</summary>
-        /// <param name="hand">The index from <see cref="AddHand"/>.</param>
+        /// <see cref="GetContacts(FrustaHandId, Span{FrustaWorldContact})"/>).</summary>
+        /// <param name="hand">The id from <see cref="CreateHand"/>.</param>
         /// <param name="destination">Receives the contacts.</param>
-        /// <param name="count">The number copied.</param>
-        public void GetContacts(int hand, FrustaWorldContact[] destination, out int count)
+        /// <param name="count">How many contacts the hand has (more than copied when destination was short).</param>
+        public void GetContacts(FrustaHandId hand, FrustaWorldContact[] destination, out int count)
         {
             if (destination == null) throw new ArgumentNullException(nameof(destination));
             count = GetContacts(hand, destination.AsSpan());
@@ -268,8 +282,8 @@ namespace Frusta.Binding
         /// <summary>One object of the latched step (<c>frusta_world_get_object</c>). Allocation-free.</summary>
         /// <param name="id">The object.</param>
         /// <param name="output">Filled.</param>
-        /// <exception cref="FrustaException"><see cref="FrustaResult.StaleId"/> for an object removed, or added after
-        /// the latched step.</exception>
+        /// <exception cref="FrustaException"><see cref="FrustaResult.StaleId"/> for an object destroyed, or created
+        /// after the latched step.</exception>
         public void GetObject(FrustaObjectId id, ref FrustaObjectState output)
         {
             output.struct_size = sizeof(FrustaObjectState);
@@ -282,7 +296,7 @@ namespace Frusta.Binding
         /// <summary>A snapshot buffer sized for this world's hands and contacts, for
         /// <see cref="ReadSnapshot"/>. Allocates: make one per reader and reuse it.</summary>
         /// <returns>An empty snapshot.</returns>
-        public WorldSnapshot CreateSnapshot() => new WorldSnapshot(handCount, maxContactsPerHand);
+        public WorldSnapshot CreateSnapshot() => new WorldSnapshot(hands.Length, maxContactsPerHand);
 
         /// <summary>
         /// Latch the newest step and copy its state, every hand and every hand's contacts into
@@ -301,39 +315,41 @@ namespace Frusta.Binding
                 snapshot.state.struct_size = sizeof(FrustaWorldState);
                 fixed (FrustaWorldState* s = &snapshot.state)
                     Errors.Check(Native.frusta_world_read(id, s), "frusta_world_read");
-                int hands = snapshot.state.HandCount;
-                snapshot.EnsureHands(hands);
-                for (int h = 0; h < hands; ++h)
+                // the step has every hand created so far: creating one unlatches
+                FrustaHandId[] ids = hands;
+                int count = Math.Min(snapshot.state.HandCount, ids.Length);
+                snapshot.EnsureHands(count);
+                for (int h = 0; h < count; ++h)
                 {
                     snapshot.hands[h].struct_size = sizeof(FrustaWorldHand);
                     fixed (FrustaWorldHand* p = &snapshot.hands[h])
-                        Errors.Check(Native.frusta_world_get_hand(id, h, p), "frusta_world_get_hand");
-                    int count;
-                    Errors.Check(Native.frusta_world_get_contacts(id, h, null, 0, &count), "frusta_world_get_contacts");
-                    snapshot.EnsureContacts(h, count);
+                        Errors.Check(Native.frusta_world_get_hand(id, ids[h], p), "frusta_world_get_hand");
+                    int contacts;
+                    Errors.Check(Native.frusta_world_get_contacts(id, ids[h], null, 0, &contacts), "frusta_world_get_contacts");
+                    snapshot.EnsureContacts(h, contacts);
                     fixed (FrustaWorldContact* c = snapshot.contacts[h])
-                        Errors.Check(Native.frusta_world_get_contacts(id, h, c, snapshot.contacts[h].Length, &count),
+                        Errors.Check(Native.frusta_world_get_contacts(id, ids[h], c, snapshot.contacts[h].Length, &contacts),
                                      "frusta_world_get_contacts");
-                    snapshot.contactCounts[h] = count;
+                    snapshot.contactCounts[h] = contacts;
                 }
             }
         }
 
         /// <summary>Open a glove with the library's defaults (<see cref="FrustaDeviceDef.Default"/>) to drive
-        /// one hand; see <see cref="OpenDevice(string, in FrustaDeviceDef)"/>.</summary>
+        /// one hand; see <see cref="CreateDevice(string, in FrustaDeviceDef)"/>.</summary>
         /// <param name="uri">Where the glove is, e.g. <c>opengloves:/dev/ttyUSB0</c> or <c>replay:FILE</c>.</param>
-        /// <param name="hand">The index from <see cref="AddHand"/>; default 0.</param>
+        /// <param name="hand">The id from <see cref="CreateHand"/>.</param>
         /// <returns>The open glove; dispose it to close it.</returns>
-        public Device OpenDevice(string uri, int hand = 0)
+        public Device CreateDevice(string uri, FrustaHandId hand)
         {
             FrustaDeviceDef def = FrustaDeviceDef.Default;
             def.Hand = hand;
-            return OpenDevice(uri, def);
+            return CreateDevice(uri, def);
         }
 
         /// <summary>
         /// Open the glove at <paramref name="uri"/> to drive the hand <paramref name="def"/>.Hand of this
-        /// world, and start the glove's own native thread (<c>frusta_world_open_device</c>). The URI is
+        /// world, and start the glove's own native thread (<c>frusta_create_device</c>). The URI is
         /// one of <c>opengloves:PATH?baud=N</c> (OpenGloves alpha encoding over serial),
         /// <c>serial:PATH?baud=N</c> and <c>hid:VID:PID[:SERIAL]</c> (Frusta's binary profile), or
         /// <c>replay:FILE?speed=1|max&amp;loop=0|1</c> (a recording); any takes <c>&amp;record=FILE</c>.
@@ -342,13 +358,15 @@ namespace Frusta.Binding
         /// <see cref="Device.SetPalmPose"/> unless the glove reports one. Thread: host.
         /// </summary>
         /// <param name="uri">Where the glove is (UTF-8 on the native side).</param>
-        /// <param name="def">From <see cref="FrustaDeviceDef.Default"/>, then edited.</param>
+        /// <param name="def">From <see cref="FrustaDeviceDef.Default"/>, then edited: its Hand set to an id from
+        /// <see cref="CreateHand"/>.</param>
         /// <returns>The open glove; dispose it to close it (disposing the world closes it too).</returns>
         /// <exception cref="FrustaException"><see cref="FrustaResult.OutOfRange"/> for a malformed URI or a def
-        /// value out of range; <see cref="FrustaResult.Io"/> for a glove absent at open (not a retry);
-        /// <see cref="FrustaResult.WrongState"/> when the hand already has a glove; the native message
-        /// names the problem.</exception>
-        public Device OpenDevice(string uri, in FrustaDeviceDef def)
+        /// value out of range; <see cref="FrustaResult.NullId"/> or <see cref="FrustaResult.StaleId"/> for a
+        /// def whose Hand is not one of this world's; <see cref="FrustaResult.Io"/> for a glove absent at open
+        /// (not a retry); <see cref="FrustaResult.WrongState"/> when the hand already has a glove; the native
+        /// message names the problem.</exception>
+        public Device CreateDevice(string uri, in FrustaDeviceDef def)
         {
             if (uri == null) throw new ArgumentNullException(nameof(uri));
             int max = Utf8.MaxBytes(uri);
@@ -361,12 +379,16 @@ namespace Frusta.Binding
                 FrustaResult r;
                 fixed (byte* u = text)
                 fixed (FrustaDeviceDef* d = &def)
-                    r = Native.frusta_world_open_device(handle.Id, u, d, &id);
-                Errors.Check(r, "frusta_world_open_device");
+                    r = Native.frusta_create_device(handle.Id, u, d, &id);
+                Errors.Check(r, "frusta_create_device");
                 device.Own(handle, id);
             }
             return new Device(this, device, uri, def.Hand);
         }
+
+        // whether an id's world0 names this world (its slot + 1 and its generation's low byte)
+        bool BelongsHere(FrustaObjectId id) =>
+            id.World0 == (ushort)((handle.Id.Index1 & 0xff) | ((handle.Id.Generation & 0xff) << 8));
 
         /// <summary>Stop the own thread and destroy the world with its objects
         /// (<c>frusta_destroy_world</c>); waits for calls in flight on other threads. Safe to call twice.</summary>
@@ -409,7 +431,7 @@ namespace Frusta.Binding
         public int HandCount => state.HandCount;
 
         /// <summary>One hand of the step.</summary>
-        /// <param name="hand">0..HandCount-1.</param>
+        /// <param name="hand">0..HandCount-1, in the world's creation order (<see cref="World.Hands"/>).</param>
         /// <returns>A read-only reference into the snapshot, valid until the next ReadSnapshot into it.</returns>
         public ref readonly FrustaWorldHand GetHand(int hand)
         {
@@ -418,7 +440,7 @@ namespace Frusta.Binding
         }
 
         /// <summary>One hand's contacts in the step.</summary>
-        /// <param name="hand">0..HandCount-1.</param>
+        /// <param name="hand">0..HandCount-1, in the world's creation order (<see cref="World.Hands"/>).</param>
         /// <returns>A read-only view into the snapshot, valid until the next ReadSnapshot into it.</returns>
         public ReadOnlySpan<FrustaWorldContact> GetContacts(int hand)
         {

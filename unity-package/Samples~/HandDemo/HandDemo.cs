@@ -134,7 +134,7 @@ namespace Frusta.Samples
                 FrustaObjectDef def = FrustaObjectDef.Default;
                 def.Pose = view.transform.ToFrustaPose();
                 def.Dynamic = dynamic;
-                objects.Add((view.transform, world.World.AddObject(tree, def)));
+                objects.Add((view.transform, world.World.CreateObject(tree, def)));
             }
         }
 

@@ -107,7 +107,7 @@ namespace Frusta.Binding
         Connected = 1,
         /// <summary>retrying every reconnect_interval_s</summary>
         Disconnected = 2,
-        /// <summary>closed (frusta_device_close, or its world destroyed)</summary>
+        /// <summary>closed (frusta_destroy_device, or its world destroyed)</summary>
         Closed = 3,
     }
 
@@ -143,13 +143,13 @@ namespace Frusta.Binding
         /// <summary>This header's version, major.minor.patch: the major part.</summary>
         public const int VersionMajor = 0;
         /// <summary>The minor part.</summary>
-        public const int VersionMinor = 3;
+        public const int VersionMinor = 4;
         /// <summary>The patch part.</summary>
         public const int VersionPatch = 0;
         /// <summary>major*1000000 + minor*1000 + patch; frusta_version() returns the library's.</summary>
         public const int Version = VersionMajor * 1000000 + VersionMinor * 1000 + VersionPatch;
         /// <summary>Bumped whenever a struct layout or a signature changes; see frusta_check_abi().</summary>
-        public const int AbiVersion = 2;
+        public const int AbiVersion = 3;
         /// <summary>Fingers per hand, thumb first (frusta_finger).</summary>
         public const int FingerCount = 5;
         /// <summary>Segments per finger, proximal to distal.</summary>
@@ -167,5 +167,7 @@ namespace Frusta.Binding
         public const double MaxJointAngle = 12.566370614359172;
         /// <summary>Palm pose degrees of freedom in a Jacobian: translation x y z, then rotation x y z.</summary>
         public const int PalmDof = 6;
+        /// <summary>Doubles in one point Jacobian: 3 rows x (4 joint angles + 6 palm DOF) = 30.</summary>
+        public const int PointJacobianLength = 3 * (JointsPerFinger + PalmDof);
     }
 }

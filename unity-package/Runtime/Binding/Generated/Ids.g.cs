@@ -6,15 +6,21 @@ using System.Runtime.InteropServices;
 
 namespace Frusta.Binding
 {
-    /// <summary>Hand handle. Opaque; pass by value. Zero-initialised means null.</summary>
+    /// <summary>
+    /// Hand handle, of a standalone hand (frusta_create_hand) or of a world's
+    /// (frusta_create_world_hand). Opaque; pass by value. Zero-initialised means null.
+    /// </summary>
     [StructLayout(LayoutKind.Sequential)]
     public partial struct FrustaHandId : IEquatable<FrustaHandId>
     {
-        /// <summary>slot + 1; 0 is null</summary>
+        /// <summary>slot + 1 (a world's hand: its index in the world + 1); 0 is null</summary>
         public int Index1;
-        /// <summary>owning world slot (0: standalone)</summary>
+        /// <summary>
+        /// 0: standalone; else the owning world: slot + 1, and its
+        /// generation's low byte
+        /// </summary>
         public ushort World0;
-        /// <summary>bumped when the slot is reused</summary>
+        /// <summary>bumped when the slot is reused (a world's hand: its world's)</summary>
         public ushort Generation;
 
         /// <summary>The null handle (all zero).</summary>

@@ -63,22 +63,30 @@ namespace Frusta.Binding
 
         /// <summary>
         /// Create a standalone hand at the identity pose with all joint angles zero (clamped
-        /// into the limits). Thread: main (create/destroy are serialised internally).
+        /// into the limits), for queries outside a world (a world's hands come from
+        /// frusta_create_world_hand). Thread: any (creation and destruction are serialised
+        /// internally); the calling thread is the hand's host.
         /// </summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern FrustaResult frusta_create_hand(FrustaHandDef* def, FrustaHandId* outHand);
 
-        /// <summary>Destroy a hand; its id and every copy of it become stale. Thread: main.</summary>
+        /// <summary>
+        /// Destroy a standalone hand; its id and every copy of it become stale. A world's hand
+        /// is refused (FRUSTA_ERROR_STALE_ID): it lives as long as its world. Thread: host.
+        /// </summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern FrustaResult frusta_destroy_hand(FrustaHandId hand);
 
-        /// <summary>1 if the id names a live hand, else 0 (never an error). Thread: any.</summary>
+        /// <summary>
+        /// 1 if the id names a live hand, standalone or in a live world, else 0 (never an
+        /// error). Thread: any.
+        /// </summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern int frusta_hand_is_valid(FrustaHandId hand);
 
         /// <summary>
         /// Set the palm pose (hand frame in world). The quaternion is normalised; its norm
-        /// must lie in [0.5, 2] and positions within 1e6 m of the origin. Thread: main.
+        /// must lie in [0.5, 2] and positions within 1e6 m of the origin. Thread: host.
         /// </summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern FrustaResult frusta_hand_set_palm_pose(FrustaHandId hand, FrustaPose* pose);
@@ -87,40 +95,46 @@ namespace Frusta.Binding
         /// Set all FRUSTA_HAND_JOINT_COUNT joint angles (finger-major: abduction, flexion 1,
         /// 2, 3), radians. |angle| &lt;= FRUSTA_MAX_JOINT_ANGLE is accepted and clamped into the
         /// def's limits; beyond it, or not finite, the call is refused as corrupt input.
-        /// count must equal FRUSTA_HAND_JOINT_COUNT. Thread: main.
+        /// count must equal FRUSTA_HAND_JOINT_COUNT. Thread: host.
         /// </summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern FrustaResult frusta_hand_set_joint_angles(FrustaHandId hand, double* angles, int count);
 
-        /// <summary>Copy the (clamped) joint angles into out[FRUSTA_HAND_JOINT_COUNT]. Thread: main.</summary>
+        /// <summary>
+        /// Copy the (clamped) joint angles, radians, finger-major: FRUSTA_HAND_JOINT_COUNT
+        /// of them, by the output-array rule (out null only with capacity 0). Thread: host.
+        /// </summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern FrustaResult frusta_hand_get_joint_angles(FrustaHandId hand, double* @out, int capacity);
+        internal static extern FrustaResult frusta_hand_get_joint_angles(FrustaHandId hand, double* @out, int capacity, int* outCount);
 
         /// <summary>
         /// Copy the world geometry of every finger segment, finger-major (thumb first),
-        /// proximal to distal: FRUSTA_HAND_SEGMENT_COUNT entries. The last segment of each
-        /// finger has its tip hemisphere at the distal end. Thread: main.
+        /// proximal to distal: FRUSTA_HAND_SEGMENT_COUNT of them, by the output-array rule.
+        /// The last segment of each finger has its tip hemisphere at the distal end.
+        /// Thread: host.
         /// </summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern FrustaResult frusta_hand_get_segments(FrustaHandId hand, FrustaSegment* @out, int capacity, int* outCount);
 
         /// <summary>
-        /// Copy the palm's spheres in world coordinates. Pass capacity 0 and out null to
-        /// learn the count. A failed call writes nothing, out_count included. Thread: main.
+        /// Copy the palm's spheres in world coordinates, by the output-array rule (capacity
+        /// 0 and out null ask for the count). Thread: host.
         /// </summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern FrustaResult frusta_hand_get_palm_spheres(FrustaHandId hand, FrustaSphere* @out, int capacity, int* outCount);
 
         /// <summary>
-        /// Jacobian of a material point of one segment, in world coordinates, with respect to
-        /// the finger's four joint angles followed by the palm's 6 DOF (world translation,
-        /// then a world-frame rotation vector): out is row-major 3 x (4 + 6) = 30 doubles.
-        /// The point is given in the segment frame: origin at the proximal joint, +x along
-        /// the segment, y and z as the finger's flexion and its normal. Also writes the
-        /// point's world position to out_point (may be null). Thread: main.
+        /// Jacobian of a material point of one segment, in world coordinates (metres per
+        /// radian, and per metre or radian of the palm), with respect to the finger's four
+        /// joint angles followed by the palm's 6 DOF (world translation, then a world-frame
+        /// rotation vector): row-major 3 x 10, FRUSTA_POINT_JACOBIAN_LENGTH doubles copied to
+        /// out_jacobian by the output-array rule. The point is given in metres in the segment
+        /// frame: origin at the proximal joint, +x along the segment, y and z as the finger's
+        /// flexion and its normal. Also writes the point's world position, metres, to
+        /// out_point (may be null). Thread: host.
         /// </summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern FrustaResult frusta_hand_point_jacobian(FrustaHandId hand, int finger, int segment, double* localPoint, double* outPoint, double* outJacobian, int capacity);
+        internal static extern FrustaResult frusta_hand_point_jacobian(FrustaHandId hand, int finger, int segment, double* localPoint, double* outPoint, double* outJacobian, int capacity, int* outCount);
 
         /// <summary>
         /// Query one sphere against one segment solid. Radii must be &gt;= 0 and every value
@@ -139,14 +153,14 @@ namespace Frusta.Binding
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern FrustaResult frusta_constraint_eval(FrustaSegment* segment, FrustaSphere* sphere, int form, FrustaConstraint* @out);
 
-        /// <summary>Defaults for frusta_bake_sphere_tree. Thread: any.</summary>
+        /// <summary>Defaults for frusta_create_sphere_tree_from_mesh. Thread: any.</summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern FrustaBakeDef frusta_default_bake_def();
 
         /// <summary>
-        /// Bake a sphere tree from triangles: vertices are vertex_count xyz triples in
-        /// metres (right-handed object frame), indices are index_count / 3 triangles
-        /// wound counter-clockwise seen from outside. Blocks for the bake's duration
+        /// Create a sphere tree by baking it from triangles: vertices are vertex_count xyz
+        /// triples in metres (right-handed object frame), indices are index_count / 3
+        /// triangles wound counter-clockwise seen from outside. Blocks for the bake's duration
         /// (seconds for 10^5 triangles): call it off any frame loop. A tree that misses
         /// the target within max_leaves is still returned; check info.target_met.
         /// The baking is done by the baker library (libfrusta_bake.so; Embree), loaded from
@@ -156,26 +170,29 @@ namespace Frusta.Binding
         /// Thread: any; bakes on different threads run concurrently.
         /// </summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern FrustaResult frusta_bake_sphere_tree(float* vertices, int vertexCount, int* indices, int indexCount, FrustaBakeDef* def, FrustaTreeId* outTree);
+        internal static extern FrustaResult frusta_create_sphere_tree_from_mesh(float* vertices, int vertexCount, int* indices, int indexCount, FrustaBakeDef* def, FrustaTreeId* outTree);
 
         /// <summary>
-        /// Load a .frtree file. Truncated, corrupt or other-version files are refused with
-        /// FRUSTA_ERROR_FILE_FORMAT or FRUSTA_ERROR_CORRUPT_FILE naming the problem.
-        /// Thread: any.
+        /// Create a sphere tree from a .frtree file (UTF-8 path). Truncated, corrupt or
+        /// other-version files are refused with FRUSTA_ERROR_FILE_FORMAT or
+        /// FRUSTA_ERROR_CORRUPT_FILE naming the problem. Thread: any.
         /// </summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern FrustaResult frusta_load_sphere_tree(byte* path, FrustaTreeId* outTree);
-
-        /// <summary>Write a tree to path atomically (a reader never sees half a file). Thread: any.</summary>
-        [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern FrustaResult frusta_save_sphere_tree(FrustaTreeId tree, byte* path);
+        internal static extern FrustaResult frusta_create_sphere_tree_from_file(byte* path, FrustaTreeId* outTree);
 
         /// <summary>
-        /// Destroy a tree; its id becomes stale. Thread: any, but not while another thread
-        /// uses the same tree.
+        /// Destroy a tree; its id becomes stale. Worlds whose objects use it keep it alive.
+        /// Thread: any, but not while another thread uses the same tree.
         /// </summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern FrustaResult frusta_destroy_sphere_tree(FrustaTreeId tree);
+
+        /// <summary>
+        /// Write a tree to path (UTF-8) atomically (a reader never sees half a file).
+        /// Thread: any.
+        /// </summary>
+        [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern FrustaResult frusta_sphere_tree_save(FrustaTreeId tree, byte* path);
 
         /// <summary>1 if the id names a live tree, else 0. Thread: any.</summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
@@ -186,18 +203,17 @@ namespace Frusta.Binding
         internal static extern FrustaResult frusta_sphere_tree_get_info(FrustaTreeId tree, FrustaSphereTreeInfo* info);
 
         /// <summary>
-        /// Copy the leaf spheres, object frame, in their stable numbering. Pass out null and
-        /// capacity 0 to learn the count. A failed call writes nothing, out_count included.
-        /// Thread: any.
+        /// Copy the leaf spheres, metres, object frame, in their stable numbering, by the
+        /// output-array rule (capacity 0 and out null ask for the count). Thread: any.
         /// </summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern FrustaResult frusta_sphere_tree_get_leaves(FrustaTreeId tree, FrustaSphere* @out, int capacity, int* outCount);
 
         /// <summary>
         /// Every leaf (or, with max_level &gt;= 0, every node at that level) within margin
-        /// metres of a world segment, for the object placed at pose (null: identity).
-        /// Writes at most capacity hits; *out_count is the number found, which may be
-        /// larger. Thread: any.
+        /// metres of a world segment, for the object placed at pose (null: identity), copied
+        /// by the output-array rule: *out_count is the number found, which may exceed
+        /// capacity. Thread: any.
         /// </summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern FrustaResult frusta_sphere_tree_query_segment(FrustaTreeId tree, FrustaPose* pose, FrustaSegment* segment, double margin, int maxLevel, FrustaTreeHit* @out, int capacity, int* outCount);
@@ -206,18 +222,22 @@ namespace Frusta.Binding
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern FrustaWorldDef frusta_default_world_def();
 
-        /// <summary>Defaults for frusta_world_add_object. Thread: any.</summary>
+        /// <summary>Defaults for frusta_create_object. Thread: any.</summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern FrustaObjectDef frusta_default_object_def();
 
-        /// <summary>Create a world (no thread yet; see frusta_world_start). Thread: host.</summary>
+        /// <summary>
+        /// Create a world (no thread yet; see frusta_world_start). Thread: any; the calling
+        /// thread is the world's host.
+        /// </summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern FrustaResult frusta_create_world(FrustaWorldDef* def, FrustaWorldId* outWorld);
 
         /// <summary>
-        /// Stop the world's thread if running, then destroy it with its objects (the trees
-        /// they used stay the caller's). Its id and object ids turn stale. No other thread
-        /// may be calling into the world meanwhile. Thread: host.
+        /// Stop the world's thread if running, close its gloves, then destroy it with its
+        /// hands and objects (the trees they used stay the caller's). Its id and every id
+        /// naming it (hands, objects, gloves) turn stale. No other thread may be calling into
+        /// the world meanwhile. Thread: host.
         /// </summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern FrustaResult frusta_destroy_world(FrustaWorldId world);
@@ -227,44 +247,48 @@ namespace Frusta.Binding
         internal static extern int frusta_world_is_valid(FrustaWorldId world);
 
         /// <summary>
-        /// Add a hand built from def; its index (0, 1, ...) names it in this world. Only
-        /// before the first step: FRUSTA_ERROR_WRONG_STATE afterwards. The world's solver
-        /// settings are checked against the hand here. Thread: host.
+        /// Create a hand in the world, built from def; *out_hand names it in every call on
+        /// the world's hands (frusta_world_set_haptic, frusta_world_get_hand, ...,
+        /// frusta_device_def.hand). It lives as long as the world. Only before the first
+        /// step: FRUSTA_ERROR_WRONG_STATE afterwards. The world's solver settings are checked
+        /// against the hand here. Thread: host.
         /// </summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern FrustaResult frusta_world_add_hand(FrustaWorldId world, FrustaHandDef* def, int* outHand);
+        internal static extern FrustaResult frusta_create_world_hand(FrustaWorldId world, FrustaHandDef* def, FrustaHandId* outHand);
 
         /// <summary>
-        /// Set a hand's haptic input (the glove): palm pose and FRUSTA_HAND_JOINT_COUNT joint
-        /// angles (radians, finger-major). The newest input wins; the next step uses it. The
-        /// one rule for every input of a hand (this call, frusta_hand_set_joint_angles, a
-        /// glove's samples): positions within 1e6 m, quaternion norm in [0.5, 2] (normalised),
-        /// |angle| &lt;= FRUSTA_MAX_JOINT_ANGLE (clamped into the hand's limits). What this call
-        /// accepts the next step uses; what breaks the rule is refused here. Lock-free and
-        /// allocation-free. FRUSTA_ERROR_WRONG_STATE on a hand a glove drives
-        /// (frusta_world_open_device). Thread: input.
+        /// Set a world hand's haptic input (the glove): palm pose (metres, world frame) and
+        /// FRUSTA_HAND_JOINT_COUNT joint angles (radians, finger-major). The newest input
+        /// wins; the next step uses it. The one rule for every input of a hand (this call,
+        /// frusta_hand_set_joint_angles, a glove's samples): positions within 1e6 m,
+        /// quaternion norm in [0.5, 2] (normalised), |angle| &lt;= FRUSTA_MAX_JOINT_ANGLE
+        /// (clamped into the hand's limits). What this call accepts the next step uses; what
+        /// breaks the rule is refused here. Lock-free and allocation-free.
+        /// FRUSTA_ERROR_WRONG_STATE on a hand a glove drives (frusta_create_device).
+        /// Thread: input.
         /// </summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern FrustaResult frusta_world_set_haptic(FrustaWorldId world, int hand, FrustaPose* palm, double* angles, int count);
+        internal static extern FrustaResult frusta_world_set_haptic(FrustaWorldId world, FrustaHandId hand, FrustaPose* palm, double* angles, int count);
 
         /// <summary>
-        /// Add an object with the tree's shape; queued, present from the next step. The world
-        /// keeps the tree alive while it uses it, even if the tree's id is destroyed.
-        /// FRUSTA_ERROR_CAPACITY when max_objects are present or the command queue is full
-        /// (step the world). Thread: host.
+        /// Create an object in the world with the tree's shape; queued, present from the next
+        /// step. The world keeps the tree alive while it uses it, even if the tree's id is
+        /// destroyed. FRUSTA_ERROR_CAPACITY when max_objects are present or the command queue
+        /// is full (step the world). Thread: host.
         /// </summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern FrustaResult frusta_world_add_object(FrustaWorldId world, FrustaTreeId tree, FrustaObjectDef* def, FrustaObjectId* outObject);
+        internal static extern FrustaResult frusta_create_object(FrustaWorldId world, FrustaTreeId tree, FrustaObjectDef* def, FrustaObjectId* outObject);
 
         /// <summary>
-        /// Remove an object (queued). Its id is refused by the calls that change the world at
-        /// once; frusta_world_get_object reports the latched step, in which the object is
-        /// present until a step has applied the removal. Thread: host.
+        /// Destroy an object of a world (queued; the id names its world). Its id is refused at
+        /// once by the calls that change the world; frusta_world_get_object reports the
+        /// latched step, in which the object is present until a step has applied the removal.
+        /// Thread: host (of the object's world).
         /// </summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern FrustaResult frusta_world_remove_object(FrustaWorldId world, FrustaObjectId @object);
+        internal static extern FrustaResult frusta_destroy_object(FrustaObjectId @object);
 
-        /// <summary>Put an object at a pose, at rest (queued). Thread: host.</summary>
+        /// <summary>Put an object at a pose (metres, world frame), at rest (queued). Thread: host.</summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern FrustaResult frusta_world_set_object_pose(FrustaWorldId world, FrustaObjectId @object, FrustaPose* pose);
 
@@ -298,66 +322,68 @@ namespace Frusta.Binding
         internal static extern FrustaResult frusta_world_stop(FrustaWorldId world);
 
         /// <summary>
-        /// Latch the newest published step (lock-free; never a torn one) and fill state.
-        /// The frusta_world_get_* functions below read the latched step until the next
-        /// call. Thread: host.
+        /// Latch the newest published step (lock-free; never a torn one) and fill state (set
+        /// state-&gt;struct_size first). The frusta_world_get_* functions below read the latched
+        /// step until the next call. Thread: host.
         /// </summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern FrustaResult frusta_world_read(FrustaWorldId world, FrustaWorldState* state);
 
-        /// <summary>One hand of the latched step. Thread: host.</summary>
+        /// <summary>One hand of the latched step (set out-&gt;struct_size first). Thread: host.</summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern FrustaResult frusta_world_get_hand(FrustaWorldId world, int hand, FrustaWorldHand* @out);
+        internal static extern FrustaResult frusta_world_get_hand(FrustaWorldId world, FrustaHandId hand, FrustaWorldHand* @out);
 
         /// <summary>
-        /// The contacts of one hand in the latched step (at most max_contacts_per_hand).
-        /// Pass out null and capacity 0 to learn the count. A failed call writes nothing.
-        /// Thread: host.
+        /// The contacts of one hand in the latched step (at most max_contacts_per_hand), by
+        /// the output-array rule (capacity 0 and out null ask for the count). Thread: host.
         /// </summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern FrustaResult frusta_world_get_contacts(FrustaWorldId world, int hand, FrustaWorldContact* @out, int capacity, int* outCount);
+        internal static extern FrustaResult frusta_world_get_contacts(FrustaWorldId world, FrustaHandId hand, FrustaWorldContact* @out, int capacity, int* outCount);
 
         /// <summary>
-        /// One object of the latched step. FRUSTA_ERROR_STALE_ID for an object removed, or
-        /// added after the latched step. Thread: host.
+        /// One object of the latched step (set out-&gt;struct_size first).
+        /// FRUSTA_ERROR_STALE_ID for an object destroyed, or created after the latched step.
+        /// Thread: host.
         /// </summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern FrustaResult frusta_world_get_object(FrustaWorldId world, FrustaObjectId @object, FrustaObjectState* @out);
 
-        /// <summary>Defaults for frusta_world_open_device. Thread: any.</summary>
+        /// <summary>Defaults for frusta_create_device. Thread: any.</summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern FrustaDeviceDef frusta_default_device_def();
 
         /// <summary>
-        /// List serial ports, HID devices and USB devices present now (up to capacity;
-        /// *out_count is how many there are). out may be null with capacity 0. Thread: any
-        /// (it reads /dev, hidapi and libusb; slow: not for a frame loop).
+        /// List the serial ports, HID devices and USB devices present now, by the
+        /// output-array rule (capacity 0 and out null ask for the count). Thread: any (it
+        /// reads /dev, hidapi and libusb; slow: not for a frame loop).
         /// </summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern FrustaResult frusta_enumerate_devices(FrustaDeviceInfo* @out, int capacity, int* outCount);
 
         /// <summary>
-        /// Open the glove at uri to drive def-&gt;hand of the world, and start its thread. A
-        /// glove absent at open is an error (FRUSTA_ERROR_IO, naming it), not a retry; one
-        /// glove per hand (FRUSTA_ERROR_WRONG_STATE). While open, frusta_world_set_haptic on
-        /// that hand is refused: its palm comes from frusta_device_set_palm_pose unless the
-        /// glove reports one. Thread: host.
+        /// Open the glove at uri (UTF-8) to drive the world's hand def-&gt;hand, and start its
+        /// thread. A glove absent at open is an error (FRUSTA_ERROR_IO, naming it), not a
+        /// retry; one glove per hand (FRUSTA_ERROR_WRONG_STATE); gloves drive the first 16
+        /// hands of a world. While open, frusta_world_set_haptic on that hand is refused: its
+        /// palm comes from frusta_device_set_palm_pose unless the glove reports one.
+        /// Thread: host.
         /// </summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern FrustaResult frusta_world_open_device(FrustaWorldId world, byte* uri, FrustaDeviceDef* def, FrustaDeviceId* outDevice);
+        internal static extern FrustaResult frusta_create_device(FrustaWorldId world, byte* uri, FrustaDeviceDef* def, FrustaDeviceId* outDevice);
 
         /// <summary>
-        /// Send the glove a zero command, stop its thread, close it. The id turns stale.
+        /// Send the glove a zero command, stop its thread, close it (the id names its world).
+        /// The id turns stale and the hand takes frusta_world_set_haptic again.
         /// frusta_destroy_world closes a world's gloves first. Thread: host.
         /// </summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
-        internal static extern FrustaResult frusta_device_close(FrustaDeviceId device);
+        internal static extern FrustaResult frusta_destroy_device(FrustaDeviceId device);
 
         /// <summary>1 if the id names an open glove, else 0. Thread: any.</summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern int frusta_device_is_valid(FrustaDeviceId device);
 
-        /// <summary>The newest status (lock-free). Thread: host (one thread).</summary>
+        /// <summary>The newest status (lock-free; set out-&gt;struct_size first). Thread: host.</summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern FrustaResult frusta_device_get_status(FrustaDeviceId device, FrustaDeviceStatus* @out);
 

@@ -150,9 +150,9 @@ namespace Frusta.Binding
     /// <summary>
     /// Bake parameters. Leaves are spheres fitted to the surface from inside plus
     /// inscribed spheres filling the interior; see README "Sphere trees and baking".
-    /// Every field has a range, checked by frusta_bake_sphere_tree before anything is
-    /// baked (FRUSTA_ERROR_OUT_OF_RANGE, or FRUSTA_ERROR_NOT_FINITE for NaN/infinity,
-    /// naming the field); frusta-bake's options have the same ranges.
+    /// Every field has a range, checked by frusta_create_sphere_tree_from_mesh before
+    /// anything is baked (FRUSTA_ERROR_OUT_OF_RANGE, or FRUSTA_ERROR_NOT_FINITE for
+    /// NaN/infinity, naming the field); frusta-bake's options have the same ranges.
     /// </summary>
     [StructLayout(LayoutKind.Sequential)]
     public partial struct FrustaBakeDef
@@ -510,8 +510,13 @@ namespace Frusta.Binding
     {
         /// <summary>sizeof(frusta_device_def)</summary>
         internal int struct_size;
-        /// <summary>the world's hand it drives; default 0</summary>
-        public int Hand;
+        /// <summary>
+        /// the world's hand it drives (frusta_create_world_hand);
+        /// default null: set it
+        /// </summary>
+        public FrustaHandId Hand;
+        /// <summary>explicit padding</summary>
+        internal int reserved1;
         /// <summary>
         /// commands per second, 0 or 1..100000; 0: the world's rate,
         /// never above what the glove takes (100 for OpenGloves);
@@ -651,8 +656,6 @@ namespace Frusta.Binding
     [StructLayout(LayoutKind.Sequential)]
     public unsafe partial struct FrustaDeviceInfo
     {
-        /// <summary>sizeof(frusta_device_info)</summary>
-        internal int struct_size;
         /// <summary>frusta_device_kind</summary>
         public FrustaDeviceKind Kind;
         /// <summary>USB/HID ids; -1 when unknown</summary>
