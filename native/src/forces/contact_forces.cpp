@@ -120,13 +120,6 @@ frusta_result check_contact_ids(int32_t object, int32_t body, int32_t object_cou
   return FRUSTA_OK;
 }
 
-void haptic_hand_pose(const HandModel& model, const HandState& haptic, HandPose& pose) {
-  HandState aimed = haptic;
-  aimed.palm_rotation = glm::normalize(aimed.palm_rotation);
-  clamp_to_limits(model, aimed);
-  forward_kinematics(model, aimed, pose);
-}
-
 frusta_result check_hand_pose(const HandPose& pose, const char* which) {
   if (frusta_result r = check_bounded_named(glm::value_ptr(pose.palm_position), 3, kMaxCoordinate,
                                             "%s pose palm_position", which))

@@ -52,12 +52,6 @@ struct ContactForceStats {
   int32_t dropped = 0;  // contacts beyond the table's capacity, left out this step
 };
 
-// The haptic hand's pose as the solver aims at it (HandSolver::step does the same):
-// rotation normalised and angles clamped to the model's limits, so that where nothing
-// is touched both hands coincide and a glove reading past a joint limit makes no force.
-// `haptic` must be a state HandSolver::step accepted.
-void haptic_hand_pose(const HandModel& model, const HandState& haptic, HandPose& pose);
-
 // Stiffnesses in [0, kMaxContactStiffness], friction in [0, 100]; the thread's error
 // names `name` and the field.
 frusta_result check_force_material(const ForceMaterial& material, const char* name);
@@ -79,7 +73,7 @@ class ContactForces {
 
   // One step: the forces at `contacts` (a HandSolver's contacts() after its step), the
   // graphic hand at `graphic` (its graphic_pose()) and the haptic hand at `haptic`
-  // (haptic_hand_pose of the state given to that step). `objects` are the solver's
+  // (its target_pose()). `objects` are the solver's
   // objects, `materials` one per object (null: ForceMaterial{} for all). The first
   // `capacity` contacts in the solver's order are kept, the rest counted in stats->dropped.
   // Bad input (non-finite, an object or body out of range, a bad material) returns an

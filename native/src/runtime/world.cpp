@@ -388,13 +388,15 @@ void World::step_hand(HandSlot& hand, HandSnapshot& snap, double dt, bool paced,
   snap.force_stats = ContactForceStats{};
   if (!snap.solved) return;
 
-  // forces on the contacts the snapshot keeps; the table holds as many
-  haptic_hand_pose(hand.solver.model(), hand.accepted, hand.haptic_pose);
+  // forces on the contacts the snapshot keeps; the table holds as many. The solver's
+  // last step succeeded (a hand that failed one is not solved), so its target is the
+  // accepted input's
   hand.forces.set_time_step(dt);  // in range: the rate was checked
   const int32_t kept = std::min(snap.contact_count, def_.max_contacts_per_hand);
-  if (hand.forces.update(hand.solver.graphic_pose(), hand.haptic_pose, contacts.data(), kept,
-                         objects, object_count, materials, &snap.force_stats) != FRUSTA_OK ||
-      compute_device_outputs(hand.haptic_pose, hand.forces.forces().data(), kept, objects,
+  const HandPose& haptic_pose = hand.solver.target_pose();
+  if (hand.forces.update(hand.solver.graphic_pose(), haptic_pose, contacts.data(), kept, objects,
+                         object_count, materials, &snap.force_stats) != FRUSTA_OK ||
+      compute_device_outputs(haptic_pose, hand.forces.forces().data(), kept, objects,
                              object_count, def_.device_limits, &snap.device,
                              hand_reactions_.data()) != FRUSTA_OK) {
     // the solver's own output was refused: a bug, kept visible rather than hidden

@@ -201,7 +201,6 @@ class World {
     bool has_input = false;
     TimedInput previous, newest;  // the two last inputs read
     HandState accepted;  // the last haptic input the solver took
-    HandPose haptic_pose;
     ContactForces forces;
     // objects that appeared inside this hand (added or put there by the host) are
     // ignored by it until they no longer overlap, so the hand is not trapped in them;

@@ -35,11 +35,23 @@ void set_finger_angles(HandState& state, int finger, const FingerAngles& a) {
   std::copy(a.begin(), a.end(), state.angles.begin() + finger * FRUSTA_JOINTS_PER_FINGER);
 }
 
+HandState aimed_at(const HandModel& model, const HandState& haptic) {
+  HandState target = haptic;
+  target.palm_rotation = glm::normalize(target.palm_rotation);
+  clamp_to_limits(model, target);
+  return target;
+}
+
 }  // namespace
+
+void haptic_hand_pose(const HandModel& model, const HandState& haptic, HandPose& pose) {
+  forward_kinematics(model, aimed_at(model, haptic), pose);
+}
 
 HandSolver::HandSolver(const HandModel& model, const SolverParams& params)
     : model_(model), params_(params), reach_(hand_reach(model)) {
   forward_kinematics(model_, graphic_, pose_);
+  target_pose_ = pose_;
 }
 
 frusta_result HandSolver::check_params(const SolverParams& p, const HandModel& model) {
@@ -92,9 +104,7 @@ frusta_result HandSolver::step(const HandState& haptic, const SolverObject* obje
                                Clock::time_point deadline) {
   assert(check_hand_state(haptic, "haptic") == FRUSTA_OK);  // checked where it entered
   StepStats stats;
-  HandState target = haptic;
-  target.palm_rotation = glm::normalize(target.palm_rotation);
-  clamp_to_limits(model_, target);
+  const HandState target = aimed_at(model_, haptic);
 
   if (!started_) {
     HandState start = target;
@@ -118,6 +128,7 @@ frusta_result HandSolver::step(const HandState& haptic, const SolverObject* obje
       break;
     }
   }
+  forward_kinematics(model_, target, target_pose_);
   report_contacts();
   if (stats_out) *stats_out = stats;
   return FRUSTA_OK;

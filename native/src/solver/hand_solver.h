@@ -48,6 +48,13 @@ struct StepStats {
   bool infeasible = false;       // some QP could not meet every row; the hand stayed safe
 };
 
+// The haptic hand as the solver aims at it: rotation normalised and angles clamped to the
+// model's limits, so that where nothing is touched both hands coincide and a glove
+// reading past a joint limit makes no force. HandSolver::target_pose() is this for the
+// state its last step took; here for callers with a state and no solver (tests,
+// benchmarks). `haptic` must pass check_hand_state.
+void haptic_hand_pose(const HandModel& model, const HandState& haptic, HandPose& pose);
+
 class HandSolver {
  public:
   HandSolver(const HandModel& model, const SolverParams& params);
@@ -75,6 +82,9 @@ class HandSolver {
   bool started() const { return started_; }
   const HandState& graphic() const { return graphic_; }
   const HandPose& graphic_pose() const { return pose_; }
+  // haptic_hand_pose of the last successful step's input: the forces' haptic hand, worked
+  // out once here
+  const HandPose& target_pose() const { return target_pose_; }
   const std::vector<SolverContact>& contacts() const { return contacts_; }
   const HandModel& model() const { return model_; }
   const SolverParams& params() const { return params_; }
@@ -92,6 +102,7 @@ class HandSolver {
   bool started_ = false;
   HandState graphic_;
   HandPose pose_;
+  HandPose target_pose_;
   CandidateSet candidates_;
   std::array<bool, FRUSTA_FINGER_COUNT> settled_{};  // per sub-step: reached or stopped
   std::vector<QpRow> rows_;
