@@ -23,6 +23,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "forces/force_checks.h"
 #include "forces/force_params.h"
 #include "hand/kinematics.h"
 #include "solver/hand_solver.h"
@@ -52,19 +53,6 @@ struct ContactForceStats {
   int32_t dropped = 0;  // contacts beyond the table's capacity, left out this step
 };
 
-// Stiffnesses in [0, kMaxContactStiffness], friction in [0, 100]; the thread's error
-// names `name` and the field.
-frusta_result check_force_material(const ForceMaterial& material, const char* name);
-
-// Every position, frame and axis of a pose finite, positions within kMaxCoordinate;
-// the thread's error names `which` and the field. Shared with the device outputs.
-frusta_result check_hand_pose(const HandPose& pose, const char* which);
-
-// A contact's object and body in range: what[index].object in [0, object_count), .body a
-// hand body. Shared with the device outputs.
-frusta_result check_contact_ids(int32_t object, int32_t body, int32_t object_count,
-                                const char* what, int32_t index);
-
 class ContactForces {
  public:
   // Reserves room for `capacity` contacts (a negative count is 0); nothing is allocated
@@ -76,12 +64,13 @@ class ContactForces {
   // (its target_pose()). `objects` are the solver's
   // objects, `materials` one per object (null: ForceMaterial{} for all). The first
   // `capacity` contacts in the solver's order are kept, the rest counted in stats->dropped.
-  // Bad input (non-finite, an object or body out of range, a bad material) returns an
-  // error and leaves the forces and every patch as they were. stats may be null.
-  frusta_result update(const HandPose& graphic, const HandPose& haptic,
-                       const SolverContact* contacts, int32_t contact_count,
-                       const SolverObject* objects, int32_t object_count,
-                       const ForceMaterial* materials, ContactForceStats* stats);
+  // stats may be null.
+  // Preconditions, which the solver's and the world's output meet and debug builds
+  // assert: counts >= 0; both poses pass check_hand_pose, the contacts
+  // check_solver_contacts, the objects and materials check_force_objects.
+  void update(const HandPose& graphic, const HandPose& haptic, const SolverContact* contacts,
+              int32_t contact_count, const SolverObject* objects, int32_t object_count,
+              const ForceMaterial* materials, ContactForceStats* stats);
 
   // Forget every patch (e.g. after a teleport): the next step starts every friction at 0.
   void reset();
@@ -90,7 +79,7 @@ class ContactForces {
   // unless set.
   frusta_result set_time_step(double seconds);
 
-  // The last successful step's forces, in the order of its contacts.
+  // The last step's forces, in the order of its contacts.
   const std::vector<ContactForce>& forces() const { return forces_; }
 
  private:

@@ -2,6 +2,7 @@
 #include "forces/device_outputs.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <cstdio>
 #include <glm/geometric.hpp>
@@ -17,7 +18,6 @@ namespace {
 // Above anything ContactForces makes (stiffness below 1e9 N/m, gaps below 4e6 m, mu
 // below 100: under 1e18 N); it keeps every sum and torque here finite.
 constexpr double kMaxContactForce = 1e20;  // newtons
-
 
 frusta_result check_vector(const vec3& v, double limit, const char* name, int32_t index) {
   return check_bounded_named(glm::value_ptr(v), 3, limit, "forces[%d].%s", index, name);
@@ -52,29 +52,22 @@ frusta_result check_device_limits(const DeviceLimits& l) {
   return check_range(l.max_palm_torque, 0.0, any, false, "max_palm_torque");
 }
 
-frusta_result compute_device_outputs(const HandPose& haptic, const ContactForce* forces,
-                                     int32_t force_count, const SolverObject* objects,
-                                     int32_t object_count, const DeviceLimits& limits,
-                                     DeviceOutputs* out, ObjectWrench* reactions) {
-  // every check before anything is written
-  if (frusta_result r = check_pointer(out, "out")) return r;
-  if (force_count < 0 || object_count < 0)
-    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "force_count (%d) and object_count (%d) must be >= 0",
-                force_count, object_count);
-  if (force_count > 0)
-    if (frusta_result r = check_pointer(forces, "forces")) return r;
-  if (object_count > 0) {
-    if (frusta_result r = check_pointer(objects, "objects")) return r;
-    if (frusta_result r = check_pointer(reactions, "reactions")) return r;
-  }
-  if (frusta_result r = check_device_limits(limits)) return r;
-  if (frusta_result r = check_hand_pose(haptic, "haptic")) return r;
-  for (int32_t o = 0; o < object_count; ++o)
-    if (frusta_result r = check_bounded_named(glm::value_ptr(objects[o].pose.position), 3,
-                                              kMaxCoordinate, "objects[%d].pose.position", o))
-      return r;
-  for (int32_t i = 0; i < force_count; ++i)
+frusta_result check_contact_forces(const ContactForce* forces, int32_t count,
+                                   int32_t object_count) {
+  for (int32_t i = 0; i < count; ++i)
     if (frusta_result r = check_force(forces[i], i, object_count)) return r;
+  return FRUSTA_OK;
+}
+
+void compute_device_outputs(const HandPose& haptic, const ContactForce* forces, int32_t force_count,
+                            const SolverObject* objects, int32_t object_count,
+                            const DeviceLimits& limits, DeviceOutputs* out,
+                            ObjectWrench* reactions) {
+  assert(out && force_count >= 0 && object_count >= 0 && (object_count == 0 || reactions));
+  assert(check_device_limits(limits) == FRUSTA_OK);
+  assert(check_hand_pose(haptic, "haptic") == FRUSTA_OK);
+  assert(check_force_objects(objects, object_count, nullptr) == FRUSTA_OK);
+  assert(check_contact_forces(forces, force_count, object_count) == FRUSTA_OK);
 
   // each contact's force acts on the haptic hand (the user's) at its haptic point
   DeviceOutputs result{};
@@ -134,7 +127,6 @@ frusta_result compute_device_outputs(const HandPose& haptic, const ContactForce*
   result.palm_torque *= palm_scale;
 
   *out = result;
-  return FRUSTA_OK;
 }
 
 }  // namespace frusta

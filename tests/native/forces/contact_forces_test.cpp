@@ -2,8 +2,8 @@
 // The contact forces against values worked out here: a fingertip sunk a known depth into
 // a face is pushed out with stiffness times depth along the normal; friction is the stick
 // spring below mu |F| and exactly mu |F| beyond, continuously, over a slow ramp there and
-// back; anchors ride with their objects, belong to one contact each and go with it; bad
-// input changes nothing; and a long steady run allocates nothing.
+// back; anchors ride with their objects, belong to one contact each and go with it; and a
+// long steady run allocates nothing.
 #include "forces/contact_forces.h"
 
 #include <gtest/gtest.h>
@@ -15,12 +15,9 @@
 #include <cstdlib>
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
-#include <limits>
 #include <new>
-#include <string>
 #include <vector>
 
-#include "core/error.h"
 #include "forces/device_outputs.h"
 #include "hand/anthropometry.h"
 #include "hand/hand_model.h"
@@ -83,7 +80,7 @@ TEST(ContactForces, FingertipSunkIntoAFaceIsPushedOutWithStiffnessTimesDepth) {
     // the haptic hand is the graphic one sunk `depth` straight into the face
     const HandPose haptic = pose_of(model, hand_at(-depth * kUp));
     ContactForceStats stats;
-    ASSERT_EQ(forces.update(graphic, haptic, &c, 1, &kFace, 1, nullptr, &stats), FRUSTA_OK);
+    forces.update(graphic, haptic, &c, 1, &kFace, 1, nullptr, &stats);
     ASSERT_EQ(forces.forces().size(), 1u);
     const ContactForce& f = forces.forces()[0];
     EXPECT_NEAR(glm::length(f.haptic_point - (c.hand_point - depth * kUp)), 0.0, 1e-15);
@@ -97,7 +94,7 @@ TEST(ContactForces, FingertipSunkIntoAFaceIsPushedOutWithStiffnessTimesDepth) {
   // the haptic fingertip above the face: the contact is reported but pushes nothing
   const HandPose above = pose_of(model, hand_at(0.001 * kUp));
   ContactForceStats stats;
-  ASSERT_EQ(forces.update(graphic, above, &c, 1, &kFace, 1, nullptr, &stats), FRUSTA_OK);
+  forces.update(graphic, above, &c, 1, &kFace, 1, nullptr, &stats);
   EXPECT_EQ(forces.forces()[0].normal_force, vec3(0.0));
   EXPECT_EQ(forces.forces()[0].friction, vec3(0.0));
   EXPECT_EQ(stats.pressing, 0);
@@ -114,9 +111,8 @@ TEST(ContactForces, AnisotropicStiffnessTurnsWithItsObject) {
   material.normal_stiffness = vec3(100.0, 250.0, 400.0);
   const double depth = 0.004;
   ContactForces forces;
-  ASSERT_EQ(forces.update(graphic, pose_of(model, hand_at(-depth * kUp)), &c, 1, &turned, 1,
-                          &material, nullptr),
-            FRUSTA_OK);
+  forces.update(graphic, pose_of(model, hand_at(-depth * kUp)), &c, 1, &turned, 1, &material,
+                nullptr);
   const vec3 expected = 250.0 * depth * kUp;  // the material's y stiffness
   EXPECT_NEAR(glm::length(forces.forces()[0].normal_force - expected), 0.0, 1e-12);
 }
@@ -140,7 +136,7 @@ TEST(ContactForces, FingerContactFollowsItsSegmentFrame) {
   c.normal = frame[2];
   c.hand_point = joint + frame * vec3(length, 0.0, -radius);
   ContactForces forces;
-  ASSERT_EQ(forces.update(graphic, haptic, &c, 1, &kFace, 1, nullptr, nullptr), FRUSTA_OK);
+  forces.update(graphic, haptic, &c, 1, &kFace, 1, nullptr, nullptr);
 
   // flexion turns the segment's x towards -z about its y: x -> (cos, 0, -sin), z -> (sin, 0, cos)
   const double cs = std::cos(theta), sn = std::sin(theta);
@@ -168,7 +164,7 @@ TEST(ContactForces, PalmContactFollowsThePalmFrame) {
   const vec3 local(0.05, 0.01, -0.02);
   c.hand_point = local;
   ContactForces forces;
-  ASSERT_EQ(forces.update(graphic, haptic, &c, 1, &kFace, 1, nullptr, nullptr), FRUSTA_OK);
+  forces.update(graphic, haptic, &c, 1, &kFace, 1, nullptr, nullptr);
   // about x by 90 degrees: (x, y, z) -> (x, -z, y)
   const vec3 expected = vec3(0.01, 0.0, 0.0) + vec3(local.x, -local.z, local.y);
   const ContactForce& f = forces.forces()[0];
@@ -191,7 +187,7 @@ TEST(ContactForces, AGloveReadingPastAJointLimitMakesNoForce) {
   HandPose haptic;
   haptic_hand_pose(model, glove, haptic);
   ContactForces forces;
-  ASSERT_EQ(forces.update(graphic, haptic, &c, 1, &kFace, 1, nullptr, nullptr), FRUSTA_OK);
+  forces.update(graphic, haptic, &c, 1, &kFace, 1, nullptr, nullptr);
   EXPECT_EQ(forces.forces()[0].haptic_point, c.hand_point);
   EXPECT_EQ(forces.forces()[0].normal_force, vec3(0.0));
 }
@@ -221,7 +217,7 @@ TEST(ContactForces, FrictionSticksBelowMuFThenSlipsAtExactlyMuFWithoutChatter) {
     const HandPose haptic = pose_of(model, hand_at(vec3(s, 0.0, -depth)));
     const SolverContact c = tip_on_face(model, graphic, 0);
     ContactForceStats stats;
-    ASSERT_EQ(forces.update(graphic, haptic, &c, 1, &kFace, 1, &material, &stats), FRUSTA_OK);
+    forces.update(graphic, haptic, &c, 1, &kFace, 1, &material, &stats);
     const ContactForce& f = forces.forces()[0];
     EXPECT_NEAR(glm::length(f.normal_force), normal, 1e-12);
 
@@ -274,7 +270,7 @@ TEST(ContactForces, TangentialDampingAddsToTheSpringWhileStickingAndStaysInTheDi
     const HandPose graphic = pose_of(model, hand_at(vec3(s, 0.0, 0.0)));
     const HandPose haptic = pose_of(model, hand_at(vec3(s, 0.0, -depth)));
     const SolverContact c = tip_on_face(model, graphic, 0);
-    ASSERT_EQ(forces.update(graphic, haptic, &c, 1, &kFace, 1, &material, nullptr), FRUSTA_OK);
+    forces.update(graphic, haptic, &c, 1, &kFace, 1, &material, nullptr);
     const double rate = k == 0 ? 0.0 : speed;  // a new patch has no rate yet
     const double expected = std::min(material.tangential_stiffness * s +
                                          material.tangential_damping * rate,
@@ -301,7 +297,7 @@ TEST(ContactForces, AnchorRidesWithItsObject) {
     const double s = k * 5e-5;
     SolverObject moved = kFace;
     moved.pose.position.y += s;
-    ASSERT_EQ(forces.update(graphic, haptic, &c, 1, &moved, 1, nullptr, nullptr), FRUSTA_OK);
+    forces.update(graphic, haptic, &c, 1, &moved, 1, nullptr, nullptr);
     const vec3 expected(0.0, std::min(material.tangential_stiffness * s, limit), 0.0);
     EXPECT_NEAR(glm::length(forces.forces()[0].friction - expected), 0.0, 1e-9) << "step " << k;
   }
@@ -316,14 +312,11 @@ TEST(ContactForces, PressingDeeperThenTurningTheNormalMakesNoFriction) {
   SolverContact c = tip_on_face(model, graphic, 0);
   ContactForces forces;
   for (double depth : {0.001, 0.005}) {
-    ASSERT_EQ(forces.update(graphic, pose_of(model, hand_at(-depth * kUp)), &c, 1, &kFace, 1,
-                            nullptr, nullptr),
-              FRUSTA_OK);
+    forces.update(graphic, pose_of(model, hand_at(-depth * kUp)), &c, 1, &kFace, 1, nullptr,
+                  nullptr);
   }
   c.normal = vec3(std::sin(0.2), 0.0, std::cos(0.2));
-  ASSERT_EQ(forces.update(graphic, pose_of(model, hand_at(-0.005 * kUp)), &c, 1, &kFace, 1, nullptr,
-                          nullptr),
-            FRUSTA_OK);
+  forces.update(graphic, pose_of(model, hand_at(-0.005 * kUp)), &c, 1, &kFace, 1, nullptr, nullptr);
   EXPECT_NEAR(glm::length(forces.forces()[0].friction), 0.0, 1e-12);
 }
 
@@ -335,8 +328,7 @@ TEST(ContactForces, AVanishedContactTakesItsAnchorWithIt) {
     const HandPose graphic = pose_of(model, hand_at(vec3(s, 0.0, 0.0)));
     const HandPose haptic = pose_of(model, hand_at(vec3(s, 0.0, -depth)));
     const SolverContact c = tip_on_face(model, graphic, 0);
-    EXPECT_EQ(forces.update(graphic, haptic, &c, touching ? 1 : 0, &kFace, 1, nullptr, nullptr),
-              FRUSTA_OK);
+    forces.update(graphic, haptic, &c, touching ? 1 : 0, &kFace, 1, nullptr, nullptr);
   };
   ContactForces forces;
   run(forces, 0.0, true);
@@ -369,14 +361,12 @@ TEST(ContactForces, ALeafJoiningAPatchLeavesItsFrictionAsItWas) {
   };
   {
     const auto [graphic, cs] = contacts_at(0.0, 1);
-    ASSERT_EQ(forces.update(graphic, pose_of(model, hand_at(-depth * kUp)), cs.data(), 1, &kFace, 1,
-                            nullptr, nullptr),
-              FRUSTA_OK);
+    forces.update(graphic, pose_of(model, hand_at(-depth * kUp)), cs.data(), 1, &kFace, 1, nullptr,
+                  nullptr);
   }
   const auto [graphic, cs] = contacts_at(slide, 2);
-  ASSERT_EQ(forces.update(graphic, pose_of(model, hand_at(vec3(slide, 0.0, -depth))), cs.data(), 2,
-                          &kFace, 1, nullptr, nullptr),
-            FRUSTA_OK);
+  forces.update(graphic, pose_of(model, hand_at(vec3(slide, 0.0, -depth))), cs.data(), 2, &kFace, 1,
+                nullptr, nullptr);
   const double expected = -ForceMaterial{}.tangential_stiffness * slide;
   EXPECT_NEAR(forces.forces()[0].friction.x + forces.forces()[1].friction.x, expected, 1e-9);
   EXPECT_NEAR(forces.forces()[0].friction.x, forces.forces()[1].friction.x, 1e-12);
@@ -402,9 +392,8 @@ TEST(ContactForces, ABodyOnAFaceOfManyLeavesFeelsOneSurface) {
     cs.push_back(other);
     cs.push_back(middle);
     ContactForces forces;
-    ASSERT_EQ(forces.update(graphic, haptic, cs.data(), static_cast<int32_t>(cs.size()), objects,
-                            2, nullptr, nullptr),
-              FRUSTA_OK);
+    forces.update(graphic, haptic, cs.data(), static_cast<int32_t>(cs.size()), objects, 2, nullptr,
+                  nullptr);
     vec3 tip_on_first(0.0);
     for (int i = 0; i < leaves; ++i) tip_on_first += forces.forces()[static_cast<size_t>(i)].normal_force;
     const double expected = kDefaultContactStiffness * 0.002;
@@ -421,67 +410,12 @@ TEST(ContactForces, ContactsBeyondCapacityAreLeftOutAndCounted) {
   for (int i = 0; i < 3; ++i) cs[static_cast<size_t>(i)].leaf = 10 + i;
   ContactForces forces(2);
   ContactForceStats stats;
-  ASSERT_EQ(forces.update(graphic, pose_of(model, hand_at(-0.001 * kUp)), cs.data(), 3, &kFace, 1,
-                          nullptr, &stats),
-            FRUSTA_OK);
+  forces.update(graphic, pose_of(model, hand_at(-0.001 * kUp)), cs.data(), 3, &kFace, 1, nullptr,
+                &stats);
   EXPECT_EQ(stats.dropped, 1);
   ASSERT_EQ(forces.forces().size(), 2u);
   EXPECT_EQ(forces.forces()[0].leaf, 10);
   EXPECT_EQ(forces.forces()[1].leaf, 11);
-}
-
-TEST(ContactForces, BadInputIsRefusedAndChangesNothing) {
-  const HandModel model = right_hand();
-  const double depth = 0.005, slide = 0.00005;  // a stick stretch
-  const HandPose graphic0 = pose_of(model, hand_at(vec3(0.0)));
-  const SolverContact c0 = tip_on_face(model, graphic0, 0);
-  ContactForces forces;
-  ASSERT_EQ(forces.update(graphic0, pose_of(model, hand_at(-depth * kUp)), &c0, 1, &kFace, 1,
-                          nullptr, nullptr),
-            FRUSTA_OK);
-  const HandPose graphic = pose_of(model, hand_at(vec3(slide, 0.0, 0.0)));
-  const HandPose haptic = pose_of(model, hand_at(vec3(slide, 0.0, -depth)));
-  const SolverContact good = tip_on_face(model, graphic, 0);
-  const std::vector<ContactForce> before = forces.forces();
-
-  auto expect_refused = [&](const SolverContact& c, const HandPose& hp, const ForceMaterial* m,
-                            frusta_result code, const char* field) {
-    EXPECT_EQ(forces.update(graphic, hp, &c, 1, &kFace, 1, m, nullptr), code) << field;
-    EXPECT_NE(std::string(frusta::last_error_message()).find(field), std::string::npos)
-        << frusta::last_error_message();
-    ASSERT_EQ(forces.forces().size(), before.size());
-    EXPECT_EQ(forces.forces()[0].normal_force, before[0].normal_force) << field;
-    EXPECT_EQ(forces.forces()[0].friction, before[0].friction) << field;
-  };
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  SolverContact bad = good;
-  bad.normal.y = nan;
-  expect_refused(bad, haptic, nullptr, FRUSTA_ERROR_NOT_FINITE, "contacts[0].normal");
-  bad = good;
-  bad.hand_point.z = std::numeric_limits<double>::infinity();
-  expect_refused(bad, haptic, nullptr, FRUSTA_ERROR_NOT_FINITE, "contacts[0].hand_point");
-  bad = good;
-  bad.distance = nan;
-  expect_refused(bad, haptic, nullptr, FRUSTA_ERROR_NOT_FINITE, "contacts[0].distance");
-  bad = good;
-  bad.object = 1;
-  expect_refused(bad, haptic, nullptr, FRUSTA_ERROR_OUT_OF_RANGE, "contacts[0].object");
-  bad = good;
-  bad.body = kBodyCount;
-  expect_refused(bad, haptic, nullptr, FRUSTA_ERROR_OUT_OF_RANGE, "contacts[0].body");
-  bad = good;
-  bad.normal *= 2.0;
-  expect_refused(bad, haptic, nullptr, FRUSTA_ERROR_OUT_OF_RANGE, "must be unit");
-  HandPose bad_pose = haptic;
-  bad_pose.fingers[2].joint[1].x = nan;
-  expect_refused(good, bad_pose, nullptr, FRUSTA_ERROR_NOT_FINITE, "haptic pose finger 2 joint 1");
-  ForceMaterial material;
-  material.friction = -0.1;
-  expect_refused(good, haptic, &material, FRUSTA_ERROR_OUT_OF_RANGE, "materials[0].friction");
-
-  // the anchor survived every refusal: the good step sees the whole slide
-  ASSERT_EQ(forces.update(graphic, haptic, &good, 1, &kFace, 1, nullptr, nullptr), FRUSTA_OK);
-  EXPECT_NEAR(forces.forces()[0].friction.x, -ForceMaterial{}.tangential_stiffness * slide, 1e-9);
 }
 
 TEST(ContactForces, FingertipPressedIntoALargeSphereByTheSolver) {
@@ -505,10 +439,8 @@ TEST(ContactForces, FingertipPressedIntoALargeSphereByTheSolver) {
   haptic_hand_pose(model, glove, haptic);
   ContactForces forces;
   ContactForceStats stats;
-  ASSERT_EQ(
-      forces.update(solver.graphic_pose(), haptic, solver.contacts().data(),
-                    static_cast<int32_t>(solver.contacts().size()), &ball, 1, nullptr, &stats),
-      FRUSTA_OK);
+  forces.update(solver.graphic_pose(), haptic, solver.contacts().data(),
+                static_cast<int32_t>(solver.contacts().size()), &ball, 1, nullptr, &stats);
   ASSERT_GT(stats.pressing, 0);
   const FingerPose& g = solver.graphic_pose().fingers[kIndex];
   const FingerPose& h = haptic.fingers[kIndex];
@@ -559,7 +491,7 @@ TEST(ContactForces, TenThousandSteadyStepsAllocateNothing) {
     c.object_point = c.hand_point;
   }
 
-  int32_t failures = 0, most_dropped = 0, most_slipping = 0;
+  int32_t most_dropped = 0, most_slipping = 0;
   const int64_t before = g_allocations.load();
   for (int32_t t = 0; t < 10000; ++t) {
     // the haptic hand circles 4 mm about 1 mm deep (sticking, then slipping), the
@@ -576,18 +508,15 @@ TEST(ContactForces, TenThousandSteadyStepsAllocateNothing) {
     const int32_t first = (run * 13) % 37;
     const int32_t count = (run * 29) % (kPool - first) + t % 2;
     ContactForceStats stats;
-    if (forces.update(rest, haptic, pool.data() + first, count, objects.data(), kObjects, nullptr,
-                      &stats) != FRUSTA_OK)
-      ++failures;
-    if (compute_device_outputs(haptic, forces.forces().data(),
-                               static_cast<int32_t>(forces.forces().size()), objects.data(),
-                               kObjects, DeviceLimits{}, &outputs, reactions.data()) != FRUSTA_OK)
-      ++failures;
+    forces.update(rest, haptic, pool.data() + first, count, objects.data(), kObjects, nullptr,
+                  &stats);
+    compute_device_outputs(haptic, forces.forces().data(),
+                           static_cast<int32_t>(forces.forces().size()), objects.data(), kObjects,
+                           DeviceLimits{}, &outputs, reactions.data());
     most_dropped = std::max(most_dropped, stats.dropped);
     most_slipping = std::max(most_slipping, stats.slipping);
   }
   const int64_t allocated = g_allocations.load() - before;
-  EXPECT_EQ(failures, 0);
   EXPECT_EQ(allocated, 0) << "steady steps must not allocate";
   EXPECT_GT(most_dropped, 0) << "the run meant to overflow the table";
   EXPECT_GT(most_slipping, 0) << "the run meant to slip";

@@ -2,11 +2,8 @@
 // What a device and the objects receive, against values worked out here: joint torques
 // and the palm wrench do the virtual work of the contact forces (finite differences of
 // each contact point over each joint and palm axis); the hand's forces and the objects'
-// reactions cancel, forces and torques; clamps shorten and never turn; bad input
-// changes nothing.
+// reactions cancel, forces and torques; and clamps shorten and never turn.
 #include "forces/device_outputs.h"
-#include "core/error.h"
-#include "hand/anthropometry.h"
 
 #include <gtest/gtest.h>
 
@@ -14,10 +11,9 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
-#include <limits>
-#include <string>
 #include <vector>
 
+#include "hand/anthropometry.h"
 #include "hand/hand_model.h"
 
 namespace frusta {
@@ -105,9 +101,8 @@ TEST(DeviceOutputs, JointTorquesAndPalmWrenchDoTheVirtualWorkOfTheContactForces)
   const std::vector<ContactForce> forces = contact_forces(pose, kPushes);
   DeviceOutputs out;
   ObjectWrench reaction;
-  ASSERT_EQ(compute_device_outputs(pose, forces.data(), static_cast<int32_t>(forces.size()),
-                                   &kObject, 1, no_limits(), &out, &reaction),
-            FRUSTA_OK);
+  compute_device_outputs(pose, forces.data(), static_cast<int32_t>(forces.size()), &kObject, 1,
+                         no_limits(), &out, &reaction);
 
   // tau_j = sum of (F + f) . dP/dq_j, each contact point moved with its segment
   const double h = 1e-6;
@@ -160,9 +155,8 @@ TEST(DeviceOutputs, FingertipForceAndResistanceSumTheirContacts) {
   const std::vector<ContactForce> forces = contact_forces(pose, kPushes);
   DeviceOutputs out;
   ObjectWrench reaction;
-  ASSERT_EQ(compute_device_outputs(pose, forces.data(), static_cast<int32_t>(forces.size()),
-                                   &kObject, 1, no_limits(), &out, &reaction),
-            FRUSTA_OK);
+  compute_device_outputs(pose, forces.data(), static_cast<int32_t>(forces.size()), &kObject, 1,
+                         no_limits(), &out, &reaction);
   // index tip: the two distal pushes; index: all three segments
   const vec3 index_tip =
       vec3(0.2, 0.1, 0.9) + vec3(-0.1, 0.0, 0.0) + vec3(0.0, 0.0, -0.3) + vec3(0.0, 0.02, 0.0);
@@ -198,9 +192,8 @@ TEST(DeviceOutputs, HandForcesAndObjectReactionsCancel) {
   }
   DeviceOutputs out;
   std::array<ObjectWrench, 3> reactions;
-  ASSERT_EQ(compute_device_outputs(pose, forces.data(), static_cast<int32_t>(forces.size()),
-                                   objects.data(), 3, no_limits(), &out, reactions.data()),
-            FRUSTA_OK);
+  compute_device_outputs(pose, forces.data(), static_cast<int32_t>(forces.size()), objects.data(),
+                         3, no_limits(), &out, reactions.data());
 
   // about one point for all: each object's torque moved there from its pose position
   const vec3 common(0.3, -0.2, 0.1);
@@ -234,8 +227,7 @@ TEST(DeviceOutputs, ClampingShortensEveryOutputWithoutTurningIt) {
   const std::vector<ContactForce> forces = contact_forces(pose, pushes);
   DeviceOutputs out;
   ObjectWrench reaction;
-  ASSERT_EQ(compute_device_outputs(pose, forces.data(), 2, &kObject, 1, limits, &out, &reaction),
-            FRUSTA_OK);
+  compute_device_outputs(pose, forces.data(), 2, &kObject, 1, limits, &out, &reaction);
 
   EXPECT_NEAR(glm::length(out.fingertip_force[kIndex] - vec3(6.0, 8.0, 0.0)), 0.0, 1e-14);
   EXPECT_EQ(out.finger_resistance[kIndex], 10.0);
@@ -272,71 +264,9 @@ TEST(DeviceOutputs, ClampingShortensEveryOutputWithoutTurningIt) {
   // under every limit nothing is scaled
   const std::vector<ContactForce> small = contact_forces(
       pose, {{kIndex * 3 + 2, vec3(0.015, 0.0, -0.006), tip_force * 0.01, vec3(0.0)}});
-  ASSERT_EQ(compute_device_outputs(pose, small.data(), 1, &kObject, 1, limits, &out, &reaction),
-            FRUSTA_OK);
+  compute_device_outputs(pose, small.data(), 1, &kObject, 1, limits, &out, &reaction);
   EXPECT_EQ(out.fingertip_force[kIndex], tip_force * 0.01);
   EXPECT_EQ(out.finger_resistance[kIndex], glm::length(tip_force * 0.01));
-}
-
-TEST(DeviceOutputs, BadInputIsRefusedAndLeavesOutputsAsTheyWere) {
-  const HandModel model = right_hand();
-  const HandPose pose = pose_of(model, bent_hand());
-  const std::vector<ContactForce> good = contact_forces(pose, kPushes);
-  const int32_t count = static_cast<int32_t>(good.size());
-  DeviceOutputs out;
-  ObjectWrench reaction;
-  ASSERT_EQ(compute_device_outputs(pose, good.data(), count, &kObject, 1, DeviceLimits{}, &out,
-                                   &reaction),
-            FRUSTA_OK);
-  const DeviceOutputs kept = out;
-  const ObjectWrench kept_reaction = reaction;
-
-  auto expect_unchanged = [&](const char* what) {
-    for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
-      EXPECT_EQ(out.fingertip_force[f], kept.fingertip_force[f]) << what;
-      EXPECT_EQ(out.finger_resistance[f], kept.finger_resistance[f]) << what;
-    }
-    for (size_t j = 0; j < out.joint_torque.size(); ++j)
-      EXPECT_EQ(out.joint_torque[j], kept.joint_torque[j]) << what;
-    EXPECT_EQ(out.palm_force, kept.palm_force) << what;
-    EXPECT_EQ(out.palm_torque, kept.palm_torque) << what;
-    EXPECT_EQ(reaction.force, kept_reaction.force) << what;
-    EXPECT_EQ(reaction.torque, kept_reaction.torque) << what;
-  };
-
-  std::vector<ContactForce> bad = good;
-  bad[3].friction.y = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_EQ(
-      compute_device_outputs(pose, bad.data(), count, &kObject, 1, DeviceLimits{}, &out, &reaction),
-      FRUSTA_ERROR_NOT_FINITE);
-  EXPECT_NE(std::string(frusta::last_error_message()).find("forces[3].friction"), std::string::npos);
-  expect_unchanged("NaN friction");
-
-  bad = good;
-  bad[0].object = 1;
-  EXPECT_EQ(
-      compute_device_outputs(pose, bad.data(), count, &kObject, 1, DeviceLimits{}, &out, &reaction),
-      FRUSTA_ERROR_OUT_OF_RANGE);
-  expect_unchanged("object out of range");
-
-  DeviceLimits limits;
-  limits.max_joint_torque = -1.0;
-  EXPECT_EQ(compute_device_outputs(pose, good.data(), count, &kObject, 1, limits, &out, &reaction),
-            FRUSTA_ERROR_OUT_OF_RANGE);
-  EXPECT_NE(std::string(frusta::last_error_message()).find("max_joint_torque"), std::string::npos);
-  expect_unchanged("negative limit");
-
-  HandPose bad_pose = pose;
-  bad_pose.fingers[kIndex].flexion_axis.z = std::numeric_limits<double>::infinity();
-  EXPECT_EQ(compute_device_outputs(bad_pose, good.data(), count, &kObject, 1, DeviceLimits{}, &out,
-                                   &reaction),
-            FRUSTA_ERROR_NOT_FINITE);
-  expect_unchanged("infinite axis");
-
-  EXPECT_EQ(
-      compute_device_outputs(pose, good.data(), count, &kObject, 1, DeviceLimits{}, &out, nullptr),
-      FRUSTA_ERROR_NULL_POINTER);
-  expect_unchanged("no reactions array");
 }
 
 }  // namespace
