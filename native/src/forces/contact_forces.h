@@ -1,30 +1,20 @@
 // SPDX-License-Identifier: MIT
 // The force at each contact between the graphic hand and an object (seed [0160]-[0165]).
 // P_ig is the touching point on the graphic hand, P_ih the same material point on the
-// haptic hand (the glove), n the unit normal from the object towards the hand.
-// Contacts of one body on one object form a patch (a fingertip on a face the tree
-// covers with several leaves): the patch is one surface to the hand.
-//  - normal force, seed eq. 12: F = G n |P_ig - P_ih| while P_ih lies inside, i.e.
-//    (P_ig - P_ih) . n > 0, and 0 otherwise; each of a patch's k pressing contacts takes
-//    G / k, so a body feels one surface however finely the tree covers it. An optional
-//    damping on how fast the patch sinks in (ForceMaterial::normal_damping) settles a
-//    held object instead of letting it ring on the contact springs;
-//  - friction, seed eq. 13 made continuous, per patch: a tangential spring stretched by
-//    how far the body (on the haptic hand) has moved over the object since the patch
-//    began (stick); where it would exceed mu |F| its stretch is cut back so that the
-//    friction is exactly mu |F| against the slip (slip: the seed's f = mu |F| t). The
-//    stretch is kept in the object's frame, so it rides with the object; leaves joining
-//    or leaving a patch as the hand moves over an object change nothing, so a carried
-//    object is not let go of.
-// Patches keep their stretch from step to step in a table sized once; a step allocates
-// nothing.
+// haptic hand (the glove), n the unit normal from the object towards the hand. A step
+// groups the contacts into patches (forces/contact_patches.h), gives each pressing
+// contact its normal force (forces/normal_force.h) and each pressing patch its friction
+// (forces/friction.h). Patches keep their friction from step to step in a table sized
+// once; a step allocates nothing.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
+#include "forces/contact_patches.h"
 #include "forces/force_checks.h"
 #include "forces/force_params.h"
+#include "forces/friction.h"
 #include "hand/kinematics.h"
 #include "solver/hand_solver.h"
 
@@ -60,11 +50,10 @@ class ContactForces {
   explicit ContactForces(int32_t capacity = kDefaultForceContactCapacity);
 
   // One step: the forces at `contacts` (a HandSolver's contacts() after its step), the
-  // graphic hand at `graphic` (its graphic_pose()) and the haptic hand at `haptic`
-  // (its target_pose()). `objects` are the solver's
-  // objects, `materials` one per object (null: ForceMaterial{} for all). The first
-  // `capacity` contacts in the solver's order are kept, the rest counted in stats->dropped.
-  // stats may be null.
+  // graphic hand at `graphic` (its graphic_pose()) and the haptic hand at `haptic` (its
+  // target_pose()). `objects` are the solver's objects, `materials` one per object (null:
+  // ForceMaterial{} for all). The first `capacity` contacts in the solver's order are
+  // kept, the rest counted in stats->dropped. stats may be null.
   // Preconditions, which the solver's and the world's output meet and debug builds
   // assert: counts >= 0; both poses pass check_hand_pose, the contacts
   // check_solver_contacts, the objects and materials check_force_objects.
@@ -83,30 +72,18 @@ class ContactForces {
   const std::vector<ContactForce>& forces() const { return forces_; }
 
  private:
-  // A patch's identity from step to step.
-  struct PatchKey {
-    int32_t object, body;
-  };
+  // A patch as the next step needs it.
   struct Patch {
     PatchKey key;
-    RigidPose body;  // the body's haptic frame, in the object's frame
-    vec3 stretch;    // the friction spring's, tangential, in the object's frame
-    double depth;    // mean of (P_ig - P_ih) . n over its pressing contacts, metres
+    FrictionAnchor friction;
+    double depth;  // PatchPress::depth, metres
   };
-  // a contact's haptic point and depth, worked out before any force: its patch's share
-  // and mean need every contact of the patch
-  struct Prepared {
-    vec3 haptic_point{0.0};
-    double depth = 0.0;  // (P_ig - P_ih) . n; pressing when > 0
-  };
-  static bool precedes(const PatchKey& a, const PatchKey& b);
 
   int32_t capacity_;
   double time_step_ = 1e-3;
-  std::vector<int32_t> order_;        // this step's contacts, grouped by patch in key order
-  std::vector<Prepared> prepared_;    // per entry of order_
-  std::vector<Patch> patches_;        // sorted by key: the last step's
-  std::vector<Patch> next_patches_;   // being built; swapped in at the end of a step
+  ContactPatches grouping_;          // this step's contacts by patch
+  std::vector<Patch> patches_;       // sorted by key: the last step's
+  std::vector<Patch> next_patches_;  // being built; swapped in at the end of a step
   std::vector<ContactForce> forces_;
 };
 

@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: MIT
+#include "forces/contact_patches.h"
+
+#include <algorithm>
+#include <cassert>
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include "solver/detection.h"
+
+namespace frusta {
+
+namespace {
+
+// P_ih: the graphic point in its body's frame on the graphic hand, placed by the same
+// body's frame on the haptic hand (frames are rotations: the transpose inverts them)
+vec3 same_point_on_haptic(const HandPose& graphic, const HandPose& haptic, int32_t body,
+                          const vec3& graphic_point) {
+  if (body == kPalmBody) {
+    const vec3 local =
+        glm::transpose(graphic.palm_rotation) * (graphic_point - graphic.palm_position);
+    return haptic.palm_position + haptic.palm_rotation * local;
+  }
+  const int finger = body / FRUSTA_SEGMENTS_PER_FINGER;
+  const int segment = body % FRUSTA_SEGMENTS_PER_FINGER;
+  const FingerPose& g = graphic.fingers[finger];
+  const vec3 local =
+      glm::transpose(g.segment_rotation[segment]) * (graphic_point - g.joint[segment]);
+  return segment_point(haptic, finger, segment, local);
+}
+
+}  // namespace
+
+ContactPatches::ContactPatches(int32_t capacity) {
+  const size_t n = static_cast<size_t>(std::max(capacity, 0));
+  order_.reserve(n);
+  contacts_.reserve(n);
+  patches_.reserve(n);
+}
+
+void ContactPatches::group(const HandPose& graphic, const HandPose& haptic,
+                           const SolverContact* contacts, int32_t count) {
+  assert(count >= 0 && static_cast<size_t>(count) <= order_.capacity());
+  // patches in key order, so that a table of the last step's is found by one merge walk
+  order_.clear();
+  for (int32_t i = 0; i < count; ++i) order_.push_back(i);
+  std::sort(order_.begin(), order_.end(), [&](int32_t a, int32_t b) {
+    const PatchKey ka{contacts[a].object, contacts[a].body},
+        kb{contacts[b].object, contacts[b].body};
+    if (precedes(ka, kb)) return true;
+    if (precedes(kb, ka)) return false;
+    return a < b;
+  });
+  contacts_.resize(order_.size());  // within the reserved capacity
+  for (size_t k = 0; k < order_.size(); ++k) {
+    const SolverContact& c = contacts[order_[k]];
+    PatchContact& p = contacts_[k];
+    p.index = order_[k];
+    p.haptic_point = same_point_on_haptic(graphic, haptic, c.body, c.hand_point);
+    p.depth = glm::dot(c.hand_point - p.haptic_point, c.normal);
+  }
+
+  patches_.clear();
+  for (int32_t begin = 0, end = 0; begin < count; begin = end) {
+    const SolverContact& first = contacts[order_[static_cast<size_t>(begin)]];
+    ContactPatch patch;
+    patch.key = {first.object, first.body};
+    for (end = begin; end < count; ++end) {
+      const PatchContact& p = contacts_[static_cast<size_t>(end)];
+      const SolverContact& c = contacts[p.index];
+      if (c.object != patch.key.object || c.body != patch.key.body) break;
+      if (p.depth <= 0.0) continue;
+      ++patch.pressing;
+      patch.haptic_sum += p.haptic_point;
+      patch.normal_sum += c.normal;
+      patch.depth_sum += p.depth;
+    }
+    patch.begin = begin;
+    patch.end = end;
+    patches_.push_back(patch);
+  }
+}
+
+}  // namespace frusta

@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: MIT
+#include "forces/friction.h"
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+namespace frusta {
+
+PatchFriction patch_friction(const ForceMaterial& material, const RigidPose& object,
+                             const RigidPose& body, const vec3& normal, const vec3& reference,
+                             const vec3& normal_force, const FrictionAnchor* before,
+                             double time_step) {
+  // the spring is stretched by how far the body's material has moved over the object,
+  // in the plane of the patch's mean normal. The motion is that of the body's frame, not
+  // of the contacts' mean point, so leaves joining or leaving the patch move nothing
+  const glm::dmat3 to_object = glm::transpose(object.rotation);
+  const RigidPose body_on_object{to_object * (body.position - object.position),
+                                 to_object * body.rotation};
+  vec3 stretch(0.0), before_held(0.0);
+  if (before) {
+    const vec3 local = glm::transpose(body.rotation) * (reference - body.position);
+    const vec3 now = body_on_object.position + body_on_object.rotation * local;
+    const vec3 then = before->body.position + before->body.rotation * local;
+    stretch = object.rotation * (before->stretch + now - then);
+    before_held = object.rotation * before->stretch;
+    before_held -= glm::dot(before_held, normal) * normal;
+  }
+  vec3 held = stretch - glm::dot(stretch, normal) * normal;
+  // the spring, and the damping on how fast it stretched this step
+  const vec3 slide_rate = (held - before_held) / time_step;
+  PatchFriction out;
+  out.force = -material.tangential_stiffness * held - material.tangential_damping * slide_rate;
+  const double limit = material.friction * glm::length(normal_force);
+  const double pull = glm::length(out.force);
+  if (pull > limit) {
+    // slip: the friction is projected onto the disc of radius mu |F|, against the
+    // direction the finger slides, and the stretch cut back to match. A continuous
+    // function of the motion, equal on both sides of the switch (scale = 1 there), so
+    // there is no jump to chatter between. Reversing the motion unloads the spring
+    // smoothly through zero, where seed eq. 13 taken literally (t from the sliding
+    // velocity) would flip the full mu |F| every time a noisy velocity crosses zero.
+    out.force *= limit / pull;
+    const double spring = material.tangential_stiffness * glm::length(held);
+    if (spring > limit) held *= limit / spring;
+    out.slipping = limit > 0.0;
+  }
+  // the stretch kept is tangential only, so that when the normal turns (a finger rolling
+  // over a curved surface) the depth does not leak into the friction
+  out.anchor = {body_on_object, to_object * held};
+  return out;
+}
+
+}  // namespace frusta
