@@ -1,0 +1,131 @@
+// SPDX-License-Identifier: MIT
+#include "runtime/hand_pipeline.h"
+
+#include <algorithm>
+
+#include "core/periodic_clock.h"
+
+namespace frusta {
+
+HandPipeline::HandPipeline(const HandModel& model, const SolverParams& params,
+                           int32_t max_contacts, int32_t max_objects, int32_t index,
+                           double rate_hz)
+    : solver_(model, params),
+      port_(index, rate_hz),
+      forces_(max_contacts),
+      reactions_(static_cast<size_t>(max_objects)),
+      ignored_(static_cast<size_t>(max_objects), 0) {
+  objects_.reserve(static_cast<size_t>(max_objects));
+  object_slot_.reserve(static_cast<size_t>(max_objects));
+  materials_.reserve(static_cast<size_t>(max_objects));
+}
+
+void HandPipeline::forget(int32_t slot) {
+  ignored_count_ -= ignored_[static_cast<size_t>(slot)];
+  ignored_[static_cast<size_t>(slot)] = 0;
+}
+
+bool HandPipeline::step(const HandStepContext& context, SceneObjects& scene, HandSnapshot& snap) {
+  if (port_.input_fresh()) {
+    previous_ = has_input_ ? newest_ : port_.take_input();
+    newest_ = port_.take_input();
+    has_input_ = true;
+  }
+  if (!has_input_) return true;  // nothing to solve before the first input
+  HandState haptic = newest_.state;
+  const int64_t span = newest_.set_ns - previous_.set_ns;
+  if (context.paced && span > 0) {
+    // where the glove was one period before this tick, between the two inputs around
+    // that time (a tick caught up after a stall asks for its own time, not now's)
+    const double late =
+        static_cast<double>(context.tick_ns - previous_.set_ns) - context.dt * 1e9;
+    const double t = std::clamp(late / static_cast<double>(span), 0.0, 1.0);
+    haptic = interpolate(previous_.state, newest_.state, t);
+  }
+  update_ignored(scene);
+  const bool own_list = ignored_count_ > 0;
+  const SolverObject* objects = own_list ? objects_.data() : scene.active().data();
+  const int32_t* object_slot = own_list ? object_slot_.data() : scene.active_slot().data();
+  const ForceMaterial* materials =
+      own_list ? materials_.data() : scene.active_material().data();
+  const int32_t object_count =
+      static_cast<int32_t>(own_list ? objects_.size() : scene.active().size());
+  StepStats stats;
+  bool placed = true;
+  if (solver_.step(haptic, objects, object_count, &stats, context.deadline) == FRUSTA_OK) {
+    accepted_ = haptic;
+  } else {
+    placed = false;  // the graphic hand stays as it was, the forces follow the last good input
+  }
+  snap.haptic = accepted_;
+  snap.graphic = solver_.graphic();
+  snap.stats = stats;
+  snap.solved = solver_.started();
+  const std::vector<SolverContact>& contacts = solver_.contacts();
+  snap.contact_count = static_cast<int32_t>(contacts.size());
+  snap.device = DeviceOutputs{};
+  snap.force_stats = ContactForceStats{};
+  if (!snap.solved) return placed;
+
+  // forces on the contacts the snapshot keeps; the table holds as many. The solver's
+  // last step succeeded (a hand that failed one is not solved), so its target is the
+  // accepted input's
+  forces_.set_time_step(context.dt);  // in range: the rate was checked
+  const int32_t kept = std::min(snap.contact_count, context.max_contacts);
+  const HandPose& haptic_pose = solver_.target_pose();
+  forces_.update(solver_.graphic_pose(), haptic_pose, contacts.data(), kept, objects,
+                 object_count, materials, &snap.force_stats);
+  compute_device_outputs(haptic_pose, forces_.forces().data(), kept, objects, object_count,
+                         context.device_limits, &snap.device, reactions_.data());
+  snap.force_stats.dropped = snap.contact_count - kept;
+  for (int32_t i = 0; i < kept; ++i) {
+    const size_t k = static_cast<size_t>(i);
+    const int32_t slot = object_slot[contacts[k].object];
+    snap.contacts[k] = contacts[k];
+    snap.contacts[k].object = slot;
+    snap.forces[k] = forces_.forces()[k];
+    snap.forces[k].object = slot;
+  }
+  for (int32_t a = 0; a < object_count; ++a)
+    scene.add_reaction(object_slot[a], reactions_[static_cast<size_t>(a)]);
+  return placed;
+}
+
+void HandPipeline::update_ignored(const SceneObjects& scene) {
+  const std::vector<SolverObject>& active = scene.active();
+  const std::vector<int32_t>& active_slot = scene.active_slot();
+  bool changed = false;
+  for (size_t a = 0; a < active.size(); ++a) {
+    const int32_t slot = active_slot[a];
+    uint8_t& ignored = ignored_[static_cast<size_t>(slot)];
+    if (!scene.placed(slot) && !ignored) continue;  // the common case: nothing to look at
+    const uint8_t now = solver_.overlaps(active[a]) ? 1 : 0;
+    if (now == ignored) continue;
+    ignored_count_ += now ? 1 : -1;
+    ignored = now;
+    changed = true;
+  }
+  if (ignored_count_ == 0 || (!changed && !scene.moved())) return;
+  objects_.clear();  // within the capacity reserved at construction
+  object_slot_.clear();
+  materials_.clear();
+  for (size_t a = 0; a < active.size(); ++a) {
+    if (ignored_[static_cast<size_t>(active_slot[a])]) continue;
+    objects_.push_back(active[a]);
+    object_slot_.push_back(active_slot[a]);
+    materials_.push_back(scene.active_material()[a]);
+  }
+}
+
+void HandPipeline::publish_feed(const HandSnapshot& snap, uint64_t step, int64_t host_read_ns) {
+  DeviceFeed feed;
+  feed.step = step;
+  feed.published_ns = steady_ns();
+  feed.host_read_ns = host_read_ns;
+  feed.solved = snap.solved;
+  feed.device = snap.device;
+  feed.haptic_palm_rotation = accepted_.palm_rotation;
+  port_.publish_feed(feed);
+}
+
+}  // namespace frusta

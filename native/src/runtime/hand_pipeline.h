@@ -1,0 +1,70 @@
+// SPDX-License-Identifier: MIT
+// One hand of a world, each step: take its driver's input from the port (played one
+// period late and interpolated on the world's own thread), solve the graphic hand,
+// compute the contact forces and device outputs, add the hand's reactions to the
+// objects, fill the hand's snapshot and publish its device feed.
+//
+// Threads: the stepping thread, but port() (its driver's side) and the constructor.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "forces/contact_forces.h"
+#include "forces/device_outputs.h"
+#include "port/hand_port.h"
+#include "runtime/scene_objects.h"
+#include "runtime/world_snapshot.h"
+#include "solver/hand_solver.h"
+
+namespace frusta {
+
+// What every hand of a world shares for a step.
+struct HandStepContext {
+  double dt = 0.0;            // seconds
+  bool paced = false;         // on the world's own thread: play inputs one period late
+  int64_t tick_ns = 0;        // steady clock of the tick being stepped (paced only)
+  HandSolver::Clock::time_point deadline = HandSolver::Clock::time_point::max();
+  DeviceLimits device_limits;
+  int32_t max_contacts = 0;   // kept in the snapshot
+};
+
+class HandPipeline {
+ public:
+  HandPipeline(const HandModel& model, const SolverParams& params, int32_t max_contacts,
+               int32_t max_objects, int32_t index, double rate_hz);
+
+  HandPort& port() { return port_; }
+
+  // One step against the present objects: fills snap, adds the hand's reactions to
+  // objects, and returns false when the solver could not place the input (a hand that
+  // starts inside objects with no free placement near).
+  bool step(const HandStepContext& context, SceneObjects& objects, HandSnapshot& snap);
+  // Publish the step's feed for the hand's device (step: the step being taken).
+  void publish_feed(const HandSnapshot& snap, uint64_t step, int64_t host_read_ns);
+  // An object removed from the world is nobody's to ignore any more.
+  void forget(int32_t slot);
+
+ private:
+  // which placed objects this hand now sinks into, which ignored ones it has left, and
+  // the hand's object list without the ignored ones
+  void update_ignored(const SceneObjects& objects);
+
+  HandSolver solver_;
+  HandPort port_;
+  bool has_input_ = false;
+  TimedInput previous_, newest_;  // the two last inputs taken
+  HandState accepted_;            // the last haptic input the solver took
+  ContactForces forces_;
+  std::vector<ObjectWrench> reactions_;  // this hand's, per object of its list
+  // objects that appeared inside this hand (added or put there by the host) are
+  // ignored by it until they no longer overlap, so the hand is not trapped in them;
+  // while any is, the hand sees its own object list (all sized up front)
+  std::vector<uint8_t> ignored_;  // per slot
+  int32_t ignored_count_ = 0;
+  std::vector<SolverObject> objects_;
+  std::vector<int32_t> object_slot_;
+  std::vector<ForceMaterial> materials_;
+};
+
+}  // namespace frusta
