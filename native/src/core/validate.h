@@ -13,6 +13,10 @@ namespace frusta {
 // Largest coordinate accepted anywhere: beyond it a double cannot resolve
 // micrometres, so the value is corrupt rather than a real scene.
 constexpr double kMaxCoordinate = 1e6;
+// Largest coordinate of a point of a hand or an object (a finger joint, a contact
+// point): their poses lie within kMaxCoordinate, and the parts around a pose add
+// metres to it, not another kMaxCoordinate.
+constexpr double kMaxPointCoordinate = 2.0 * kMaxCoordinate;
 // Largest joint angle accepted from any input (C ABI, C++ entry points, gloves), in
 // radians: a reading beyond two turns is garbage; anything within is clamped to the
 // hand's joint limits.

@@ -25,8 +25,8 @@ frusta_result check_vector(const vec3& v, double limit, const char* name, int32_
 
 frusta_result check_force(const ContactForce& c, int32_t i, int32_t object_count) {
   if (frusta_result r = check_contact_ids(c.object, c.body, object_count, "forces", i)) return r;
-  if (frusta_result r = check_vector(c.graphic_point, kMaxCoordinate, "graphic_point", i)) return r;
-  if (frusta_result r = check_vector(c.haptic_point, kMaxCoordinate, "haptic_point", i)) return r;
+  if (frusta_result r = check_vector(c.graphic_point, kMaxPointCoordinate, "graphic_point", i)) return r;
+  if (frusta_result r = check_vector(c.haptic_point, kMaxPointCoordinate, "haptic_point", i)) return r;
   if (frusta_result r = check_vector(c.normal_force, kMaxContactForce, "normal_force", i)) return r;
   return check_vector(c.friction, kMaxContactForce, "friction", i);
 }

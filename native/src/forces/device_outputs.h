@@ -47,7 +47,7 @@ constexpr double kMaxDeviceLimit = 1e9;
 frusta_result check_device_limits(const DeviceLimits& limits);
 
 // `count` (>= 0) forces as ContactForces makes them against `object_count` objects: ids
-// in range, points within kMaxCoordinate, forces finite and of bounded size; the
+// in range, points within kMaxPointCoordinate, forces finite and of bounded size; the
 // thread's error names the field.
 frusta_result check_contact_forces(const ContactForce* forces, int32_t count, int32_t object_count);
 

@@ -25,10 +25,10 @@ frusta_result check_contact(const SolverContact& c, int32_t i, int32_t object_co
                 c.part);
   if (!std::isfinite(c.distance))
     return fail(FRUSTA_ERROR_NOT_FINITE, "contacts[%d].distance is %g", i, c.distance);
-  if (frusta_result r = check_bounded_named(glm::value_ptr(c.hand_point), 3, kMaxCoordinate,
+  if (frusta_result r = check_bounded_named(glm::value_ptr(c.hand_point), 3, kMaxPointCoordinate,
                                             "contacts[%d].hand_point", i))
     return r;
-  if (frusta_result r = check_bounded_named(glm::value_ptr(c.object_point), 3, kMaxCoordinate,
+  if (frusta_result r = check_bounded_named(glm::value_ptr(c.object_point), 3, kMaxPointCoordinate,
                                             "contacts[%d].object_point", i))
     return r;
   if (frusta_result r =
@@ -71,7 +71,7 @@ frusta_result check_hand_pose(const HandPose& pose, const char* which) {
   for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
     const FingerPose& finger = pose.fingers[f];
     for (size_t j = 0; j < finger.joint.size(); ++j)
-      if (frusta_result r = check_bounded_named(glm::value_ptr(finger.joint[j]), 3, kMaxCoordinate,
+      if (frusta_result r = check_bounded_named(glm::value_ptr(finger.joint[j]), 3, kMaxPointCoordinate,
                                                 "%s pose finger %d joint %zu", which, f, j))
         return r;
     for (size_t s = 0; s < finger.segment_rotation.size(); ++s)

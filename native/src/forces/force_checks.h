@@ -18,7 +18,8 @@ namespace frusta {
 // names `name` and the field.
 frusta_result check_force_material(const ForceMaterial& material, const char* name);
 
-// Every position, frame and axis finite, positions within kMaxCoordinate; the error names
+// Every position, frame and axis finite, the palm within kMaxCoordinate and the finger
+// joints within kMaxPointCoordinate; the error names
 // `which` and the field.
 frusta_result check_hand_pose(const HandPose& pose, const char* which);
 
@@ -27,7 +28,7 @@ frusta_result check_contact_ids(int32_t object, int32_t body, int32_t object_cou
                                 const char* what, int32_t index);
 
 // `count` (>= 0) contacts as a HandSolver reports them against `object_count` objects:
-// ids in range, leaf >= -1, part >= 0, finite distance, points within kMaxCoordinate,
+// ids in range, leaf >= -1, part >= 0, finite distance, points within kMaxPointCoordinate,
 // unit normals.
 frusta_result check_solver_contacts(const SolverContact* contacts, int32_t count,
                                     int32_t object_count);
