@@ -20,20 +20,16 @@ double finger_motion(const HandReach& reach, int finger, const FingerAngles& fro
   return motion;
 }
 
-FingerStage::FingerStage(const HandModel& model, const HandReach& reach, const SolverParams& params,
-                         const CandidateSet& candidates, int finger, const FingerAngles& target,
+FingerStage::FingerStage(const StageInputs& inputs, int finger, const FingerAngles& target,
                          double motion_cap, HandState& state, HandPose& pose)
     : StageEstimate(state, pose),
-      model_(model),
-      reach_(reach),
-      params_(params),
-      candidates_(candidates),
+      inputs_(inputs),
       finger_(finger),
       target_(target),
       start_(angles(state)),
       motion_cap_(motion_cap) {
   // never worse than the start, which a rounding or a curvature may have left a hair deep
-  floor_ = std::min(-params.penetration_tolerance, clearance(pose));
+  floor_ = std::min(-inputs.params.penetration_tolerance, clearance(pose));
 }
 
 FingerAngles FingerStage::angles(const HandState& state) const {
@@ -43,17 +39,17 @@ FingerAngles FingerStage::angles(const HandState& state) const {
 }
 
 int32_t FingerStage::row_capacity() const {
-  return candidates_.finger_count(finger_) + 2 * FRUSTA_JOINTS_PER_FINGER;
+  return inputs_.candidates.finger_count(finger_) + 2 * FRUSTA_JOINTS_PER_FINGER;
 }
 
 int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights) const {
   const FingerAngles now = angles(state_);
-  const FingerModel& finger = model_.fingers[finger_];
+  const FingerModel& finger = inputs_.model.fingers[finger_];
   const FingerPose& p = pose_.fingers[finger_];
   int32_t count = 0;
   for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j) {
     target[j] = target_[j] - now[j];
-    weights[j] = params_.joint_stiffness[j];
+    weights[j] = inputs_.params.joint_stiffness[j];
     rows[count].a = {};
     rows[count].a[j] = 1.0;
     rows[count++].b = finger.joint_min[j] - now[j];
@@ -63,10 +59,10 @@ int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights) con
   }
   for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s) {
     const int body = finger_ * FRUSTA_SEGMENTS_PER_FINGER + s;
-    if (candidates_.count(body) == 0) continue;
-    const SegmentFrame frame = make_segment_frame(finger_segment(model_, pose_, finger_, s));
+    if (inputs_.candidates.count(body) == 0) continue;
+    const SegmentFrame frame = make_segment_frame(finger_segment(inputs_.model, pose_, finger_, s));
     // a sphere further than any admissible trial can move is no row: exact, not a guess
-    const double reach = motion_cap_ + finger_motion(reach_, finger_, start_, now);
+    const double reach = motion_cap_ + finger_motion(inputs_.reach, finger_, start_, now);
     // dD/dq and dE/dq: D = joint s, E = joint s + 1; flexion j turns about joint j - 1
     vec3 column_d[FRUSTA_JOINTS_PER_FINGER], column_e[FRUSTA_JOINTS_PER_FINGER];
     column_d[0] = glm::cross(p.abduction_axis, p.joint[s] - p.joint[0]);
@@ -76,15 +72,16 @@ int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights) con
       column_d[j] = moves ? glm::cross(p.flexion_axis, p.joint[s] - p.joint[j - 1]) : vec3(0.0);
       column_e[j] = moves ? glm::cross(p.flexion_axis, p.joint[s + 1] - p.joint[j - 1]) : vec3(0.0);
     }
-    const Candidate* c = candidates_.of(body);
-    for (int32_t i = 0; i < candidates_.count(body); ++i) {
+    const Candidate* c = inputs_.candidates.of(body);
+    for (int32_t i = 0; i < inputs_.candidates.count(body); ++i) {
       if (!may_touch(frame, c[i].world, reach)) continue;
-      const Constraint g = contact_constraint(frame, c[i].world, params_.form);
+      const Constraint g = contact_constraint(frame, c[i].world, inputs_.params.form);
       QpRow& row = rows[count++];
       for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j)
         row.a[j] = glm::dot(g.grad_proximal, column_d[j]) + glm::dot(g.grad_distal, column_e[j]);
       for (int j = FRUSTA_JOINTS_PER_FINGER; j < kMaxQpVariables; ++j) row.a[j] = 0.0;
-      row.b = row_bound(params_, g.value, c[i].world.radius + std::max(frame.r_proximal, frame.r_distal));
+      row.b = row_bound(inputs_.params, g.value,
+                        c[i].world.radius + std::max(frame.r_proximal, frame.r_distal));
     }
   }
   return count;
@@ -93,23 +90,24 @@ int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights) con
 double FingerStage::clearance(const HandPose& pose) const {
   double gap = 0.0;
   for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s)
-    gap = std::min(gap, body_clearance(model_, pose, candidates_, finger_ * FRUSTA_SEGMENTS_PER_FINGER + s));
+    gap = std::min(gap, body_clearance(inputs_.model, pose, inputs_.candidates,
+                                       finger_ * FRUSTA_SEGMENTS_PER_FINGER + s));
   return gap;
 }
 
 double FingerStage::try_step(const double* d, double s) {
-  const FingerModel& finger = model_.fingers[finger_];
+  const FingerModel& finger = inputs_.model.fingers[finger_];
   FingerAngles next = angles(state_);
   for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j)
     next[j] = std::clamp(next[j] + s * d[j], finger.joint_min[j], finger.joint_max[j]);
-  if (finger_motion(reach_, finger_, start_, next) > motion_cap_) {
+  if (finger_motion(inputs_.reach, finger_, start_, next) > motion_cap_) {
     capped_ = true;
     return -INFINITY;
   }
   trial_state_ = state_;
   std::copy(next.begin(), next.end(), trial_state_.angles.begin() + finger_ * FRUSTA_JOINTS_PER_FINGER);
   trial_pose_ = pose_;
-  finger_kinematics(model_, trial_state_, finger_, trial_pose_);
+  finger_kinematics(inputs_.model, trial_state_, finger_, trial_pose_);
   return clearance(trial_pose_);
 }
 

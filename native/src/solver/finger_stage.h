@@ -23,9 +23,8 @@ class FingerStage : public StageEstimate {
  public:
   // state/pose: the graphic hand, updated in place; target: this stage's goal angles;
   // motion_cap: how far (m) any point may move from where the stage starts.
-  FingerStage(const HandModel& model, const HandReach& reach, const SolverParams& params,
-              const CandidateSet& candidates, int finger, const FingerAngles& target,
-              double motion_cap, HandState& state, HandPose& pose);
+  FingerStage(const StageInputs& inputs, int finger, const FingerAngles& target, double motion_cap,
+              HandState& state, HandPose& pose);
 
   int dofs() const { return FRUSTA_JOINTS_PER_FINGER; }
   int32_t row_capacity() const;
@@ -38,10 +37,7 @@ class FingerStage : public StageEstimate {
  private:
   FingerAngles angles(const HandState& state) const;
 
-  const HandModel& model_;
-  const HandReach& reach_;
-  const SolverParams& params_;
-  const CandidateSet& candidates_;
+  const StageInputs inputs_;
   int finger_;
   FingerAngles target_;
   FingerAngles start_;

@@ -165,6 +165,7 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
   stats.candidates = std::max(stats.candidates, static_cast<int32_t>(candidates_.candidates.size()));
   stats.tree_nodes_visited += candidates_.tree_nodes_visited;
   const double cap = 0.5 * params_.prediction_margin;
+  const StageInputs inputs{model_, reach_, params_, candidates_};
   bool reached = true;
   auto add = [&](const StageStats& s) {
     stats.iterations += s.iterations;
@@ -193,7 +194,7 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
       reached &= s == 1.0;
       forward_kinematics(model_, graphic_, pose_);
     } else {
-      PalmStage stage(model_, reach_, params_, candidates_, palm_to, cap, graphic_, pose_);
+      PalmStage stage(inputs, palm_to, cap, graphic_, pose_);
       add(solve_stage(stage, params_, rows_));
       ++stats.palm_solves;
     }
@@ -223,7 +224,7 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
       continue;
     }
     forward_kinematics(model_, graphic_, pose_);
-    FingerStage stage(model_, reach_, params_, candidates_, f, to, finger_cap, graphic_, pose_);
+    FingerStage stage(inputs, f, to, finger_cap, graphic_, pose_);
     const StageStats finger_stats = solve_stage(stage, params_, rows_);
     add(finger_stats);
     settled_[f] = !finger_stats.capped;

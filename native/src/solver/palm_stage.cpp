@@ -46,20 +46,16 @@ void set_row(QpRow& row, const vec3& grad_translation, const vec3& grad_rotation
 
 }  // namespace
 
-PalmStage::PalmStage(const HandModel& model, const HandReach& reach, const SolverParams& params,
-                     const CandidateSet& candidates, const PalmPlacement& target, double motion_cap,
+PalmStage::PalmStage(const StageInputs& inputs, const PalmPlacement& target, double motion_cap,
                      HandState& state, HandPose& pose)
     : StageEstimate(state, pose),
-      model_(model),
-      reach_(reach),
-      params_(params),
-      candidates_(candidates),
+      inputs_(inputs),
       target_(target),
       start_(placement(state)),
       motion_cap_(motion_cap) {
   const double start_gap = clearance(pose);
-  floor_ = std::min(-params.penetration_tolerance, start_gap);
-  recovering_ = start_gap < -kRecoveryTolerances * params.penetration_tolerance;
+  floor_ = std::min(-inputs.params.penetration_tolerance, start_gap);
+  recovering_ = start_gap < -kRecoveryTolerances * inputs.params.penetration_tolerance;
 }
 
 int32_t PalmStage::linearise(QpRow* rows, double* target, double* weights) const {
@@ -68,25 +64,25 @@ int32_t PalmStage::linearise(QpRow* rows, double* target, double* weights) const
   for (int k = 0; k < 3; ++k) {
     target[k] = to_target[k];
     target[3 + k] = turn[k];
-    weights[k] = params_.palm_translation_stiffness;
-    weights[3 + k] = params_.palm_rotation_stiffness;
+    weights[k] = inputs_.params.palm_translation_stiffness;
+    weights[3 + k] = inputs_.params.palm_rotation_stiffness;
   }
   // a point P carried by the palm moves by dt + dw x (P - palm): g's gradient g_P
   // becomes (g_P, (P - palm) x g_P)
   const vec3& palm = pose_.palm_position;
   // a sphere further than any admissible trial can move is no row: exact, not a guess
-  const double reach = motion_cap_ + palm_motion(reach_, start_, placement(state_));
+  const double reach = motion_cap_ + palm_motion(inputs_.reach, start_, placement(state_));
   int32_t count = 0;
   for (int body = 0; body < FRUSTA_HAND_SEGMENT_COUNT; ++body) {
-    if (candidates_.count(body) == 0) continue;
+    if (inputs_.candidates.count(body) == 0) continue;
     const int f = body / FRUSTA_SEGMENTS_PER_FINGER, s = body % FRUSTA_SEGMENTS_PER_FINGER;
-    const SegmentFrame frame = make_segment_frame(finger_segment(model_, pose_, f, s));
-    const Candidate* c = candidates_.of(body);
-    for (int32_t i = 0; i < candidates_.count(body); ++i) {
+    const SegmentFrame frame = make_segment_frame(finger_segment(inputs_.model, pose_, f, s));
+    const Candidate* c = inputs_.candidates.of(body);
+    for (int32_t i = 0; i < inputs_.candidates.count(body); ++i) {
       if (!may_touch(frame, c[i].world, reach)) continue;
-      const Constraint g = contact_constraint(frame, c[i].world, params_.form);
-      const double bound =
-          row_bound(params_, g.value, c[i].world.radius + std::max(frame.r_proximal, frame.r_distal));
+      const Constraint g = contact_constraint(frame, c[i].world, inputs_.params.form);
+      const double bound = row_bound(
+          inputs_.params, g.value, c[i].world.radius + std::max(frame.r_proximal, frame.r_distal));
       set_row(rows[count++], g.grad_proximal + g.grad_distal,
               glm::cross(frame.proximal - palm, g.grad_proximal) +
                   glm::cross(frame.distal - palm, g.grad_distal),
@@ -96,16 +92,16 @@ int32_t PalmStage::linearise(QpRow* rows, double* target, double* weights) const
               recovering_ ? bound : std::min(bound, 0.0));
     }
   }
-  const Candidate* c = candidates_.of(kPalmBody);
-  for (int32_t i = 0; i < candidates_.count(kPalmBody); ++i) {
-    const Sphere hand = palm_sphere(model_, pose_, c[i].part);
+  const Candidate* c = inputs_.candidates.of(kPalmBody);
+  for (int32_t i = 0; i < inputs_.candidates.count(kPalmBody); ++i) {
+    const Sphere hand = palm_sphere(inputs_.model, pose_, c[i].part);
     if (!may_touch_sphere(hand, c[i].world, reach)) continue;
     const vec3 outward = hand.center - palm;
     const SphereConstraint g = sphere_constraint(
-        hand, c[i].world, params_.form,
+        hand, c[i].world, inputs_.params.form,
         glm::length(outward) > 0.0 ? glm::normalize(outward) : vec3(0.0, 0.0, 1.0));
     set_row(rows[count++], g.grad_hand, glm::cross(hand.center - palm, g.grad_hand),
-            row_bound(params_, g.value, hand.radius + c[i].world.radius));
+            row_bound(inputs_.params, g.value, hand.radius + c[i].world.radius));
   }
   return count;
 }
@@ -113,7 +109,7 @@ int32_t PalmStage::linearise(QpRow* rows, double* target, double* weights) const
 double PalmStage::clearance(const HandPose& pose) const {
   double gap = 0.0;
   for (int body = 0; body < kBodyCount; ++body)
-    gap = std::min(gap, body_clearance(model_, pose, candidates_, body));
+    gap = std::min(gap, body_clearance(inputs_.model, pose, inputs_.candidates, body));
   return gap;
 }
 
@@ -121,11 +117,11 @@ double PalmStage::try_step(const double* d, double s) {
   trial_state_ = state_;
   trial_state_.palm_position = state_.palm_position + s * vec3(d[0], d[1], d[2]);
   trial_state_.palm_rotation = rotated(state_.palm_rotation, s * vec3(d[3], d[4], d[5]));
-  if (palm_motion(reach_, start_, placement(trial_state_)) > motion_cap_) {
+  if (palm_motion(inputs_.reach, start_, placement(trial_state_)) > motion_cap_) {
     capped_ = true;
     return -INFINITY;
   }
-  forward_kinematics(model_, trial_state_, trial_pose_);
+  forward_kinematics(inputs_.model, trial_state_, trial_pose_);
   return clearance(trial_pose_);
 }
 

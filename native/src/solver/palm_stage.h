@@ -28,12 +28,13 @@ constexpr double kRecoveryTolerances = 10.0;
 
 class PalmStage : public StageEstimate {
  public:
-  PalmStage(const HandModel& model, const HandReach& reach, const SolverParams& params,
-            const CandidateSet& candidates, const PalmPlacement& target, double motion_cap,
+  PalmStage(const StageInputs& inputs, const PalmPlacement& target, double motion_cap,
             HandState& state, HandPose& pose);
 
   int dofs() const { return 6; }
-  int32_t row_capacity() const { return static_cast<int32_t>(candidates_.candidates.size()); }
+  int32_t row_capacity() const {
+    return static_cast<int32_t>(inputs_.candidates.candidates.size());
+  }
   int32_t linearise(QpRow* rows, double* target, double* weights) const;
   double try_step(const double* d, double s);
 
@@ -41,10 +42,7 @@ class PalmStage : public StageEstimate {
   double clearance(const HandPose& pose) const;
 
  private:
-  const HandModel& model_;
-  const HandReach& reach_;
-  const SolverParams& params_;
-  const CandidateSet& candidates_;
+  const StageInputs inputs_;
   PalmPlacement target_;
   PalmPlacement start_;
   double motion_cap_;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "hand/kinematics.h"
+#include "solver/detection.h"
 #include "solver/qp.h"
 #include "solver/solver_params.h"
 
@@ -19,6 +20,14 @@ struct StageStats {
   int32_t qp_iterations = 0;  // active-set changes over all QPs
   bool infeasible = false;    // some QP had no point meeting every linearised row
   bool capped = false;        // a step was cut short by the stage's motion bound
+};
+
+// What the palm and finger stages of a sub-step solve against, the same for each.
+struct StageInputs {
+  const HandModel& model;
+  const HandReach& reach;
+  const SolverParams& params;
+  const CandidateSet& candidates;
 };
 
 // What every stage keeps besides its problem: the graphic hand it updates in place, a
