@@ -12,6 +12,10 @@ namespace frusta {
 
 namespace {
 
+frusta_result check_point(const double point[3], const std::string& field) {
+  return check_bounded(point, 3, kMaxCoordinate, field.c_str());
+}
+
 frusta_result check_radius(double radius, const std::string& field) {
   return check_range(radius, 0.0, kMaxCoordinate, false, field.c_str());
 }
@@ -35,10 +39,8 @@ frusta_result check_output_array(const void* out, const char* out_name, int32_t 
 frusta_result read_segment(const frusta_segment* in, const char* name, Segment* out) {
   const std::string n = name;
   if (frusta_result r = check_pointer(in, name)) return r;
-  if (frusta_result r = check_bounded(in->proximal, 3, kMaxCoordinate, (n + ".proximal").c_str()))
-    return r;
-  if (frusta_result r = check_bounded(in->distal, 3, kMaxCoordinate, (n + ".distal").c_str()))
-    return r;
+  if (frusta_result r = check_point(in->proximal, n + ".proximal")) return r;
+  if (frusta_result r = check_point(in->distal, n + ".distal")) return r;
   if (frusta_result r = check_radius(in->proximal_radius, n + ".proximal_radius")) return r;
   if (frusta_result r = check_radius(in->distal_radius, n + ".distal_radius")) return r;
   *out = {to_vec3(in->proximal), to_vec3(in->distal), in->proximal_radius, in->distal_radius};
@@ -48,8 +50,7 @@ frusta_result read_segment(const frusta_segment* in, const char* name, Segment* 
 frusta_result read_sphere(const frusta_sphere* in, const char* name, Sphere* out) {
   const std::string n = name;
   if (frusta_result r = check_pointer(in, name)) return r;
-  if (frusta_result r = check_bounded(in->center, 3, kMaxCoordinate, (n + ".center").c_str()))
-    return r;
+  if (frusta_result r = check_point(in->center, n + ".center")) return r;
   if (frusta_result r = check_radius(in->radius, n + ".radius")) return r;
   *out = {to_vec3(in->center), in->radius};
   return FRUSTA_OK;
@@ -58,8 +59,7 @@ frusta_result read_sphere(const frusta_sphere* in, const char* name, Sphere* out
 frusta_result read_pose(const frusta_pose* in, const char* name, Pose* out) {
   const std::string n = name;
   if (frusta_result r = check_pointer(in, name)) return r;
-  if (frusta_result r = check_bounded(in->position, 3, kMaxCoordinate, (n + ".position").c_str()))
-    return r;
+  if (frusta_result r = check_point(in->position, n + ".position")) return r;
   if (frusta_result r = check_finite(in->rotation, 4, (n + ".rotation").c_str())) return r;
   const glm::dquat q(in->rotation[3], in->rotation[0], in->rotation[1], in->rotation[2]);
   const double norm = glm::length(q);
