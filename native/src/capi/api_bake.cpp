@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: MIT
 // C ABI: baking a sphere tree from triangles, by the baker library where it exists
 // (bake/bake_plugin.h): the runtime itself needs no Embree.
-#include <cstring>
-
 #include "bake/bake_params.h"
 #include "capi/bake_plugin_loader.h"
 #include "capi/convert.h"
@@ -30,16 +28,13 @@ BakeParams read_bake_def(const frusta_bake_def& def) {
 
 FRUSTA_API frusta_bake_def frusta_default_bake_def(void) {
   const BakeParams defaults;
-  frusta_bake_def def;
-  std::memset(&def, 0, sizeof def);
-  def.struct_size = sizeof(frusta_bake_def);
+  frusta_bake_def def = blank_def<frusta_bake_def>();
   def.branching = static_cast<int32_t>(defaults.branching);
   def.target_error = defaults.target_error;
   def.max_leaves = defaults.max_leaves;
   def.max_depth = static_cast<int32_t>(defaults.max_depth);
   def.error_samples = defaults.error_samples;
   def.seed = defaults.seed;
-  def.internal_value = kDefCookie;
   return def;
 }
 

@@ -184,9 +184,7 @@ void store_uri(const std::string& uri, uint8_t* out, size_t capacity) {
 FRUSTA_API frusta_device_def frusta_default_device_def(void) {
   const DeviceLinkDef d;
   const GloveCalibration c = default_glove_calibration();
-  frusta_device_def def;
-  std::memset(&def, 0, sizeof def);
-  def.struct_size = sizeof(frusta_device_def);  // hand stays null: the caller names one
+  frusta_device_def def = blank_def<frusta_device_def>();  // hand stays null: the caller names one
   def.output_rate_hz = d.output_rate_hz;
   def.watchdog_s = d.watchdog_s;
   def.engine_timeout_s = d.engine_timeout_s;
@@ -198,7 +196,6 @@ FRUSTA_API frusta_device_def frusta_default_device_def(void) {
   def.max_fingertip_force = d.max_fingertip_force;
   def.max_joint_torque = d.max_joint_torque;
   copy_calibration(c, def);
-  def.internal_value = kDefCookie;
   return def;
 }
 
@@ -293,10 +290,7 @@ FRUSTA_API frusta_result frusta_device_get_status(frusta_device_id device,
   DeviceLink* link = nullptr;
   int32_t hand = -1;
   if (frusta_result r = find_device(device, &w, &link, &hand)) return r;
-  if (frusta_result r = check_pointer(out, "out")) return r;
-  if (frusta_result r = check_struct_size(out->struct_size, static_cast<int32_t>(sizeof(frusta_device_status)),
-                                          "frusta_device_status"))
-    return r;
+  if (frusta_result r = check_out_struct(out, "out", "frusta_device_status")) return r;
   const DeviceLinkStatus& s = link->status();
   frusta_device_status o;
   std::memset(&o, 0, sizeof o);

@@ -30,10 +30,7 @@ FRUSTA_API frusta_result frusta_query_contact(const frusta_segment* segment,
   SegmentFrame frame;
   Sphere ball;
   if (frusta_result r = read_inputs(segment, sphere, &frame, &ball)) return r;
-  if (frusta_result r = check_pointer(out, "out")) return r;
-  if (frusta_result r = check_struct_size(out->struct_size, sizeof(frusta_contact_query),
-                                          "frusta_contact_query"))
-    return r;
+  if (frusta_result r = check_out_struct(out, "out", "frusta_contact_query")) return r;
   const Proximity p = exact_proximity(frame, ball);
   out->feature = static_cast<int32_t>(p.feature);
   out->patent_contact = patent_contact(frame, ball) ? 1 : 0;
@@ -55,10 +52,7 @@ FRUSTA_API frusta_result frusta_constraint_eval(const frusta_segment* segment,
   if (form != FRUSTA_CONSTRAINT_SQUARED && form != FRUSTA_CONSTRAINT_DISTANCE)
     return fail(FRUSTA_ERROR_OUT_OF_RANGE, "form is %d, must be FRUSTA_CONSTRAINT_SQUARED (0) or "
                 "FRUSTA_CONSTRAINT_DISTANCE (1)", form);
-  if (frusta_result r = check_pointer(out, "out")) return r;
-  if (frusta_result r = check_struct_size(out->struct_size, sizeof(frusta_constraint),
-                                          "frusta_constraint"))
-    return r;
+  if (frusta_result r = check_out_struct(out, "out", "frusta_constraint")) return r;
   const Constraint c = contact_constraint(frame, ball, static_cast<ConstraintForm>(form));
   out->feature = static_cast<int32_t>(c.feature);
   out->value = c.value;

@@ -33,11 +33,8 @@ frusta_result find_hand(frusta_hand_id id, HandObject** out) {
 }  // namespace
 
 FRUSTA_API frusta_hand_def frusta_default_hand_def(void) {
-  frusta_hand_def def;
-  std::memset(&def, 0, sizeof def);
-  def.struct_size = sizeof(frusta_hand_def);
+  frusta_hand_def def = blank_def<frusta_hand_def>();
   store_hand_def(default_hand_def(), &def);
-  def.internal_value = kDefCookie;
   return def;
 }
 

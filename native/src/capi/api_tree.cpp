@@ -53,10 +53,7 @@ FRUSTA_API frusta_result frusta_sphere_tree_get_info(frusta_tree_id tree,
                                                      frusta_sphere_tree_info* info) {
   TreeObject* t = nullptr;
   if (frusta_result r = tree_registry().find(tree, &t)) return r;
-  if (frusta_result r = check_pointer(info, "info")) return r;
-  if (frusta_result r = check_struct_size(info->struct_size, sizeof(frusta_sphere_tree_info),
-                                          "frusta_sphere_tree_info"))
-    return r;
+  if (frusta_result r = check_out_struct(info, "info", "frusta_sphere_tree_info")) return r;
   const TreeFile& f = t->file;
   info->branching = f.tree.branching;
   info->depth = f.tree.depth;

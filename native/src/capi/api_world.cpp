@@ -112,9 +112,7 @@ void store_state(const HandState& state, frusta_pose* palm, double* angles) {
 
 FRUSTA_API frusta_world_def frusta_default_world_def(void) {
   const WorldDef d;
-  frusta_world_def def;
-  std::memset(&def, 0, sizeof def);
-  def.struct_size = sizeof(frusta_world_def);
+  frusta_world_def def = blank_def<frusta_world_def>();
   def.max_objects = d.max_objects;
   def.rate_hz = d.rate_hz;
   def.spin_us = d.spin_us;
@@ -130,15 +128,12 @@ FRUSTA_API frusta_world_def frusta_default_world_def(void) {
   def.max_joint_torque = d.device_limits.max_joint_torque;
   def.max_palm_force = d.device_limits.max_palm_force;
   def.max_palm_torque = d.device_limits.max_palm_torque;
-  def.internal_value = kDefCookie;
   return def;
 }
 
 FRUSTA_API frusta_object_def frusta_default_object_def(void) {
   const ObjectDef d;
-  frusta_object_def def;
-  std::memset(&def, 0, sizeof def);
-  def.struct_size = sizeof(frusta_object_def);
+  frusta_object_def def = blank_def<frusta_object_def>();
   def.dynamic = d.dynamic ? 1 : 0;
   store(to_pose(d.pose.position, d.pose.rotation), &def.pose);
   store(d.material.normal_stiffness, def.stiffness);
@@ -152,7 +147,6 @@ FRUSTA_API frusta_object_def frusta_default_object_def(void) {
   store(d.angular_velocity, def.angular_velocity);
   def.linear_damping = d.linear_damping;
   def.angular_damping = d.angular_damping;
-  def.internal_value = kDefCookie;
   return def;
 }
 
@@ -281,10 +275,7 @@ FRUSTA_API frusta_result frusta_world_stop(frusta_world_id world) {
 FRUSTA_API frusta_result frusta_world_read(frusta_world_id world, frusta_world_state* state) {
   WorldObject* w = nullptr;
   if (frusta_result r = world_registry().find(world, &w)) return r;
-  if (frusta_result r = check_pointer(state, "state")) return r;
-  if (frusta_result r = check_struct_size(state->struct_size, sizeof(frusta_world_state),
-                                          "frusta_world_state"))
-    return r;
+  if (frusta_result r = check_out_struct(state, "state", "frusta_world_state")) return r;
   const WorldSnapshot& snap = w->world.read();
   w->latched = &snap;
   state->hand_count = static_cast<int32_t>(snap.hands.size());
@@ -311,10 +302,7 @@ FRUSTA_API frusta_result frusta_world_get_hand(frusta_world_id world, frusta_han
                                                frusta_world_hand* out) {
   WorldObject* w = nullptr;
   if (frusta_result r = world_registry().find(world, &w)) return r;
-  if (frusta_result r = check_pointer(out, "out")) return r;
-  if (frusta_result r = check_struct_size(out->struct_size, sizeof(frusta_world_hand),
-                                          "frusta_world_hand"))
-    return r;
+  if (frusta_result r = check_out_struct(out, "out", "frusta_world_hand")) return r;
   int32_t index = -1;
   if (frusta_result r = world_hand_index(world, *w, hand, &index)) return r;
   const WorldSnapshot* snap = nullptr;
@@ -381,10 +369,7 @@ FRUSTA_API frusta_result frusta_world_get_object(frusta_world_id world, frusta_o
   if (frusta_result r = world_registry().find(world, &w)) return r;
   ObjectHandle handle;
   if (frusta_result r = object_handle(world, object, &handle)) return r;
-  if (frusta_result r = check_pointer(out, "out")) return r;
-  if (frusta_result r = check_struct_size(out->struct_size, sizeof(frusta_object_state),
-                                          "frusta_object_state"))
-    return r;
+  if (frusta_result r = check_out_struct(out, "out", "frusta_object_state")) return r;
   const WorldSnapshot* snap = nullptr;
   if (frusta_result r = latched(w, &snap)) return r;
   if (handle.slot < 0 || handle.slot >= static_cast<int32_t>(snap->objects.size()) ||

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cstring>
 #include <glm/gtc/quaternion.hpp>
 
 #include "core/validate.h"
@@ -18,12 +19,31 @@ struct Pose {
   glm::dquat rotation{1.0, 0.0, 0.0, 0.0};  // normalised
 };
 
+// What every frusta_default_*_def() starts from: zeroed (padding and reserved fields
+// too), this library's size, and the cookie check_def_input looks for.
+template <class Def>
+Def blank_def() {
+  Def def;
+  std::memset(&def, 0, sizeof def);
+  def.struct_size = sizeof(Def);
+  def.internal_value = kDefCookie;
+  return def;
+}
+
 // A def from the caller: not null, this library's size, made by its frusta_default_*_def().
 template <class Def>
 frusta_result check_def_input(const Def* def, const char* struct_name) {
   if (frusta_result r = check_pointer(def, "def")) return r;
   if (frusta_result r = check_struct_size(def->struct_size, sizeof(Def), struct_name)) return r;
   return check_def_cookie(def->internal_value, struct_name);
+}
+
+// A single out-struct from the caller: not null, and the struct_size it set before the
+// call this library's size.
+template <class Out>
+frusta_result check_out_struct(const Out* out, const char* name, const char* struct_name) {
+  if (frusta_result r = check_pointer(out, name)) return r;
+  return check_struct_size(out->struct_size, sizeof(Out), struct_name);
 }
 
 // The header's output-array rule, checked before anything is written: out_count not
