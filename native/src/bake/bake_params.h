@@ -34,6 +34,19 @@ struct BakeParams {
   uint64_t seed = 1;               // any value
 };
 
+// The bake's values between the structs that carry them by the same names: the C ABI's
+// def, the baker plugin's params and BakeParams. The def's 32-bit fields receive only
+// the defaults, so the casts lose nothing.
+template <class From, class To>
+void copy_bake_params(const From& in, To& out) {
+  out.target_error = in.target_error;
+  out.max_leaves = in.max_leaves;
+  out.branching = static_cast<decltype(out.branching)>(in.branching);
+  out.max_depth = static_cast<decltype(out.max_depth)>(in.max_depth);
+  out.error_samples = in.error_samples;
+  out.seed = in.seed;
+}
+
 enum class BakeField { kNone, kTarget, kLeaves, kBranching, kDepth, kSamples };
 
 // FRUSTA_OK, or FRUSTA_ERROR_NOT_FINITE / FRUSTA_ERROR_OUT_OF_RANGE with a message

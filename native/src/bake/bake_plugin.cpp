@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "bake/bake_params.h"
 #include "bake/baker.h"
 #include "core/error.h"
 #include "core/validate.h"
@@ -47,12 +48,7 @@ frusta_result bake(const float* vertices, int32_t vertex_count, const int32_t* i
   TriangleMesh mesh;
   if (frusta_result r = read_mesh(vertices, vertex_count, indices, index_count, &mesh)) return r;
   BakeParams p;
-  p.target_error = params.target_error;
-  p.max_leaves = params.max_leaves;
-  p.branching = params.branching;
-  p.max_depth = params.max_depth;
-  p.error_samples = params.error_samples;
-  p.seed = params.seed;
+  copy_bake_params(params, p);
   TreeFile tree;
   if (frusta_result r = bake_sphere_tree(mesh, p, nullptr, &tree, target_met)) return r;
   *file = encode_tree_file(tree);

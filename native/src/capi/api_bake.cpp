@@ -11,30 +11,9 @@
 
 using namespace frusta;
 
-namespace {
-
-BakeParams read_bake_def(const frusta_bake_def& def) {
-  BakeParams p;
-  p.target_error = def.target_error;
-  p.max_leaves = def.max_leaves;
-  p.branching = def.branching;
-  p.max_depth = def.max_depth;
-  p.error_samples = def.error_samples;
-  p.seed = def.seed;
-  return p;
-}
-
-}  // namespace
-
 FRUSTA_API frusta_bake_def frusta_default_bake_def(void) {
-  const BakeParams defaults;
   frusta_bake_def def = blank_def<frusta_bake_def>();
-  def.branching = static_cast<int32_t>(defaults.branching);
-  def.target_error = defaults.target_error;
-  def.max_leaves = defaults.max_leaves;
-  def.max_depth = static_cast<int32_t>(defaults.max_depth);
-  def.error_samples = defaults.error_samples;
-  def.seed = defaults.seed;
+  copy_bake_params(BakeParams(), def);
   return def;
 }
 
@@ -44,7 +23,8 @@ FRUSTA_API frusta_result frusta_create_sphere_tree_from_mesh(
   if (frusta_result r = check_def_input(def, "frusta_bake_def")) return r;
   if (frusta_result r = check_pointer(out_tree, "out_tree")) return r;
   // the parameters' one check, before the baker is loaded (bake/bake_params.h)
-  const BakeParams params = read_bake_def(*def);
+  BakeParams params;
+  copy_bake_params(*def, params);
   if (frusta_result r = check_bake_params(params)) return r;
   return guarded("frusta_create_sphere_tree_from_mesh", [&] {
     std::string why;
@@ -54,9 +34,8 @@ FRUSTA_API frusta_result frusta_create_sphere_tree_from_mesh(
     int64_t size = 0;
     int32_t target_met = 0;
     char error[1024] = "";
-    const frusta_bake_plugin_params plugin_params{params.target_error, params.max_leaves,
-                                                  params.branching,    params.max_depth,
-                                                  params.error_samples, params.seed};
+    frusta_bake_plugin_params plugin_params;
+    copy_bake_params(params, plugin_params);
     const frusta_result r = plugin->bake(vertices, vertex_count, indices, index_count,
                                          &plugin_params, &bytes, &size, &target_met, error,
                                          sizeof error);
