@@ -205,16 +205,15 @@ FRUSTA_API frusta_result frusta_enumerate_devices(frusta_device_info* out, int32
   return guarded("frusta_enumerate_devices", [&] {
     std::vector<DeviceInfo> found;
     enumerate_devices(&found);
-    for (int32_t i = 0; i < capacity && i < static_cast<int32_t>(found.size()); ++i) {
+    const int32_t count = static_cast<int32_t>(found.size());
+    return fill_output_array(capacity, count, out_count, [&](int32_t i) {
       const DeviceInfo& d = found[static_cast<size_t>(i)];
       frusta_device_info& o = out[i];
       o.kind = d.kind;
       o.vendor_id = d.vendor_id;
       o.product_id = d.product_id;
       store_uri(d.uri, o.uri, sizeof o.uri);
-    }
-    *out_count = static_cast<int32_t>(found.size());
-    return FRUSTA_OK;
+    });
   });
 }
 

@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: MIT
 // C ABI: hands. Each function checks every input before it changes anything.
-#include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <string>
 
 #include <glm/geometric.hpp>
@@ -105,10 +103,8 @@ FRUSTA_API frusta_result frusta_hand_get_joint_angles(frusta_hand_id hand, doubl
   HandObject* h = nullptr;
   if (frusta_result r = find_hand(hand, &h)) return r;
   if (frusta_result r = check_output_array(out, "out", capacity, out_count)) return r;
-  const int32_t n = std::min(capacity, FRUSTA_HAND_JOINT_COUNT);
-  if (n > 0) std::memcpy(out, h->state.angles.data(), sizeof(double) * static_cast<size_t>(n));
-  *out_count = FRUSTA_HAND_JOINT_COUNT;
-  return FRUSTA_OK;
+  return fill_output_array(capacity, FRUSTA_HAND_JOINT_COUNT, out_count,
+                           [&](int32_t i) { out[i] = h->state.angles[static_cast<size_t>(i)]; });
 }
 
 FRUSTA_API frusta_result frusta_hand_get_segments(frusta_hand_id hand, frusta_segment* out,
@@ -116,8 +112,7 @@ FRUSTA_API frusta_result frusta_hand_get_segments(frusta_hand_id hand, frusta_se
   HandObject* h = nullptr;
   if (frusta_result r = find_hand(hand, &h)) return r;
   if (frusta_result r = check_output_array(out, "out", capacity, out_count)) return r;
-  const int32_t n = std::min(capacity, FRUSTA_HAND_SEGMENT_COUNT);
-  for (int32_t i = 0; i < n; ++i) {
+  return fill_output_array(capacity, FRUSTA_HAND_SEGMENT_COUNT, out_count, [&](int32_t i) {
     const Segment seg = finger_segment(h->model, h->pose, i / FRUSTA_SEGMENTS_PER_FINGER,
                                        i % FRUSTA_SEGMENTS_PER_FINGER);
     frusta_segment& o = out[i];
@@ -125,9 +120,7 @@ FRUSTA_API frusta_result frusta_hand_get_segments(frusta_hand_id hand, frusta_se
     store(seg.distal, o.distal);
     o.proximal_radius = seg.proximal_radius;
     o.distal_radius = seg.distal_radius;
-  }
-  *out_count = FRUSTA_HAND_SEGMENT_COUNT;
-  return FRUSTA_OK;
+  });
 }
 
 FRUSTA_API frusta_result frusta_hand_get_palm_spheres(frusta_hand_id hand, frusta_sphere* out,
@@ -136,14 +129,11 @@ FRUSTA_API frusta_result frusta_hand_get_palm_spheres(frusta_hand_id hand, frust
   if (frusta_result r = find_hand(hand, &h)) return r;
   if (frusta_result r = check_output_array(out, "out", capacity, out_count)) return r;
   const int32_t count = static_cast<int32_t>(h->model.palm_spheres.size());
-  const int32_t n = std::min(capacity, count);
-  for (int32_t i = 0; i < n; ++i) {
+  return fill_output_array(capacity, count, out_count, [&](int32_t i) {
     const Sphere s = palm_sphere(h->model, h->pose, i);
     store(s.center, out[i].center);
     out[i].radius = s.radius;
-  }
-  *out_count = count;
-  return FRUSTA_OK;
+  });
 }
 
 FRUSTA_API frusta_result frusta_hand_point_jacobian(frusta_hand_id hand, int32_t finger,
@@ -168,9 +158,7 @@ FRUSTA_API frusta_result frusta_hand_point_jacobian(frusta_hand_id hand, int32_t
   // computed whole, copied as far as the caller's buffer reaches
   double jacobian[FRUSTA_POINT_JACOBIAN_LENGTH];
   point_jacobian(h->pose, finger, segment, world, jacobian);
-  const int32_t n = std::min(capacity, FRUSTA_POINT_JACOBIAN_LENGTH);
-  if (n > 0) std::memcpy(out_jacobian, jacobian, sizeof(double) * static_cast<size_t>(n));
   if (out_point) store(world, out_point);
-  *out_count = FRUSTA_POINT_JACOBIAN_LENGTH;
-  return FRUSTA_OK;
+  return fill_output_array(capacity, FRUSTA_POINT_JACOBIAN_LENGTH, out_count,
+                           [&](int32_t i) { out_jacobian[i] = jacobian[i]; });
 }

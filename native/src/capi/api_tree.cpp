@@ -1,6 +1,5 @@
 // SPDX-License-Identifier: MIT
 // C ABI: sphere trees (load, save, inspect, query); baking is in api_bake.cpp.
-#include <algorithm>
 #include <cstring>
 
 #include <glm/gtc/quaternion.hpp>
@@ -79,13 +78,10 @@ FRUSTA_API frusta_result frusta_sphere_tree_get_leaves(frusta_tree_id tree, frus
   if (frusta_result r = check_output_array(out, "out", capacity, out_count)) return r;
   const std::vector<Sphere>& leaves = t->file.tree.leaves;
   const int32_t count = static_cast<int32_t>(leaves.size());
-  const int32_t n = std::min(capacity, count);
-  for (int32_t i = 0; i < n; ++i) {
+  return fill_output_array(capacity, count, out_count, [&](int32_t i) {
     store(leaves[static_cast<size_t>(i)].center, out[i].center);
     out[i].radius = leaves[static_cast<size_t>(i)].radius;
-  }
-  *out_count = count;
-  return FRUSTA_OK;
+  });
 }
 
 FRUSTA_API frusta_result frusta_sphere_tree_query_segment(frusta_tree_id tree,

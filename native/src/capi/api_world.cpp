@@ -341,8 +341,7 @@ FRUSTA_API frusta_result frusta_world_get_contacts(frusta_world_id world, frusta
   const HandSnapshot* h = nullptr;
   if (frusta_result r = hand_of(*snap, index, &h)) return r;
   const int32_t kept = std::min(h->contact_count, static_cast<int32_t>(h->contacts.size()));
-  const int32_t n = std::min(capacity, kept);
-  for (int32_t i = 0; i < n; ++i) {
+  return fill_output_array(capacity, kept, out_count, [&](int32_t i) {
     const SolverContact& c = h->contacts[static_cast<size_t>(i)];
     const ContactForce& f = h->forces[static_cast<size_t>(i)];
     frusta_world_contact& o = out[i];
@@ -358,9 +357,7 @@ FRUSTA_API frusta_result frusta_world_get_contacts(frusta_world_id world, frusta
     store(c.normal, o.normal);
     store(f.normal_force, o.normal_force);
     store(f.friction, o.friction);
-  }
-  *out_count = kept;
-  return FRUSTA_OK;
+  });
 }
 
 FRUSTA_API frusta_result frusta_world_get_object(frusta_world_id world, frusta_object_id object,

@@ -3,6 +3,7 @@
 // the offending field in the thread's error and leaves *out untouched on failure.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstring>
 #include <glm/gtc/quaternion.hpp>
@@ -51,6 +52,16 @@ frusta_result check_out_struct(const Out* out, const char* name, const char* str
 // to the count and writes min(capacity, count) elements.
 frusta_result check_output_array(const void* out, const char* out_name, int32_t capacity,
                                  const int32_t* out_count);
+
+// The rest of that rule, once check_output_array passed: write(i) for each of the first
+// min(capacity, count) elements, then *out_count = count.
+template <class Write>
+frusta_result fill_output_array(int32_t capacity, int32_t count, int32_t* out_count, Write write) {
+  const int32_t n = std::min(capacity, count);
+  for (int32_t i = 0; i < n; ++i) write(i);
+  *out_count = count;
+  return FRUSTA_OK;
+}
 
 // name prefixes the field names in messages, e.g. "segment" -> "segment.distal[1]"
 frusta_result read_segment(const frusta_segment* in, const char* name, Segment* out);
