@@ -42,6 +42,24 @@ void copy_calibration(const From& from, To& to) {
   to.analog_max = from.analog_max;
 }
 
+// The link's fields as (frusta_device_def's, DeviceLinkDef's) pairs, `each` copying
+// either way. The rate limits sit apart in DeviceLinkDef::rates, so unlike the
+// calibration's fields these cannot be copied by name; one list of pairs serves both
+// read_device_def and frusta_default_device_def.
+template <class Def, class Link, class Each>
+void pair_link_fields(Def& def, Link& link, Each each) {
+  each(def.output_rate_hz, link.output_rate_hz);
+  each(def.watchdog_s, link.watchdog_s);
+  each(def.engine_timeout_s, link.engine_timeout_s);
+  each(def.host_timeout_s, link.host_timeout_s);
+  each(def.reconnect_interval_s, link.reconnect_interval_s);
+  each(def.max_force_rate, link.rates.max_force_rate);
+  each(def.max_torque_rate, link.rates.max_torque_rate);
+  each(def.max_finger_resistance, link.max_finger_resistance);
+  each(def.max_fingertip_force, link.max_fingertip_force);
+  each(def.max_joint_torque, link.max_joint_torque);
+}
+
 frusta_result in_range(double value, double low, double high, const char* field) {
   if (!std::isfinite(value))
     return fail(FRUSTA_ERROR_NOT_FINITE, "frusta_device_def.%s is %g", field, value);
@@ -109,16 +127,7 @@ frusta_result read_device_def(const frusta_device_def& in, DeviceLinkDef* link,
                               GloveCalibration* calibration) {
   if (frusta_result r = check_def_finite(in)) return r;
   DeviceLinkDef d;
-  d.output_rate_hz = in.output_rate_hz;
-  d.watchdog_s = in.watchdog_s;
-  d.engine_timeout_s = in.engine_timeout_s;
-  d.host_timeout_s = in.host_timeout_s;
-  d.reconnect_interval_s = in.reconnect_interval_s;
-  d.rates.max_force_rate = in.max_force_rate;
-  d.rates.max_torque_rate = in.max_torque_rate;
-  d.max_finger_resistance = in.max_finger_resistance;
-  d.max_fingertip_force = in.max_fingertip_force;
-  d.max_joint_torque = in.max_joint_torque;
+  pair_link_fields(in, d, [](const double& from, double& to) { to = from; });
   if (frusta_result r = zero_or_in_range(d.output_rate_hz, 1.0, 100000.0, "output_rate_hz",
                                          "the world's rate"))
     return r;
@@ -185,16 +194,7 @@ FRUSTA_API frusta_device_def frusta_default_device_def(void) {
   const DeviceLinkDef d;
   const GloveCalibration c = default_glove_calibration();
   frusta_device_def def = blank_def<frusta_device_def>();  // hand stays null: the caller names one
-  def.output_rate_hz = d.output_rate_hz;
-  def.watchdog_s = d.watchdog_s;
-  def.engine_timeout_s = d.engine_timeout_s;
-  def.host_timeout_s = d.host_timeout_s;
-  def.reconnect_interval_s = d.reconnect_interval_s;
-  def.max_force_rate = d.rates.max_force_rate;
-  def.max_torque_rate = d.rates.max_torque_rate;
-  def.max_finger_resistance = d.max_finger_resistance;
-  def.max_fingertip_force = d.max_fingertip_force;
-  def.max_joint_torque = d.max_joint_torque;
+  pair_link_fields(def, d, [](double& to, const double& from) { to = from; });
   copy_calibration(c, def);
   return def;
 }
