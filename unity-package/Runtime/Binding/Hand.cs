@@ -24,11 +24,7 @@ namespace Frusta.Binding
         {
             FrustaLibrary.EnsureCompatible();
             handle = new HandHandle();
-            FrustaHandId id;
-            FrustaResult r;
-            fixed (FrustaHandDef* d = &def) r = Native.frusta_create_hand(d, &id);
-            Errors.Check(r, "frusta_create_hand");
-            handle.Own(id);
+            handle.Create(def, Native.frusta_create_hand, "frusta_create_hand");
         }
 
         /// <summary>The native id (a value; stale once disposed).</summary>

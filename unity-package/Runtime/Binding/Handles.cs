@@ -12,16 +12,40 @@ using System.Runtime.InteropServices;
 
 namespace Frusta.Binding
 {
-    internal sealed class WorldHandle : SafeHandle
+    /// <summary>A def-only creating call (<c>frusta_create_world</c>, <c>frusta_create_hand</c>).</summary>
+    internal unsafe delegate FrustaResult CreateCall<TDef, TId>(TDef* def, TId* id)
+        where TDef : unmanaged where TId : unmanaged;
+
+    /// <summary>What the handles below share: the id they own once its creating call
+    /// succeeded. They differ only in how they destroy it.</summary>
+    internal abstract class IdHandle<TId> : SafeHandle where TId : unmanaged
     {
-        internal FrustaWorldId Id;
-        internal WorldHandle() : base(IntPtr.Zero, true) { }
+        internal TId Id;
+        protected IdHandle() : base(IntPtr.Zero, true) { }
         public override bool IsInvalid => handle == IntPtr.Zero;
-        internal void Own(FrustaWorldId id)
+
+        /// <summary>Own the id a creating call returned, or throw that call's error (the
+        /// handle then owns nothing, so it releases nothing).</summary>
+        internal void Own(FrustaResult created, TId id, string call)
         {
+            Errors.Check(created, call);
             Id = id;
             SetHandle((IntPtr)1);
         }
+
+        /// <summary>Create the object from a def and own it, as <see cref="Own"/>.</summary>
+        internal unsafe void Create<TDef>(in TDef def, CreateCall<TDef, TId> create, string call)
+            where TDef : unmanaged
+        {
+            TId id;
+            FrustaResult r;
+            fixed (TDef* d = &def) r = create(d, &id);
+            Own(r, id, call);
+        }
+    }
+
+    internal sealed class WorldHandle : IdHandle<FrustaWorldId>
+    {
         // stops the world's thread first (frusta_destroy_world does); a stale id is already gone
         protected override bool ReleaseHandle()
         {
@@ -30,16 +54,8 @@ namespace Frusta.Binding
         }
     }
 
-    internal sealed class TreeHandle : SafeHandle
+    internal sealed class TreeHandle : IdHandle<FrustaTreeId>
     {
-        internal FrustaTreeId Id;
-        internal TreeHandle() : base(IntPtr.Zero, true) { }
-        public override bool IsInvalid => handle == IntPtr.Zero;
-        internal void Own(FrustaTreeId id)
-        {
-            Id = id;
-            SetHandle((IntPtr)1);
-        }
         // worlds that use the tree keep their own reference to it natively
         protected override bool ReleaseHandle()
         {
@@ -48,16 +64,8 @@ namespace Frusta.Binding
         }
     }
 
-    internal sealed class HandHandle : SafeHandle
+    internal sealed class HandHandle : IdHandle<FrustaHandId>
     {
-        internal FrustaHandId Id;
-        internal HandHandle() : base(IntPtr.Zero, true) { }
-        public override bool IsInvalid => handle == IntPtr.Zero;
-        internal void Own(FrustaHandId id)
-        {
-            Id = id;
-            SetHandle((IntPtr)1);
-        }
         protected override bool ReleaseHandle()
         {
             Native.frusta_destroy_hand(Id);
@@ -65,19 +73,17 @@ namespace Frusta.Binding
         }
     }
 
-    internal sealed class DeviceHandle : SafeHandle
+    internal sealed class DeviceHandle : IdHandle<FrustaDeviceId>
     {
-        internal FrustaDeviceId Id;
         // the owning world's handle: a glove closes only while its world is alive
         internal WorldHandle World;
-        internal DeviceHandle() : base(IntPtr.Zero, true) { }
-        public override bool IsInvalid => handle == IntPtr.Zero;
-        internal void Own(WorldHandle world, FrustaDeviceId id)
+
+        internal void Own(WorldHandle world, FrustaResult created, FrustaDeviceId id, string call)
         {
             World = world;
-            Id = id;
-            SetHandle((IntPtr)1);
+            Own(created, id, call);
         }
+
         // zeroes the glove's output and joins its thread. A disposed world closed its gloves
         // itself (frusta_destroy_world does), so there is nothing left to close; holding the
         // world's count keeps another thread from destroying it during the close

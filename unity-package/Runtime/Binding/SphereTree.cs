@@ -43,8 +43,7 @@ namespace Frusta.Binding
             FrustaTreeId id;
             FrustaResult r;
             fixed (byte* p = text) r = Native.frusta_create_sphere_tree_from_file(p, &id);
-            Errors.Check(r, "frusta_create_sphere_tree_from_file");
-            h.Own(id);
+            h.Own(r, id, "frusta_create_sphere_tree_from_file");
             return new SphereTree(h);
         }
 
@@ -78,8 +77,7 @@ namespace Frusta.Binding
             fixed (int* i = indices)
             fixed (FrustaBakeDef* d = &def)
                 r = Native.frusta_create_sphere_tree_from_mesh(v, vertices.Length / 3, i, indices.Length, d, &id);
-            Errors.Check(r, "frusta_create_sphere_tree_from_mesh");
-            h.Own(id);
+            h.Own(r, id, "frusta_create_sphere_tree_from_mesh");
             return new SphereTree(h);
         }
 

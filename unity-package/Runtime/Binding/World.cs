@@ -40,11 +40,7 @@ namespace Frusta.Binding
         {
             FrustaLibrary.EnsureCompatible();
             handle = new WorldHandle();
-            FrustaWorldId id;
-            FrustaResult r;
-            fixed (FrustaWorldDef* d = &def) r = Native.frusta_create_world(d, &id);
-            Errors.Check(r, "frusta_create_world");
-            handle.Own(id);
+            handle.Create(def, Native.frusta_create_world, "frusta_create_world");
             maxContactsPerHand = def.MaxContactsPerHand;
             RateHz = def.RateHz;
         }
@@ -380,8 +376,7 @@ namespace Frusta.Binding
                 fixed (byte* u = text)
                 fixed (FrustaDeviceDef* d = &def)
                     r = Native.frusta_create_device(handle.Id, u, d, &id);
-                Errors.Check(r, "frusta_create_device");
-                device.Own(handle, id);
+                device.Own(handle, r, id, "frusta_create_device");
             }
             return new Device(this, device, uri, def.Hand);
         }
