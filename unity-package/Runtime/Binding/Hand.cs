@@ -57,54 +57,28 @@ namespace Frusta.Binding
         /// min(destination.Length, 20) (<c>frusta_hand_get_joint_angles</c>).</summary>
         /// <param name="destination">Receives the angles; <see cref="FrustaConstants.HandJointCount"/> holds all.</param>
         /// <returns>How many angles the hand has (20).</returns>
-        public int GetJointAngles(Span<double> destination)
-        {
-            int count;
-            using (new HandleUse(handle))
-            fixed (double* a = destination)
-                Errors.Check(Native.frusta_hand_get_joint_angles(handle.Id, a, destination.Length, &count),
-                             "frusta_hand_get_joint_angles");
-            return count;
-        }
+        public int GetJointAngles(Span<double> destination) =>
+            handle.CopyOut(destination, (id, a, capacity, count) => Native.frusta_hand_get_joint_angles(id, a, capacity, count),
+                           "frusta_hand_get_joint_angles");
 
         /// <summary>Copy every finger segment in world coordinates, finger-major (thumb first),
         /// proximal to distal: the first min(destination.Length, 15) (<c>frusta_hand_get_segments</c>).</summary>
         /// <param name="destination">Receives the segments; <see cref="FrustaConstants.HandSegmentCount"/> holds all.</param>
         /// <returns>How many segments the hand has (15).</returns>
-        public int GetSegments(Span<FrustaSegment> destination)
-        {
-            int count;
-            using (new HandleUse(handle))
-            fixed (FrustaSegment* s = destination)
-                Errors.Check(Native.frusta_hand_get_segments(handle.Id, s, destination.Length, &count), "frusta_hand_get_segments");
-            return count;
-        }
+        public int GetSegments(Span<FrustaSegment> destination) =>
+            handle.CopyOut(destination, (id, s, capacity, count) => Native.frusta_hand_get_segments(id, s, capacity, count),
+                           "frusta_hand_get_segments");
 
         /// <summary>The number of palm spheres.</summary>
-        public int PalmSphereCount
-        {
-            get
-            {
-                int count;
-                using (new HandleUse(handle))
-                    Errors.Check(Native.frusta_hand_get_palm_spheres(handle.Id, null, 0, &count), "frusta_hand_get_palm_spheres");
-                return count;
-            }
-        }
+        public int PalmSphereCount => GetPalmSpheres(default);
 
         /// <summary>Copy the palm's spheres in world coordinates: the first min(destination.Length, count)
         /// (<c>frusta_hand_get_palm_spheres</c>).</summary>
         /// <param name="destination">Receives the spheres; <see cref="PalmSphereCount"/> holds all.</param>
         /// <returns>How many palm spheres the hand has.</returns>
-        public int GetPalmSpheres(Span<FrustaSphere> destination)
-        {
-            int count;
-            using (new HandleUse(handle))
-            fixed (FrustaSphere* s = destination)
-                Errors.Check(Native.frusta_hand_get_palm_spheres(handle.Id, s, destination.Length, &count),
-                             "frusta_hand_get_palm_spheres");
-            return count;
-        }
+        public int GetPalmSpheres(Span<FrustaSphere> destination) =>
+            handle.CopyOut(destination, (id, s, capacity, count) => Native.frusta_hand_get_palm_spheres(id, s, capacity, count),
+                           "frusta_hand_get_palm_spheres");
 
         /// <summary>
         /// The Jacobian of a material point of one segment with respect to the finger's four joint

@@ -16,6 +16,11 @@ namespace Frusta.Binding
     internal unsafe delegate FrustaResult CreateCall<TDef, TId>(TDef* def, TId* id)
         where TDef : unmanaged where TId : unmanaged;
 
+    /// <summary>A call that copies one of an object's arrays under the C API's output-array rule
+    /// (<c>frusta_hand_get_segments</c>, <c>frusta_sphere_tree_get_leaves</c>, ...).</summary>
+    internal unsafe delegate FrustaResult ArrayCall<TId, T>(TId id, T* destination, int capacity, int* count)
+        where TId : unmanaged where T : unmanaged;
+
     /// <summary>What the handles below share: the id they own once its creating call
     /// succeeded. They differ only in how they destroy it.</summary>
     internal abstract class IdHandle<TId> : SafeHandle where TId : unmanaged
@@ -41,6 +46,19 @@ namespace Frusta.Binding
             FrustaResult r;
             fixed (TDef* d = &def) r = create(d, &id);
             Own(r, id, call);
+        }
+
+        /// <summary>Copy the first min(destination.Length, count) elements of one of the object's
+        /// arrays, holding the handle for the call; returns the count. Allocation-free with a
+        /// lambda that captures nothing (the compiler caches it).</summary>
+        internal unsafe int CopyOut<T>(Span<T> destination, ArrayCall<TId, T> copy, string call)
+            where T : unmanaged
+        {
+            int count;
+            using (new HandleUse(this))
+            fixed (T* p = destination)
+                Errors.Check(copy(Id, p, destination.Length, &count), call);
+            return count;
         }
     }
 

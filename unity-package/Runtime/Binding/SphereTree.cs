@@ -110,30 +110,15 @@ namespace Frusta.Binding
         }
 
         /// <summary>The number of leaf spheres.</summary>
-        public int LeafCount
-        {
-            get
-            {
-                int count;
-                using (new HandleUse(handle))
-                    Errors.Check(Native.frusta_sphere_tree_get_leaves(handle.Id, null, 0, &count), "frusta_sphere_tree_get_leaves");
-                return count;
-            }
-        }
+        public int LeafCount => GetLeaves(default);
 
         /// <summary>Copy the leaf spheres (object frame, metres) in their stable numbering: the first
         /// min(destination.Length, <see cref="LeafCount"/>) (<c>frusta_sphere_tree_get_leaves</c>). Thread: any.</summary>
         /// <param name="destination">Receives the leaves; <see cref="LeafCount"/> holds all.</param>
         /// <returns>How many leaves the tree has, which exceeds destination.Length when it was short.</returns>
-        public int GetLeaves(Span<FrustaSphere> destination)
-        {
-            int count;
-            using (new HandleUse(handle))
-            fixed (FrustaSphere* p = destination)
-                Errors.Check(Native.frusta_sphere_tree_get_leaves(handle.Id, p, destination.Length, &count),
-                             "frusta_sphere_tree_get_leaves");
-            return count;
-        }
+        public int GetLeaves(Span<FrustaSphere> destination) =>
+            handle.CopyOut(destination, (id, p, capacity, count) => Native.frusta_sphere_tree_get_leaves(id, p, capacity, count),
+                           "frusta_sphere_tree_get_leaves");
 
         /// <summary>
         /// Every leaf (or, with <paramref name="maxLevel"/> &gt;= 0, every node at that level) within

@@ -236,14 +236,7 @@ namespace Frusta.Binding
         /// <summary>How many contacts one hand has in the latched step (at most <see cref="MaxContactsPerHand"/>).</summary>
         /// <param name="hand">The id from <see cref="CreateHand"/>.</param>
         /// <returns>The count.</returns>
-        public int GetContactCount(FrustaHandId hand)
-        {
-            int count;
-            using (new HandleUse(handle))
-            lock (readGate)
-                Errors.Check(Native.frusta_world_get_contacts(handle.Id, hand, null, 0, &count), "frusta_world_get_contacts");
-            return count;
-        }
+        public int GetContactCount(FrustaHandId hand) => GetContacts(hand, default);
 
         /// <summary>Copy one hand's contacts of the latched step (<c>frusta_world_get_contacts</c>): the first
         /// min(destination.Length, count) of them. Allocation-free: reuse a buffer of
