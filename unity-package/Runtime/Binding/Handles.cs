@@ -22,12 +22,22 @@ namespace Frusta.Binding
         where TId : unmanaged where T : unmanaged;
 
     /// <summary>What the handles below share: the id they own once its creating call
-    /// succeeded. They differ only in how they destroy it.</summary>
+    /// succeeded. They differ only in how they destroy it (<see cref="Destroy"/>).</summary>
     internal abstract class IdHandle<TId> : SafeHandle where TId : unmanaged
     {
         internal TId Id;
         protected IdHandle() : base(IntPtr.Zero, true) { }
         public override bool IsInvalid => handle == IntPtr.Zero;
+
+        /// <summary>Destroy the object of <see cref="Id"/>; a stale id names nothing left to destroy.</summary>
+        protected abstract void Destroy();
+
+        // the id is released whatever the destroy said: a failure means it was already gone
+        protected override bool ReleaseHandle()
+        {
+            Destroy();
+            return true;
+        }
 
         /// <summary>Own the id a creating call returned, or throw that call's error (the
         /// handle then owns nothing, so it releases nothing).</summary>
@@ -64,31 +74,19 @@ namespace Frusta.Binding
 
     internal sealed class WorldHandle : IdHandle<FrustaWorldId>
     {
-        // stops the world's thread first (frusta_destroy_world does); a stale id is already gone
-        protected override bool ReleaseHandle()
-        {
-            Native.frusta_destroy_world(Id);
-            return true;
-        }
+        // stops the world's thread first (frusta_destroy_world does)
+        protected override void Destroy() => Native.frusta_destroy_world(Id);
     }
 
     internal sealed class TreeHandle : IdHandle<FrustaTreeId>
     {
         // worlds that use the tree keep their own reference to it natively
-        protected override bool ReleaseHandle()
-        {
-            Native.frusta_destroy_sphere_tree(Id);
-            return true;
-        }
+        protected override void Destroy() => Native.frusta_destroy_sphere_tree(Id);
     }
 
     internal sealed class HandHandle : IdHandle<FrustaHandId>
     {
-        protected override bool ReleaseHandle()
-        {
-            Native.frusta_destroy_hand(Id);
-            return true;
-        }
+        protected override void Destroy() => Native.frusta_destroy_hand(Id);
     }
 
     internal sealed class DeviceHandle : IdHandle<FrustaDeviceId>
@@ -105,7 +103,7 @@ namespace Frusta.Binding
         // zeroes the glove's output and joins its thread. A disposed world closed its gloves
         // itself (frusta_destroy_world does), so there is nothing left to close; holding the
         // world's count keeps another thread from destroying it during the close
-        protected override bool ReleaseHandle()
+        protected override void Destroy()
         {
             bool added = false;
             try
@@ -114,7 +112,7 @@ namespace Frusta.Binding
             }
             catch (ObjectDisposedException)
             {
-                return true;
+                return;
             }
             try
             {
@@ -124,7 +122,6 @@ namespace Frusta.Binding
             {
                 if (added) World.DangerousRelease();
             }
-            return true;
         }
     }
 
