@@ -225,55 +225,59 @@ namespace Frusta.Binding
                 $"device id {handle.Id} names no open glove: its world was disposed, which closed it", call);
     }
 
-    /// <summary>What <see cref="Device.StateChanged"/> reports.</summary>
-    public sealed class DeviceStateChangedEventArgs : EventArgs
+    /// <summary>What <see cref="Device"/>'s events share: a value as of the previous
+    /// <see cref="Device.Poll"/>, the value now, and the status that showed the change.</summary>
+    /// <typeparam name="T">The value that changed.</typeparam>
+    public abstract class DeviceChangeEventArgs<T> : EventArgs
     {
         readonly FrustaDeviceStatus status;
 
-        /// <summary>A change of a glove's state.</summary>
-        /// <param name="oldState">The state before.</param>
-        /// <param name="newState">The state now.</param>
-        /// <param name="status">The status that showed the change.</param>
-        public DeviceStateChangedEventArgs(FrustaDeviceState oldState, FrustaDeviceState newState, in FrustaDeviceStatus status)
+        private protected DeviceChangeEventArgs(T before, T now, in FrustaDeviceStatus status)
         {
-            OldState = oldState;
-            NewState = newState;
+            Before = before;
+            Now = now;
             this.status = status;
         }
 
-        /// <summary>The state as of the previous <see cref="Device.Poll"/>.</summary>
-        public FrustaDeviceState OldState { get; }
+        private protected T Before { get; }
 
-        /// <summary>The state now.</summary>
-        public FrustaDeviceState NewState { get; }
+        private protected T Now { get; }
 
         /// <summary>The status that showed the change (its counters and rates at that poll).</summary>
         public ref readonly FrustaDeviceStatus Status => ref status;
     }
 
-    /// <summary>What <see cref="Device.WatchdogChanged"/> reports.</summary>
-    public sealed class DeviceWatchdogChangedEventArgs : EventArgs
+    /// <summary>What <see cref="Device.StateChanged"/> reports.</summary>
+    public sealed class DeviceStateChangedEventArgs : DeviceChangeEventArgs<FrustaDeviceState>
     {
-        readonly FrustaDeviceStatus status;
+        /// <summary>A change of a glove's state.</summary>
+        /// <param name="oldState">The state before.</param>
+        /// <param name="newState">The state now.</param>
+        /// <param name="status">The status that showed the change.</param>
+        public DeviceStateChangedEventArgs(FrustaDeviceState oldState, FrustaDeviceState newState, in FrustaDeviceStatus status)
+            : base(oldState, newState, status) { }
 
+        /// <summary>The state as of the previous <see cref="Device.Poll"/>.</summary>
+        public FrustaDeviceState OldState => Before;
+
+        /// <summary>The state now.</summary>
+        public FrustaDeviceState NewState => Now;
+    }
+
+    /// <summary>What <see cref="Device.WatchdogChanged"/> reports.</summary>
+    public sealed class DeviceWatchdogChangedEventArgs : DeviceChangeEventArgs<FrustaWatchdogReason>
+    {
         /// <summary>A change of the reason a glove's output is held at zero.</summary>
         /// <param name="oldReason">The reason before.</param>
         /// <param name="newReason">The reason now (<see cref="FrustaWatchdogReason.None"/>: released).</param>
         /// <param name="status">The status that showed the change.</param>
         public DeviceWatchdogChangedEventArgs(FrustaWatchdogReason oldReason, FrustaWatchdogReason newReason, in FrustaDeviceStatus status)
-        {
-            OldReason = oldReason;
-            NewReason = newReason;
-            this.status = status;
-        }
+            : base(oldReason, newReason, status) { }
 
         /// <summary>The reason as of the previous <see cref="Device.Poll"/>.</summary>
-        public FrustaWatchdogReason OldReason { get; }
+        public FrustaWatchdogReason OldReason => Before;
 
         /// <summary>The reason now; <see cref="FrustaWatchdogReason.None"/> when the output is released.</summary>
-        public FrustaWatchdogReason NewReason { get; }
-
-        /// <summary>The status that showed the change (its counters and rates at that poll).</summary>
-        public ref readonly FrustaDeviceStatus Status => ref status;
+        public FrustaWatchdogReason NewReason => Now;
     }
 }
