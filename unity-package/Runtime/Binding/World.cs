@@ -227,10 +227,7 @@ namespace Frusta.Binding
         public void GetHand(FrustaHandId hand, ref FrustaWorldHand output)
         {
             output.struct_size = sizeof(FrustaWorldHand);
-            using (new HandleUse(handle))
-            lock (readGate)
-            fixed (FrustaWorldHand* h = &output)
-                Errors.Check(Native.frusta_world_get_hand(handle.Id, hand, h), "frusta_world_get_hand");
+            ReadLatched(hand, ref output, (world, h, o) => Native.frusta_world_get_hand(world, h, o), "frusta_world_get_hand");
         }
 
         /// <summary>How many contacts one hand has in the latched step (at most <see cref="MaxContactsPerHand"/>).</summary>
@@ -276,10 +273,7 @@ namespace Frusta.Binding
         public void GetObject(FrustaObjectId id, ref FrustaObjectState output)
         {
             output.struct_size = sizeof(FrustaObjectState);
-            using (new HandleUse(handle))
-            lock (readGate)
-            fixed (FrustaObjectState* o = &output)
-                Errors.Check(Native.frusta_world_get_object(handle.Id, id, o), "frusta_world_get_object");
+            ReadLatched(id, ref output, (world, i, o) => Native.frusta_world_get_object(world, i, o), "frusta_world_get_object");
         }
 
         /// <summary>A snapshot buffer sized for this world's hands and contacts, for
@@ -372,6 +366,20 @@ namespace Frusta.Binding
                 device.Own(handle, r, id, "frusta_create_device");
             }
             return new Device(this, device, uri, def.Hand);
+        }
+
+        unsafe delegate FrustaResult LatchedRead<TKey, T>(FrustaWorldId world, TKey key, T* output)
+            where TKey : unmanaged where T : unmanaged;
+
+        // one part of the latched step into output, under the handle and the read gate as every
+        // read of it; allocation-free with a lambda that captures nothing (the compiler caches it)
+        void ReadLatched<TKey, T>(TKey key, ref T output, LatchedRead<TKey, T> read, string call)
+            where TKey : unmanaged where T : unmanaged
+        {
+            using (new HandleUse(handle))
+            lock (readGate)
+            fixed (T* o = &output)
+                Errors.Check(read(handle.Id, key, o), call);
         }
 
         // whether an id's world0 names this world (its slot + 1 and its generation's low byte)
