@@ -57,6 +57,15 @@ namespace Frusta.Binding
         /// <see cref="FrustaConstants.AbiVersion"/> once <see cref="EnsureCompatible"/> passed. Thread: any.</summary>
         public static int AbiVersion => Native.frusta_abi_version();
 
+        /// <summary>A native call made only once <see cref="EnsureCompatible"/> passed, as a call
+        /// that returns a mirrored struct by value must be (before, its layout may not be the
+        /// library's). Allocation-free with a lambda that captures nothing.</summary>
+        internal static T Compatible<T>(Func<T> call)
+        {
+            EnsureCompatible();
+            return call();
+        }
+
         /// <summary>
         /// Check once per process that the native library has this binding's ABI
         /// (<c>frusta_check_abi</c>) and that every mirrored struct has the native size

@@ -48,14 +48,7 @@ namespace Frusta.Binding
     {
         /// <summary>The library's default hand (<c>frusta_default_hand_def</c>): a right hand of
         /// 50th-percentile adult size. Thread: any.</summary>
-        public static FrustaHandDef Default
-        {
-            get
-            {
-                FrustaLibrary.EnsureCompatible();
-                return Native.frusta_default_hand_def();
-            }
-        }
+        public static FrustaHandDef Default => FrustaLibrary.Compatible(() => Native.frusta_default_hand_def());
 
         /// <summary>Refill the geometry (segment lengths, joint radii, bases, palm) from a hand
         /// length and breadth with the library's anthropometric proportions; side and joint limits
@@ -178,14 +171,7 @@ namespace Frusta.Binding
     public partial struct FrustaBakeDef
     {
         /// <summary>The library's defaults (<c>frusta_default_bake_def</c>). Thread: any.</summary>
-        public static FrustaBakeDef Default
-        {
-            get
-            {
-                FrustaLibrary.EnsureCompatible();
-                return Native.frusta_default_bake_def();
-            }
-        }
+        public static FrustaBakeDef Default => FrustaLibrary.Compatible(() => Native.frusta_default_bake_def());
     }
 
     /// <remarks>From <see cref="SphereTree.Info"/>.</remarks>
@@ -198,14 +184,7 @@ namespace Frusta.Binding
     public partial struct FrustaWorldDef
     {
         /// <summary>The library's defaults (<c>frusta_default_world_def</c>). Thread: any.</summary>
-        public static FrustaWorldDef Default
-        {
-            get
-            {
-                FrustaLibrary.EnsureCompatible();
-                return Native.frusta_default_world_def();
-            }
-        }
+        public static FrustaWorldDef Default => FrustaLibrary.Compatible(() => Native.frusta_default_world_def());
     }
 
     public partial struct FrustaObjectDef
@@ -219,14 +198,7 @@ namespace Frusta.Binding
         }
 
         /// <summary>The library's defaults (<c>frusta_default_object_def</c>). Thread: any.</summary>
-        public static FrustaObjectDef Default
-        {
-            get
-            {
-                FrustaLibrary.EnsureCompatible();
-                return Native.frusta_default_object_def();
-            }
-        }
+        public static FrustaObjectDef Default => FrustaLibrary.Compatible(() => Native.frusta_default_object_def());
     }
 
     /// <remarks>Filled by <see cref="World.GetHand"/>. The graphic hand is the displayed one (it
@@ -338,14 +310,7 @@ namespace Frusta.Binding
         /// <see cref="Hand"/> to an id from <see cref="World.CreateHand"/>), the world's
         /// rate, the timeouts and limits above, and a calibration from a straight hand (raw 0, 0 rad)
         /// to a fist (raw 4095). Thread: any.</summary>
-        public static FrustaDeviceDef Default
-        {
-            get
-            {
-                FrustaLibrary.EnsureCompatible();
-                return Native.frusta_default_device_def();
-            }
-        }
+        public static FrustaDeviceDef Default => FrustaLibrary.Compatible(() => Native.frusta_default_device_def());
 
         static int Flexion(FrustaFinger finger, int joint)
         {
