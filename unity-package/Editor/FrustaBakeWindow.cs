@@ -4,6 +4,7 @@ using System.Diagnostics;
 using System.IO;
 using System.Threading.Tasks;
 using Frusta.Binding;
+using Frusta.Unity;
 using UnityEditor;
 using UnityEngine;
 
@@ -65,17 +66,7 @@ namespace Frusta.Editor
             if (string.IsNullOrEmpty(path)) return;
 
             // Unity's left-handed mesh to Frusta's right-handed metres; the winding turns with it
-            Vector3[] v = mesh.vertices;
-            var vertices = new float[v.Length * 3];
-            for (int i = 0; i < v.Length; ++i)
-            {
-                Vector3d p = CoordinateConversion.VectorFromUnity(new Vector3d(v[i].x, v[i].y, v[i].z)) * unitsToMetres;
-                vertices[3 * i] = (float)p.X;
-                vertices[3 * i + 1] = (float)p.Y;
-                vertices[3 * i + 2] = (float)p.Z;
-            }
-            int[] indices = mesh.triangles;
-            CoordinateConversion.FlipWinding(indices);
+            mesh.ToFrustaMesh(Vector3.one * unitsToMetres, out float[] vertices, out int[] indices);
             FrustaBakeDef def = FrustaBakeDef.Default;
             def.TargetError = targetErrorMm / 1000.0;
             def.MaxLeaves = maxLeaves;

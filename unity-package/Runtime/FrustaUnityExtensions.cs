@@ -40,6 +40,31 @@ namespace Frusta.Unity
         public static FrustaPose ToFrustaPose(this Transform t) =>
             new FrustaPose(t.position.ToFrustaVector(), t.rotation.ToFrustaRotation());
 
+        /// <summary>A mesh as <see cref="SphereTree.Bake(System.ReadOnlySpan{float}, System.ReadOnlySpan{int}, in FrustaBakeDef)"/>
+        /// takes it: each vertex scaled per axis, then in Frusta's frame, and each triangle's winding
+        /// turned to match (<see cref="CoordinateConversion.FlipWinding"/>).</summary>
+        /// <param name="mesh">A readable mesh.</param>
+        /// <param name="scale">Metres per mesh unit along each of the mesh's axes.</param>
+        /// <param name="vertices">xyz triples, metres.</param>
+        /// <param name="indices">Three per triangle, counter-clockwise seen from outside.</param>
+        public static void ToFrustaMesh(this Mesh mesh, Vector3 scale, out float[] vertices, out int[] indices)
+        {
+            Vector3[] v = mesh.vertices;
+            vertices = new float[v.Length * 3];
+            for (int i = 0; i < v.Length; ++i)
+            {
+                // scaled in double: the product of two floats is exact there, so each vertex is
+                // rounded to float once
+                Vector3d p = CoordinateConversion.VectorFromUnity(
+                    new Vector3d((double)v[i].x * scale.x, (double)v[i].y * scale.y, (double)v[i].z * scale.z));
+                vertices[3 * i] = (float)p.X;
+                vertices[3 * i + 1] = (float)p.Y;
+                vertices[3 * i + 2] = (float)p.Z;
+            }
+            indices = mesh.triangles;
+            CoordinateConversion.FlipWinding(indices);
+        }
+
         /// <summary>Put a transform at a Frusta pose (world space).</summary>
         public static void SetFrustaPose(this Transform t, in FrustaPose pose) =>
             t.SetPositionAndRotation(pose.Position.ToUnityVector(), pose.Rotation.ToUnityRotation());

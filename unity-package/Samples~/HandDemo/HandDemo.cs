@@ -114,18 +114,7 @@ namespace Frusta.Samples
 
         void Bake(GameObject view, Vector3 size, bool dynamic)
         {
-            Mesh mesh = view.GetComponent<MeshFilter>().sharedMesh;
-            var vertices = new float[mesh.vertexCount * 3];
-            Vector3[] v = mesh.vertices;
-            for (int i = 0; i < v.Length; ++i)
-            {
-                Vector3d p = Vector3.Scale(v[i], size).ToFrustaVector();
-                vertices[3 * i] = (float)p.X;
-                vertices[3 * i + 1] = (float)p.Y;
-                vertices[3 * i + 2] = (float)p.Z;
-            }
-            int[] indices = mesh.triangles;
-            CoordinateConversion.FlipWinding(indices);
+            view.GetComponent<MeshFilter>().sharedMesh.ToFrustaMesh(size, out float[] vertices, out int[] indices);
             FrustaBakeDef bake = FrustaBakeDef.Default;
             bake.TargetError = 0.001;
             bake.ErrorSamples = 10000;
