@@ -4,9 +4,10 @@
 #include <map>
 #include <stdexcept>
 
+#include "core/error.h"
+
 #if defined(FRUSTA_HAVE_BAKER)
 #include "bake/baker.h"
-#include "core/error.h"
 #include "meshes/meshes.h"
 #endif
 
