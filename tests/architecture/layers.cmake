@@ -9,13 +9,14 @@ set(allowed
   "geometry:core"
   "spheretree:core geometry"
   "hand:core geometry"
+  "tracking:core geometry hand"
   "bake:core geometry spheretree"
   "solver:core geometry spheretree hand"
   "forces:core geometry spheretree hand solver"
   "port:core geometry hand solver forces"
-  "runtime:core geometry spheretree hand solver forces port"
+  "runtime:core geometry spheretree hand tracking solver forces port"
   "devices:core geometry hand solver forces port"
-  "capi:core geometry spheretree hand bake solver forces port runtime devices frusta")
+  "capi:core geometry spheretree hand tracking bake solver forces port runtime devices frusta")
 
 set(violations "")
 set(known "")

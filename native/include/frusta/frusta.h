@@ -307,6 +307,84 @@ FRUSTA_API frusta_result frusta_hand_point_jacobian(frusta_hand_id hand, int32_t
                                                     double* out_point, double* out_jacobian,
                                                     int32_t capacity, int32_t* out_count);
 
+/* ---------------------------------------------------------------- tracked hands
+ * Hand tracking (OpenXR's XR_EXT_hand_tracking, Unity's XR Hands, camera trackers)
+ * reports joints, not angles. A hand fitter turns one sample of tracked joints into
+ * what a world hand takes (frusta_world_set_haptic): the palm pose and the
+ * FRUSTA_HAND_JOINT_COUNT joint angles of a given hand def, clamped into its limits,
+ * with a residual per finger. Two layouts (frusta_joint_layout):
+ *
+ *   FRUSTA_JOINT_LAYOUT_XR (26 joints, XrHandJointEXT's order): 0 palm, 1 wrist,
+ *     2..5 thumb metacarpal, proximal, distal, tip, then index, middle, ring, little
+ *     (6.., 11.., 16.., 21..) each metacarpal, proximal, intermediate, distal, tip.
+ *     Each joint a pose with OpenXR's axes: -Z along the bone that starts at the
+ *     joint, towards the tip (a tip: along the last bone); +Y out of the back of the
+ *     finger (of the hand, for palm, wrist and metacarpals); X = Y cross Z.
+ *   FRUSTA_JOINT_LAYOUT_KEYPOINTS (21 positions, MediaPipe's and MANO's order):
+ *     0 wrist, 1..4 thumb CMC, MCP, IP, tip, then index, middle, ring, little
+ *     (5.., 9.., 13.., 17..) each MCP, PIP, DIP, tip. Orientations are ignored.
+ *
+ * Where the joints sit on a Frusta hand (frusta_hand_def's hand frame; a left hand
+ * mirrors y): the thumb's chain CMC, MCP, IP, tip is XR's thumb metacarpal, proximal,
+ * distal, tip; a finger's MCP, PIP, DIP, tip is XR's proximal, intermediate, distal,
+ * tip; a chain joint is the centre of its joint ball (first joint: base_position), and
+ * a tip is the fingertip's end: the tip hemisphere's centre plus its radius along the
+ * last segment. Palm-rigid joints: the wrist at the hand frame's origin with the hand
+ * frame's axes (-Z = +x, +Y = +z); a finger's metacarpal joint (its carpometacarpal
+ * joint) on the line from the wrist to its MCP joint, 0.16 of the way, oriented along
+ * that line with +Y nearest +z; the palm at the middle of the middle finger's
+ * metacarpal, oriented as it. A joint's radius: its ball's (metacarpal: the MCP
+ * ball's; palm and wrist: half the palm's thickness). frusta_hand_joints_from_pose
+ * makes exactly these joints, and a fitter fits them back exactly.
+ *
+ * The fit: the palm is the weighted least-squares rigid fit of the palm-rigid joints
+ * present (XR: palm, wrist, the metacarpals, the thumb's metacarpal and the fingers'
+ * proximal joints; keypoints: wrist, thumb CMC and the four MCPs), their orientations
+ * joining in by def.orientation_weight, and alone when fewer than three points that are
+ * not in a line are present. Each finger is then fit to its moving joints (XR:
+ * proximal..tip of the thumb, intermediate..tip of the others; keypoints: MCP..tip of
+ * the thumb, PIP..tip of the others) by an analytic guess refined by damped
+ * Gauss-Newton steps within the joint limits. A joint counts when its flags have
+ * FRUSTA_JOINT_POSITION_VALID (and FRUSTA_JOINT_POSITION_TRACKED with
+ * def.require_tracked). What too few joints determine keeps its last good value and
+ * says so (frusta_fit_flag): a finger needs two moving joints; the angles beyond its
+ * last present joint are kept; a held palm holds every finger.
+ */
+
+#ifndef FRUSTA_BASE_TRACKING
+#define FRUSTA_BASE_TRACKING
+/** Joints of FRUSTA_JOINT_LAYOUT_XR: OpenXR's XR_HAND_JOINT_COUNT_EXT. */
+#define FRUSTA_XR_JOINT_COUNT 26
+/** Joints of FRUSTA_JOINT_LAYOUT_KEYPOINTS. */
+#define FRUSTA_KEYPOINT_COUNT 21
+/** How tracked joints are laid out (see the section's comment). */
+typedef enum frusta_joint_layout {
+  FRUSTA_JOINT_LAYOUT_XR = 0,       /* OpenXR's 26 joint poses, XrHandJointEXT order */
+  FRUSTA_JOINT_LAYOUT_KEYPOINTS = 1 /* 21 keypoint positions, MediaPipe/MANO order */
+} frusta_joint_layout;
+/** What a tracked joint's fields hold: bits of frusta_tracked_joint.flags, with the
+ *  values of OpenXR's XrSpaceLocationFlags (pass xrLocateHandJointsEXT's locationFlags
+ *  as they are). */
+typedef enum frusta_joint_flag {
+  FRUSTA_JOINT_ORIENTATION_VALID = 1,   /* rotation holds a pose */
+  FRUSTA_JOINT_POSITION_VALID = 2,      /* position holds a position */
+  FRUSTA_JOINT_ORIENTATION_TRACKED = 4, /* rotation is tracked, not inferred */
+  FRUSTA_JOINT_POSITION_TRACKED = 8     /* position is tracked, not inferred */
+} frusta_joint_flag;
+/** How a fit came about: bits of frusta_hand_fit.palm_flags and finger_flags. */
+typedef enum frusta_fit_flag {
+  FRUSTA_FIT_HELD = 1,        /* too few joints present: the last good value is given (a
+                                 finger's too when the palm is held) */
+  FRUSTA_FIT_PARTIAL = 2,     /* a finger's angles beyond its last present joint kept their
+                                 last good values */
+  FRUSTA_FIT_CLAMPED = 4,     /* a joint limit stopped an angle the joints ask beyond */
+  FRUSTA_FIT_NO_HISTORY = 8,  /* held before any good fit: the rest pose, at the joints'
+                                 origin; do not drive a hand with it */
+  FRUSTA_FIT_ORIENTATION = 16 /* the palm's rotation came from joint orientations alone:
+                                 fewer than three points out of line were present */
+} frusta_fit_flag;
+#endif /* FRUSTA_BASE_TRACKING */
+
 /* ---------------------------------------------------------------- geometry queries */
 
 /** Which part of a segment solid is nearest to a sphere. */

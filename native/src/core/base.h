@@ -64,6 +64,40 @@ typedef enum frusta_finger {
 #define FRUSTA_PALM_DOF 6
 #endif /* FRUSTA_BASE_HAND */
 
+#ifndef FRUSTA_BASE_TRACKING
+#define FRUSTA_BASE_TRACKING
+/** Joints of FRUSTA_JOINT_LAYOUT_XR: OpenXR's XR_HAND_JOINT_COUNT_EXT. */
+#define FRUSTA_XR_JOINT_COUNT 26
+/** Joints of FRUSTA_JOINT_LAYOUT_KEYPOINTS. */
+#define FRUSTA_KEYPOINT_COUNT 21
+/** How tracked joints are laid out (see the section's comment). */
+typedef enum frusta_joint_layout {
+  FRUSTA_JOINT_LAYOUT_XR = 0,       /* OpenXR's 26 joint poses, XrHandJointEXT order */
+  FRUSTA_JOINT_LAYOUT_KEYPOINTS = 1 /* 21 keypoint positions, MediaPipe/MANO order */
+} frusta_joint_layout;
+/** What a tracked joint's fields hold: bits of frusta_tracked_joint.flags, with the
+ *  values of OpenXR's XrSpaceLocationFlags (pass xrLocateHandJointsEXT's locationFlags
+ *  as they are). */
+typedef enum frusta_joint_flag {
+  FRUSTA_JOINT_ORIENTATION_VALID = 1,   /* rotation holds a pose */
+  FRUSTA_JOINT_POSITION_VALID = 2,      /* position holds a position */
+  FRUSTA_JOINT_ORIENTATION_TRACKED = 4, /* rotation is tracked, not inferred */
+  FRUSTA_JOINT_POSITION_TRACKED = 8     /* position is tracked, not inferred */
+} frusta_joint_flag;
+/** How a fit came about: bits of frusta_hand_fit.palm_flags and finger_flags. */
+typedef enum frusta_fit_flag {
+  FRUSTA_FIT_HELD = 1,        /* too few joints present: the last good value is given (a
+                                 finger's too when the palm is held) */
+  FRUSTA_FIT_PARTIAL = 2,     /* a finger's angles beyond its last present joint kept their
+                                 last good values */
+  FRUSTA_FIT_CLAMPED = 4,     /* a joint limit stopped an angle the joints ask beyond */
+  FRUSTA_FIT_NO_HISTORY = 8,  /* held before any good fit: the rest pose, at the joints'
+                                 origin; do not drive a hand with it */
+  FRUSTA_FIT_ORIENTATION = 16 /* the palm's rotation came from joint orientations alone:
+                                 fewer than three points out of line were present */
+} frusta_fit_flag;
+#endif /* FRUSTA_BASE_TRACKING */
+
 #ifndef FRUSTA_BASE_DEVICE_KIND
 #define FRUSTA_BASE_DEVICE_KIND
 /** What frusta_enumerate_devices found (frusta_device_info.kind). */

@@ -10,6 +10,8 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat3x3.hpp>
 
+#include "scenes/random_hands.h"
+
 namespace frusta {
 namespace {
 
@@ -17,21 +19,6 @@ HandModel model_of(int side) {
   HandDef def = default_hand_def();
   def.side = side;
   return make_hand_model(def);
-}
-
-// angles uniformly inside the limits, palm anywhere within a metre, any orientation
-HandState random_state(const HandModel& model, std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> unit(0.0, 1.0), coord(-1.0, 1.0);
-  std::normal_distribution<double> gauss;
-  HandState s;
-  for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f)
-    for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j) {
-      const FingerModel& m = model.fingers[f];
-      s.angles[f * 4 + j] = m.joint_min[j] + unit(rng) * (m.joint_max[j] - m.joint_min[j]);
-    }
-  s.palm_position = vec3(coord(rng), coord(rng), coord(rng));
-  s.palm_rotation = glm::normalize(glm::dquat(gauss(rng), gauss(rng), gauss(rng), gauss(rng)));
-  return s;
 }
 
 vec3 point_at(const HandModel& model, const HandState& state, int f, int s, const vec3& local) {
@@ -79,7 +66,7 @@ TEST(Kinematics, LeftHandMirrorsTheRightThroughTheXZPlane) {
   const HandModel right = model_of(FRUSTA_HAND_RIGHT), left = model_of(FRUSTA_HAND_LEFT);
   std::mt19937_64 rng(7);
   for (int trial = 0; trial < 100; ++trial) {
-    HandState state = random_state(right, rng);
+    HandState state = scenes::random_hand_state(right, rng);
     state.palm_position = vec3(0.0);
     state.palm_rotation = glm::dquat(1.0, 0.0, 0.0, 0.0);
     HandPose r, l;
@@ -99,7 +86,7 @@ TEST(Kinematics, SegmentsKeepTheirLengthAndFramesStayRightHanded) {
     const HandModel m = model_of(side);
     std::mt19937_64 rng(11 + side);
     for (int trial = 0; trial < 1000; ++trial) {
-      const HandState state = random_state(m, rng);
+      const HandState state = scenes::random_hand_state(m, rng);
       HandPose pose;
       forward_kinematics(m, state, pose);
       for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f)
@@ -141,7 +128,7 @@ TEST(Kinematics, PointJacobianMatchesCentralDifferences) {
     std::mt19937_64 rng(1234 + side);
     std::uniform_real_distribution<double> offset(-0.02, 0.06);
     for (int trial = 0; trial < 5000; ++trial) {
-      const HandState state = random_state(m, rng);
+      const HandState state = scenes::random_hand_state(m, rng);
       const int f = static_cast<int>(rng() % FRUSTA_FINGER_COUNT);
       const int s = static_cast<int>(rng() % 3);
       const vec3 local(offset(rng), offset(rng), offset(rng));

@@ -68,6 +68,61 @@ namespace Frusta.Binding
         Little = 4,
     }
 
+    /// <summary>How tracked joints are laid out (see the section's comment).</summary>
+    public enum FrustaJointLayout
+    {
+        /// <summary>OpenXR's 26 joint poses, XrHandJointEXT order</summary>
+        Xr = 0,
+        /// <summary>21 keypoint positions, MediaPipe/MANO order</summary>
+        Keypoints = 1,
+    }
+
+    /// <summary>
+    /// What a tracked joint's fields hold: bits of frusta_tracked_joint.flags, with the
+    /// values of OpenXR's XrSpaceLocationFlags (pass xrLocateHandJointsEXT's locationFlags
+    /// as they are).
+    /// </summary>
+    [Flags]
+    public enum FrustaJointFlag
+    {
+        /// <summary>rotation holds a pose</summary>
+        OrientationValid = 1,
+        /// <summary>position holds a position</summary>
+        PositionValid = 2,
+        /// <summary>rotation is tracked, not inferred</summary>
+        OrientationTracked = 4,
+        /// <summary>position is tracked, not inferred</summary>
+        PositionTracked = 8,
+    }
+
+    /// <summary>How a fit came about: bits of frusta_hand_fit.palm_flags and finger_flags.</summary>
+    [Flags]
+    public enum FrustaFitFlag
+    {
+        /// <summary>
+        /// too few joints present: the last good value is given (a
+        /// finger's too when the palm is held)
+        /// </summary>
+        Held = 1,
+        /// <summary>
+        /// a finger's angles beyond its last present joint kept their
+        /// last good values
+        /// </summary>
+        Partial = 2,
+        /// <summary>a joint limit stopped an angle the joints ask beyond</summary>
+        Clamped = 4,
+        /// <summary>
+        /// held before any good fit: the rest pose, at the joints'
+        /// origin; do not drive a hand with it
+        /// </summary>
+        NoHistory = 8,
+        /// <summary>
+        /// the palm's rotation came from joint orientations alone:
+        /// fewer than three points out of line were present
+        /// </summary>
+        Orientation = 16,
+    }
+
     /// <summary>Which part of a segment solid is nearest to a sphere.</summary>
     public enum FrustaFeature
     {
@@ -169,5 +224,9 @@ namespace Frusta.Binding
         public const int PalmDof = 6;
         /// <summary>Doubles in one point Jacobian: 3 rows x (4 joint angles + 6 palm DOF) = 30.</summary>
         public const int PointJacobianLength = 3 * (JointsPerFinger + PalmDof);
+        /// <summary>Joints of FRUSTA_JOINT_LAYOUT_XR: OpenXR's XR_HAND_JOINT_COUNT_EXT.</summary>
+        public const int XrJointCount = 26;
+        /// <summary>Joints of FRUSTA_JOINT_LAYOUT_KEYPOINTS.</summary>
+        public const int KeypointCount = 21;
     }
 }
