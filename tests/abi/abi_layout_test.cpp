@@ -45,6 +45,29 @@
   X(frusta_hand_def, palm_thickness, 880, 8)          \
   X(frusta_hand_def, internal_value, 888, 4)          \
   X(frusta_hand_def, reserved0, 892, 4)               \
+  X(frusta_tracked_joint, position, 0, 24)            \
+  X(frusta_tracked_joint, rotation, 24, 32)           \
+  X(frusta_tracked_joint, radius, 56, 8)              \
+  X(frusta_tracked_joint, flags, 64, 4)               \
+  X(frusta_tracked_joint, reserved0, 68, 4)           \
+  X(frusta_hand_fitter_id, index1, 0, 4)              \
+  X(frusta_hand_fitter_id, world0, 4, 2)              \
+  X(frusta_hand_fitter_id, generation, 6, 2)          \
+  X(frusta_hand_fit_def, struct_size, 0, 4)           \
+  X(frusta_hand_fit_def, layout, 4, 4)                \
+  X(frusta_hand_fit_def, require_tracked, 8, 4)       \
+  X(frusta_hand_fit_def, max_iterations, 12, 4)       \
+  X(frusta_hand_fit_def, orientation_weight, 16, 8)   \
+  X(frusta_hand_fit_def, internal_value, 24, 4)       \
+  X(frusta_hand_fit_def, reserved0, 28, 4)            \
+  X(frusta_hand_fit, struct_size, 0, 4)               \
+  X(frusta_hand_fit, palm_flags, 4, 4)                \
+  X(frusta_hand_fit, palm, 8, 56)                     \
+  X(frusta_hand_fit, angles, 64, 160)                 \
+  X(frusta_hand_fit, palm_residual, 224, 8)           \
+  X(frusta_hand_fit, finger_residual, 232, 40)        \
+  X(frusta_hand_fit, finger_flags, 272, 20)           \
+  X(frusta_hand_fit, reserved0, 292, 4)               \
   X(frusta_contact_query, struct_size, 0, 4)          \
   X(frusta_contact_query, feature, 4, 4)              \
   X(frusta_contact_query, patent_contact, 8, 4)       \
@@ -248,6 +271,10 @@
   X(frusta_sphere, 32, 8)            \
   X(frusta_segment, 64, 8)           \
   X(frusta_hand_def, 896, 8)         \
+  X(frusta_tracked_joint, 72, 8)     \
+  X(frusta_hand_fitter_id, 8, 4)     \
+  X(frusta_hand_fit_def, 32, 8)      \
+  X(frusta_hand_fit, 296, 8)         \
   X(frusta_contact_query, 104, 8)    \
   X(frusta_constraint, 88, 8)        \
   X(frusta_tree_id, 8, 4)            \
@@ -289,7 +316,8 @@ static_assert(sizeof(frusta_result) == 4 && sizeof(frusta_hand_side) == 4 &&
                   sizeof(frusta_finger) == 4 && sizeof(frusta_feature) == 4 &&
                   sizeof(frusta_constraint_form) == 4 && sizeof(frusta_device_output) == 4 &&
                   sizeof(frusta_device_state) == 4 && sizeof(frusta_watchdog_reason) == 4 &&
-                  sizeof(frusta_device_kind) == 4,
+                  sizeof(frusta_device_kind) == 4 && sizeof(frusta_joint_layout) == 4 &&
+                  sizeof(frusta_joint_flag) == 4 && sizeof(frusta_fit_flag) == 4,
               "enums must be 32-bit");
 
 // ---------------------------------------------------------------- values
@@ -313,6 +341,13 @@ static_assert(FRUSTA_WATCHDOG_NONE == 0 && FRUSTA_WATCHDOG_INPUT_STALLED == 1 &&
               FRUSTA_WATCHDOG_HOST_STALLED == 4);
 static_assert(FRUSTA_DEVICE_KIND_SERIAL == 1 && FRUSTA_DEVICE_KIND_HID == 2 &&
               FRUSTA_DEVICE_KIND_USB == 3);
+static_assert(FRUSTA_JOINT_LAYOUT_XR == 0 && FRUSTA_JOINT_LAYOUT_KEYPOINTS == 1);
+// OpenXR's XrSpaceLocationFlags bits, so that locationFlags pass as they are
+static_assert(FRUSTA_JOINT_ORIENTATION_VALID == 1 && FRUSTA_JOINT_POSITION_VALID == 2 &&
+              FRUSTA_JOINT_ORIENTATION_TRACKED == 4 && FRUSTA_JOINT_POSITION_TRACKED == 8);
+static_assert(FRUSTA_FIT_HELD == 1 && FRUSTA_FIT_PARTIAL == 2 && FRUSTA_FIT_CLAMPED == 4 &&
+              FRUSTA_FIT_NO_HISTORY == 8 && FRUSTA_FIT_ORIENTATION == 16);
+static_assert(FRUSTA_XR_JOINT_COUNT == 26 && FRUSTA_KEYPOINT_COUNT == 21);
 static_assert(FRUSTA_FEATURE_SIDE == 0 && FRUSTA_FEATURE_DISTAL == 1 &&
               FRUSTA_FEATURE_PROXIMAL == 2);
 static_assert(FRUSTA_CONSTRAINT_SQUARED == 0 && FRUSTA_CONSTRAINT_DISTANCE == 1);
@@ -352,6 +387,22 @@ FRUSTA_CHECK_SIGNATURE(frusta_hand_get_palm_spheres,
 FRUSTA_CHECK_SIGNATURE(frusta_hand_point_jacobian,
                        frusta_result (*)(frusta_hand_id, int32_t, int32_t, const double*, double*,
                                          double*, int32_t, int32_t*))
+FRUSTA_CHECK_SIGNATURE(frusta_default_hand_fit_def, frusta_hand_fit_def (*)())
+FRUSTA_CHECK_SIGNATURE(frusta_create_hand_fitter,
+                       frusta_result (*)(const frusta_hand_def*, const frusta_hand_fit_def*,
+                                         frusta_hand_fitter_id*))
+FRUSTA_CHECK_SIGNATURE(frusta_destroy_hand_fitter, frusta_result (*)(frusta_hand_fitter_id))
+FRUSTA_CHECK_SIGNATURE(frusta_hand_fitter_is_valid, int32_t (*)(frusta_hand_fitter_id))
+FRUSTA_CHECK_SIGNATURE(frusta_hand_fitter_fit,
+                       frusta_result (*)(frusta_hand_fitter_id, const frusta_tracked_joint*,
+                                         int32_t, const frusta_pose*, frusta_hand_fit*))
+FRUSTA_CHECK_SIGNATURE(frusta_hand_joints_from_pose,
+                       frusta_result (*)(const frusta_hand_def*, int32_t, const frusta_pose*,
+                                         const double*, int32_t, frusta_tracked_joint*, int32_t,
+                                         int32_t*))
+FRUSTA_CHECK_SIGNATURE(frusta_calibrate_hand_def,
+                       frusta_result (*)(const frusta_tracked_joint*, int32_t, int32_t,
+                                         frusta_hand_def*))
 FRUSTA_CHECK_SIGNATURE(frusta_query_contact,
                        frusta_result (*)(const frusta_segment*, const frusta_sphere*,
                                          frusta_contact_query*))
@@ -473,6 +524,7 @@ TEST(abiLayout, DefaultDefCarriesItsSize) {
   EXPECT_EQ(frusta_default_world_def().struct_size, 128);
   EXPECT_EQ(frusta_default_object_def().struct_size, 224);
   EXPECT_EQ(frusta_default_device_def().struct_size, 728);
+  EXPECT_EQ(frusta_default_hand_fit_def().struct_size, 32);
 }
 
 // Bindings learn the native sizes at load from frusta_struct_size; it must know every

@@ -821,6 +821,10 @@ static void t_struct_size(void) {
     verify(frusta_struct_size(#type) == (int32_t)sizeof(type), "%d", frusta_struct_size(#type)); \
   } while (0)
   SIZE_OF(frusta_hand_def);
+  SIZE_OF(frusta_tracked_joint);
+  SIZE_OF(frusta_hand_fitter_id);
+  SIZE_OF(frusta_hand_fit_def);
+  SIZE_OF(frusta_hand_fit);
   SIZE_OF(frusta_contact_query);
   SIZE_OF(frusta_constraint);
   SIZE_OF(frusta_bake_def);
@@ -3694,6 +3698,540 @@ static void s_running(void) {
   destroy_rig(&rig);
 }
 
+/* ------------------------------------------------------------------ tracked hands */
+
+static frusta_hand_fitter_id g_fitter;      /* a fitter of the default hand, XR layout */
+static frusta_hand_fitter_id g_dead_fitter; /* created, then destroyed */
+static frusta_tracked_joint g_joints[FRUSTA_XR_JOINT_COUNT]; /* the default hand, posed */
+static frusta_hand_fit g_fit;               /* g_fitter's fit of g_joints */
+#define CALIBRATION_FRAMES 3
+static frusta_tracked_joint g_frames[CALIBRATION_FRAMES * FRUSTA_XR_JOINT_COUNT];
+
+static frusta_hand_fitter_id fitter_of_raw(RawId r) {
+  return (frusta_hand_fitter_id){r.index1, r.world0, r.generation};
+}
+
+/* The default hand's joints of a layout at a pose: the palm turned and moved, fingers
+ * bent by `bend` (clamped into the limits). */
+static frusta_result posed_joints(int32_t layout, double bend, frusta_tracked_joint* out) {
+  const frusta_hand_def def = frusta_default_hand_def();
+  frusta_pose palm = {{0.1, -0.2, 0.3}, {0.1, 0.2, 0.3, 0.9}};
+  const double n = norm_n(palm.rotation, 4);
+  for (int k = 0; k < 4; ++k) palm.rotation[k] /= n;
+  double angles[FRUSTA_HAND_JOINT_COUNT];
+  for (int j = 0; j < FRUSTA_HAND_JOINT_COUNT; ++j) angles[j] = j % 4 == 0 ? 0.1 * bend : bend;
+  int32_t count = 0;
+  return frusta_hand_joints_from_pose(&def, layout, &palm, angles, FRUSTA_HAND_JOINT_COUNT, out,
+                                      FRUSTA_XR_JOINT_COUNT, &count);
+}
+
+static int tracking_setup(void) {
+  what("tracked-hand fixtures");
+  const frusta_hand_def hd = frusta_default_hand_def();
+  const frusta_hand_fit_def fd = frusta_default_hand_fit_def();
+  memset(&g_fit, 0, sizeof g_fit);
+  g_fit.struct_size = (int32_t)sizeof g_fit;
+  int ok = frusta_create_hand_fitter(&hd, &fd, &g_fitter) == FRUSTA_OK &&
+           frusta_create_hand_fitter(&hd, &fd, &g_dead_fitter) == FRUSTA_OK &&
+           frusta_destroy_hand_fitter(g_dead_fitter) == FRUSTA_OK &&
+           posed_joints(FRUSTA_JOINT_LAYOUT_XR, 0.4, g_joints) == FRUSTA_OK &&
+           frusta_hand_fitter_fit(g_fitter, g_joints, FRUSTA_XR_JOINT_COUNT, NULL, &g_fit) == FRUSTA_OK;
+  for (int f = 0; ok && f < CALIBRATION_FRAMES; ++f)
+    ok = posed_joints(FRUSTA_JOINT_LAYOUT_XR, 0.3 * f, g_frames + f * FRUSTA_XR_JOINT_COUNT) == FRUSTA_OK;
+  return verify(ok, "fitters and joints: %s", frusta_last_error());
+}
+
+/* What a fit reports is finite, its palm a unit quaternion, its angles within the
+ * default hand's limits and its flags frusta_fit_flag's. */
+static int fit_sane(const frusta_hand_fit* fit) {
+  const frusta_hand_def def = frusta_default_hand_def();
+  int ok = all_finite(fit->palm.position, 3) && unit_quaternion(fit->palm.rotation) &&
+           isfinite(fit->palm_residual) && fit->palm_residual >= 0.0 && fit->palm_flags >= 0 &&
+           fit->palm_flags < 32;
+  for (int j = 0; j < FRUSTA_HAND_JOINT_COUNT; ++j)
+    ok &= fit->angles[j] >= def.joint_min[j / 4][j % 4] && fit->angles[j] <= def.joint_max[j / 4][j % 4];
+  for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f)
+    ok &= isfinite(fit->finger_residual[f]) && fit->finger_residual[f] >= 0.0 &&
+          fit->finger_flags[f] >= 0 && fit->finger_flags[f] < 32;
+  return verify(ok, "an accepted fit is not finite, unit and within the limits");
+}
+
+/* g_fitter's last good fit is g_fit's again (a fit of g_joints restores it). */
+static void restore_fitter(void) {
+  frusta_hand_fit fit = g_fit;
+  frusta_hand_fitter_fit(g_fitter, g_joints, FRUSTA_XR_JOINT_COUNT, NULL, &fit);
+}
+
+/* g_fitter's history is g_fit: a sample with every joint missing gives it back, held. */
+static int fitter_history_kept(void) {
+  frusta_tracked_joint none[FRUSTA_XR_JOINT_COUNT];
+  memset(none, 0, sizeof none);
+  frusta_hand_fit held;
+  memset(&held, 0, sizeof held);
+  held.struct_size = (int32_t)sizeof held;
+  return frusta_hand_fitter_fit(g_fitter, none, FRUSTA_XR_JOINT_COUNT, NULL, &held) == FRUSTA_OK &&
+         held.palm_flags == FRUSTA_FIT_HELD &&
+         memcmp(&held.palm, &g_fit.palm, sizeof held.palm) == 0 &&
+         memcmp(held.angles, g_fit.angles, sizeof held.angles) == 0;
+}
+
+/* Every field of joint `index` of a sample (its flags all set) at the hostile values and
+ * its limits; fields a flag does not declare valid, and the flags, too. */
+typedef frusta_result (*JointsCall)(const frusta_tracked_joint* joints, int* untouched, void* context);
+#define MAX_JOINTS (CALIBRATION_FRAMES * FRUSTA_XR_JOINT_COUNT)
+
+static void sweep_joint(const char* label, const char* array, const frusta_tracked_joint* base,
+                        int count, int index, JointsCall call, void* context) {
+  static frusta_tracked_joint joints[MAX_JOINTS];
+  char field[96];
+  if (!verify(count <= MAX_JOINTS, "%d joints", count)) return;
+  for (int part = 0; part < 8; ++part) {
+    double values[HOSTILE_COUNT + 4];
+    /* position (within 1e6 m), rotation (norm in [0.5, 2]), radius (0..5 m) */
+    const int n = part < 3 ? field_values(-1e6, 1e6, values)
+                  : part < 7 ? field_values(0.5, 2.0, values)
+                             : field_values(0.0, 5.0, values);
+    for (int i = 0; i < n; ++i) {
+      memcpy(joints, base, sizeof joints[0] * (size_t)count);
+      frusta_tracked_joint* j = &joints[index];
+      j->flags = 15;
+      frusta_result want;
+      if (part < 3) {
+        j->position[part] = values[i];
+        snprintf(field, sizeof field, "%s[%d].position", array, index);
+        want = want_for(values[i], -1e6, 1e6);
+      } else if (part < 7) {
+        const double identity[4] = {0.0, 0.0, 0.0, 1.0};
+        memcpy(j->rotation, identity, sizeof identity);
+        j->rotation[part - 3] = values[i];
+        snprintf(field, sizeof field, "%s[%d].rotation", array, index);
+        const double norm = norm_n(j->rotation, 4);
+        want = !isfinite(values[i]) ? FRUSTA_ERROR_NOT_FINITE
+               : norm >= 0.5 && norm <= 2.0 ? FRUSTA_OK : FRUSTA_ERROR_OUT_OF_RANGE;
+      } else {
+        j->radius = values[i];
+        snprintf(field, sizeof field, "%s[%d].radius", array, index);
+        want = want_for(values[i], 0.0, 5.0);
+      }
+      what("%s: %s = %g", label, field, values[i]);
+      int untouched = 1;
+      const frusta_result got = call(joints, &untouched, context);
+      if (want == FRUSTA_OK) accepted(got);
+      else refused(got, want, field);
+      if (got != FRUSTA_OK) verify(untouched, "a refused call changed something");
+      /* the same value where no flag declares the field valid: not read */
+      j->flags = part < 3 || part == 7 ? FRUSTA_JOINT_ORIENTATION_VALID : FRUSTA_JOINT_POSITION_VALID;
+      if (part < 7) j->radius = 0.0;
+      if (part == 7) j->flags = 0;
+      what("%s: %s = %g, not declared valid", label, field, values[i]);
+      untouched = 1;
+      accepted(call(joints, &untouched, context));
+    }
+  }
+  const int32_t flags[] = {16, 0x20, -1, INT32_MIN, INT32_MAX, 15 | 0x100};
+  for (int i = 0; i < 6; ++i) {
+    memcpy(joints, base, sizeof joints[0] * (size_t)count);
+    joints[index].flags = flags[i];
+    snprintf(field, sizeof field, "%s[%d].flags", array, index);
+    what("%s: %s = %d", label, field, flags[i]);
+    int untouched = 1;
+    refused(call(joints, &untouched, context), FRUSTA_ERROR_OUT_OF_RANGE, field);
+    verify(untouched, "a refused call changed something");
+  }
+}
+
+/* ---- defaults and creation */
+
+static frusta_result call_create_fitter(const frusta_hand_def* hd, const frusta_hand_fit_def* fd,
+                                        int* untouched) {
+  frusta_hand_fitter_id fitter;
+  fill(&fitter, sizeof fitter);
+  const frusta_result r = frusta_create_hand_fitter(hd, fd, &fitter);
+  if (r != FRUSTA_OK) {
+    *untouched = is_sentinel(&fitter, sizeof fitter);
+    return r;
+  }
+  /* used: it fits the hand's own joints in its layout */
+  verify(frusta_hand_fitter_is_valid(fitter) == 1, "the fitter created is not valid");
+  frusta_tracked_joint joints[FRUSTA_XR_JOINT_COUNT];
+  int32_t count = 0;
+  const double zero[FRUSTA_HAND_JOINT_COUNT] = {0};
+  frusta_hand_fit fit;
+  memset(&fit, 0, sizeof fit);
+  fit.struct_size = (int32_t)sizeof fit;
+  if (verify(frusta_hand_joints_from_pose(hd, fd->layout, &kIdentity, zero, FRUSTA_HAND_JOINT_COUNT,
+                                          joints, FRUSTA_XR_JOINT_COUNT, &count) == FRUSTA_OK &&
+                 frusta_hand_fitter_fit(fitter, joints, count, NULL, &fit) == FRUSTA_OK,
+             "a created fitter does not fit its hand's joints: %s", frusta_last_error()))
+    verify(all_finite(fit.palm.position, 3) && unit_quaternion(fit.palm.rotation) &&
+               all_finite(fit.angles, FRUSTA_HAND_JOINT_COUNT) && !(fit.palm_flags & FRUSTA_FIT_HELD),
+           "its fit is not finite, or held");
+  frusta_destroy_hand_fitter(fitter);
+  return r;
+}
+
+static frusta_result call_create_fitter_hand(const void* def, int* untouched, void* context) {
+  (void)context;
+  const frusta_hand_fit_def fd = frusta_default_hand_fit_def();
+  return call_create_fitter((const frusta_hand_def*)def, &fd, untouched);
+}
+
+static frusta_result call_create_fitter_fit(const void* def, int* untouched, void* context) {
+  (void)context;
+  const frusta_hand_def hd = frusta_default_hand_def();
+  return call_create_fitter(&hd, (const frusta_hand_fit_def*)def, untouched);
+}
+
+static void t_default_hand_fit_def(void) {
+  const frusta_hand_fit_def a = frusta_default_hand_fit_def(), b = frusta_default_hand_fit_def();
+  what("frusta_default_hand_fit_def()");
+  g_calls += 2;
+  verify(memcmp(&a, &b, sizeof a) == 0 && a.struct_size == (int32_t)sizeof a && a.internal_value != 0 &&
+             a.layout == FRUSTA_JOINT_LAYOUT_XR && a.require_tracked == 0 && a.max_iterations == 10 &&
+             a.orientation_weight == 0.0,
+         "not the documented deterministic def of this size with its cookie");
+  int untouched = 1;
+  accepted(call_create_fitter_fit(&a, &untouched, NULL));
+}
+
+#define FIT_FIELD(member) #member, offsetof(frusta_hand_fit_def, member)
+static const IntField kFitInts[] = {
+    {FIT_FIELD(layout), 0, 1},
+    {FIT_FIELD(require_tracked), 0, 1},
+    {FIT_FIELD(max_iterations), 1, 100},
+};
+
+static void t_create_hand_fitter(void) {
+  const frusta_hand_def hd = frusta_default_hand_def();
+  const frusta_hand_fit_def fd = frusta_default_hand_fit_def();
+  frusta_hand_fitter_id fitter;
+  fill(&fitter, sizeof fitter);
+  what("frusta_create_hand_fitter(NULL, &fit_def, &fitter)");
+  refused(frusta_create_hand_fitter(NULL, &fd, &fitter), FRUSTA_ERROR_NULL_POINTER, "def");
+  what("frusta_create_hand_fitter(&def, NULL, &fitter)");
+  refused(frusta_create_hand_fitter(&hd, NULL, &fitter), FRUSTA_ERROR_NULL_POINTER, "fit_def");
+  verify(is_sentinel(&fitter, sizeof fitter), "out_fitter written");
+  what("frusta_create_hand_fitter(&def, &fit_def, NULL)");
+  refused(frusta_create_hand_fitter(&hd, &fd, NULL), FRUSTA_ERROR_NULL_POINTER, "out_fitter");
+  sweep_def_header("frusta_create_hand_fitter", "frusta_hand_def", &hd, sizeof hd,
+                   offsetof(frusta_hand_def, internal_value), call_create_fitter_hand, NULL);
+  sweep_def_header("frusta_create_hand_fitter", "frusta_hand_fit_def", &fd, sizeof fd,
+                   offsetof(frusta_hand_fit_def, internal_value), call_create_fitter_fit, NULL);
+  sweep_fields("frusta_create_hand_fitter", &hd, sizeof hd, kHandFields, HAND_FIELD_COUNT,
+               call_create_fitter_hand, NULL);
+  const Field weight = {FIT_FIELD(orientation_weight), 1, 0, NAME_SCALAR, 0.0, 1.0, 0};
+  sweep_fields("frusta_create_hand_fitter", &fd, sizeof fd, &weight, 1, call_create_fitter_fit, NULL);
+  sweep_ints("frusta_create_hand_fitter", &fd, sizeof fd, kFitInts, 3, call_create_fitter_fit, NULL);
+  /* hands at the ends of their ranges fit their own joints */
+  for (int big = 0; big < 2; ++big) {
+    const frusta_hand_def d = extreme_hand_def(big);
+    what("frusta_create_hand_fitter: every part %g", big ? 5.0 : 1e-4);
+    int untouched = 1;
+    accepted(call_create_fitter(&d, &fd, &untouched));
+  }
+}
+
+static frusta_result call_destroy_fitter(RawId id, int* untouched) {
+  const frusta_result r = frusta_destroy_hand_fitter(fitter_of_raw(id));
+  *untouched = frusta_hand_fitter_is_valid(g_fitter) == 1;
+  return r;
+}
+
+static int32_t valid_fitter(RawId id) { return frusta_hand_fitter_is_valid(fitter_of_raw(id)); }
+
+static void t_destroy_hand_fitter(void) {
+  sweep_ids("frusta_destroy_hand_fitter", "hand fitter", TO_RAW(g_fitter), TO_RAW(g_dead_fitter), 1,
+            call_destroy_fitter);
+  const frusta_hand_def hd = frusta_default_hand_def();
+  const frusta_hand_fit_def fd = frusta_default_hand_fit_def();
+  frusta_hand_fitter_id fitter;
+  what("frusta_destroy_hand_fitter twice");
+  accepted(frusta_create_hand_fitter(&hd, &fd, &fitter));
+  accepted(frusta_destroy_hand_fitter(fitter));
+  refused(frusta_destroy_hand_fitter(fitter), FRUSTA_ERROR_STALE_ID, "hand fitter");
+}
+
+static void t_hand_fitter_is_valid(void) {
+  sweep_valid("frusta_hand_fitter_is_valid", TO_RAW(g_fitter), TO_RAW(g_dead_fitter), 1, valid_fitter);
+}
+
+/* ---- fitting */
+
+/* g_fitter on joints (and frame): a refused call leaves out and the fitter's history as
+ * they were; an accepted fit is sane. */
+static frusta_result fit_with(const frusta_tracked_joint* joints, int32_t count,
+                              const frusta_pose* frame, int* untouched) {
+  restore_fitter();
+  frusta_hand_fit out;
+  fill(&out, sizeof out);
+  out.struct_size = (int32_t)sizeof out;
+  const frusta_result r = frusta_hand_fitter_fit(g_fitter, joints, count, frame, &out);
+  if (r != FRUSTA_OK) {
+    *untouched = is_sentinel((unsigned char*)&out + 4, sizeof out - 4) && fitter_history_kept();
+    return r;
+  }
+  fit_sane(&out);
+  return r;
+}
+
+static frusta_result call_fit_id(RawId id, int* untouched) {
+  restore_fitter();
+  frusta_hand_fit out;
+  fill(&out, sizeof out);
+  out.struct_size = (int32_t)sizeof out;
+  const frusta_result r =
+      frusta_hand_fitter_fit(fitter_of_raw(id), g_joints, FRUSTA_XR_JOINT_COUNT, NULL, &out);
+  *untouched = is_sentinel((unsigned char*)&out + 4, sizeof out - 4) && fitter_history_kept();
+  return r;
+}
+
+static frusta_result call_fit_joints(const frusta_tracked_joint* joints, int* untouched, void* context) {
+  (void)context;
+  return fit_with(joints, FRUSTA_XR_JOINT_COUNT, NULL, untouched);
+}
+
+static frusta_result call_fit_frame(const void* frame, int* untouched, void* context) {
+  (void)context;
+  const frusta_result r = fit_with(g_joints, FRUSTA_XR_JOINT_COUNT, (const frusta_pose*)frame, untouched);
+  return r;
+}
+
+static frusta_result fit_out(void* out) {
+  return frusta_hand_fitter_fit(g_fitter, g_joints, FRUSTA_XR_JOINT_COUNT, NULL, (frusta_hand_fit*)out);
+}
+
+static void t_hand_fitter_fit(void) {
+  sweep_ids("frusta_hand_fitter_fit", "hand fitter", TO_RAW(g_fitter), TO_RAW(g_dead_fitter), 1,
+            call_fit_id);
+  int untouched = 1;
+  what("frusta_hand_fitter_fit(fitter, NULL, 26, NULL, &out)");
+  refused(fit_with(NULL, FRUSTA_XR_JOINT_COUNT, NULL, &untouched), FRUSTA_ERROR_NULL_POINTER, "joints");
+  verify(untouched, "a refused call changed something");
+  what("frusta_hand_fitter_fit(fitter, joints, 26, NULL, NULL)");
+  refused(frusta_hand_fitter_fit(g_fitter, g_joints, FRUSTA_XR_JOINT_COUNT, NULL, NULL),
+          FRUSTA_ERROR_NULL_POINTER, "out");
+  sweep_out_size("frusta_hand_fitter_fit", "frusta_hand_fit", sizeof(frusta_hand_fit), fit_out);
+  /* a count other than the layout's: refused before a joint is read (the buffer holds 26) */
+  const int32_t counts[] = {INT32_MIN, -1, 0, FRUSTA_KEYPOINT_COUNT, FRUSTA_XR_JOINT_COUNT - 1,
+                            FRUSTA_XR_JOINT_COUNT + 1, INT32_MAX};
+  for (int i = 0; i < 7; ++i) {
+    what("frusta_hand_fitter_fit: count %d", counts[i]);
+    untouched = 1;
+    refused(fit_with(g_joints, counts[i], NULL, &untouched), FRUSTA_ERROR_OUT_OF_RANGE, "count");
+    verify(untouched, "a refused call changed something");
+  }
+  sweep_pose("frusta_hand_fitter_fit", "frame", call_fit_frame, NULL);
+  /* a palm-rigid joint and a moving one */
+  sweep_joint("frusta_hand_fitter_fit", "joints", g_joints, FRUSTA_XR_JOINT_COUNT, 1, call_fit_joints, NULL);
+  sweep_joint("frusta_hand_fitter_fit", "joints", g_joints, FRUSTA_XR_JOINT_COUNT, 9, call_fit_joints, NULL);
+  /* every joint missing, every joint at 1e6 m, every joint at one point: taken, held or fit */
+  frusta_tracked_joint joints[FRUSTA_XR_JOINT_COUNT];
+  const double places[] = {0.0, 1e6, -1e6};
+  for (int p = 0; p < 3; ++p) {
+    memcpy(joints, g_joints, sizeof joints);
+    for (int i = 0; i < FRUSTA_XR_JOINT_COUNT; ++i)
+      for (int k = 0; k < 3; ++k) joints[i].position[k] = places[p];
+    what("frusta_hand_fitter_fit: every joint at %g", places[p]);
+    untouched = 1;
+    accepted(fit_with(joints, FRUSTA_XR_JOINT_COUNT, NULL, &untouched));
+  }
+  memset(joints, 0, sizeof joints);
+  what("frusta_hand_fitter_fit: every joint missing");
+  untouched = 1;
+  accepted(fit_with(joints, FRUSTA_XR_JOINT_COUNT, NULL, &untouched));
+  ++g_calls;
+  verify(fitter_history_kept(), "a sample of missing joints did not give the last fit back, held");
+  restore_fitter();
+}
+
+/* ---- joints from a pose */
+
+static frusta_result joints_from(const frusta_hand_def* def, int32_t layout, const frusta_pose* palm,
+                                 const double* angles, int32_t angle_count, int* untouched) {
+  frusta_tracked_joint out[FRUSTA_XR_JOINT_COUNT + 2];
+  int32_t count;
+  fill(out, sizeof out);
+  fill(&count, sizeof count);
+  const frusta_result r = frusta_hand_joints_from_pose(def, layout, palm, angles, angle_count, out,
+                                                       FRUSTA_XR_JOINT_COUNT + 2, &count);
+  if (r != FRUSTA_OK) {
+    *untouched = is_sentinel(out, sizeof out) && is_sentinel(&count, sizeof count);
+    return r;
+  }
+  const int32_t want = layout == FRUSTA_JOINT_LAYOUT_XR ? FRUSTA_XR_JOINT_COUNT : FRUSTA_KEYPOINT_COUNT;
+  int ok = count == want && is_sentinel(out + want, sizeof out[0] * (size_t)(FRUSTA_XR_JOINT_COUNT + 2 - want));
+  for (int i = 0; i < want; ++i)
+    ok &= all_finite(out[i].position, 3) && isfinite(out[i].radius) && out[i].radius >= 0.0 &&
+          (layout != FRUSTA_JOINT_LAYOUT_XR || (unit_quaternion(out[i].rotation) && out[i].flags == 15));
+  verify(ok, "%d joints, or not finite, unit and valid", count);
+  return r;
+}
+
+static const double kZeroAngles[FRUSTA_HAND_JOINT_COUNT] = {0};
+
+static frusta_result call_joints_def(const void* def, int* untouched, void* context) {
+  (void)context;
+  return joints_from((const frusta_hand_def*)def, FRUSTA_JOINT_LAYOUT_XR, &kIdentity, kZeroAngles,
+                     FRUSTA_HAND_JOINT_COUNT, untouched);
+}
+
+static frusta_result call_joints_palm(const void* palm, int* untouched, void* context) {
+  (void)context;
+  const frusta_hand_def def = frusta_default_hand_def();
+  return joints_from(&def, FRUSTA_JOINT_LAYOUT_XR, (const frusta_pose*)palm, kZeroAngles,
+                     FRUSTA_HAND_JOINT_COUNT, untouched);
+}
+
+static frusta_result call_joints_angles(const void* angles, int* untouched, void* context) {
+  (void)context;
+  const frusta_hand_def def = frusta_default_hand_def();
+  return joints_from(&def, FRUSTA_JOINT_LAYOUT_KEYPOINTS, &kIdentity, (const double*)angles,
+                     FRUSTA_HAND_JOINT_COUNT, untouched);
+}
+
+static int32_t g_array_layout;
+static frusta_result joints_array_call(void* out, int32_t capacity, int32_t* count) {
+  const frusta_hand_def def = frusta_default_hand_def();
+  return frusta_hand_joints_from_pose(&def, g_array_layout, &kIdentity, kZeroAngles,
+                                      FRUSTA_HAND_JOINT_COUNT, (frusta_tracked_joint*)out, capacity,
+                                      count);
+}
+
+static void t_hand_joints_from_pose(void) {
+  const frusta_hand_def def = frusta_default_hand_def();
+  int untouched = 1;
+  what("frusta_hand_joints_from_pose(NULL, ...)");
+  refused(joints_from(NULL, 0, &kIdentity, kZeroAngles, FRUSTA_HAND_JOINT_COUNT, &untouched),
+          FRUSTA_ERROR_NULL_POINTER, "def");
+  what("frusta_hand_joints_from_pose(def, 0, NULL, ...)");
+  refused(joints_from(&def, 0, NULL, kZeroAngles, FRUSTA_HAND_JOINT_COUNT, &untouched),
+          FRUSTA_ERROR_NULL_POINTER, "palm");
+  what("frusta_hand_joints_from_pose(def, 0, palm, NULL, 20, ...)");
+  refused(joints_from(&def, 0, &kIdentity, NULL, FRUSTA_HAND_JOINT_COUNT, &untouched),
+          FRUSTA_ERROR_NULL_POINTER, "angles");
+  verify(untouched, "a refused call wrote out");
+  const int32_t layouts[] = {INT32_MIN, -1, 2, INT32_MAX};
+  for (int i = 0; i < 4; ++i) {
+    what("frusta_hand_joints_from_pose: layout %d", layouts[i]);
+    refused(joints_from(&def, layouts[i], &kIdentity, kZeroAngles, FRUSTA_HAND_JOINT_COUNT, &untouched),
+            FRUSTA_ERROR_OUT_OF_RANGE, "layout");
+  }
+  const int32_t counts[] = {INT32_MIN, -1, 0, FRUSTA_HAND_JOINT_COUNT - 1, FRUSTA_HAND_JOINT_COUNT + 1,
+                            INT32_MAX};
+  for (int i = 0; i < 6; ++i) {
+    what("frusta_hand_joints_from_pose: angle_count %d", counts[i]);
+    refused(joints_from(&def, 0, &kIdentity, kZeroAngles, counts[i], &untouched),
+            FRUSTA_ERROR_OUT_OF_RANGE, "count");
+  }
+  verify(untouched, "a refused call wrote out");
+  sweep_def_header("frusta_hand_joints_from_pose", "frusta_hand_def", &def, sizeof def,
+                   offsetof(frusta_hand_def, internal_value), call_joints_def, NULL);
+  sweep_fields("frusta_hand_joints_from_pose", &def, sizeof def, kHandFields, HAND_FIELD_COUNT,
+               call_joints_def, NULL);
+  sweep_pose("frusta_hand_joints_from_pose", "palm", call_joints_palm, NULL);
+  const Field angles = {"angles", 0, FRUSTA_HAND_JOINT_COUNT, 0, NAME_1D, -FRUSTA_MAX_JOINT_ANGLE,
+                        FRUSTA_MAX_JOINT_ANGLE, 0};
+  sweep_fields("frusta_hand_joints_from_pose", kZeroAngles, sizeof kZeroAngles, &angles, 1,
+               call_joints_angles, NULL);
+  frusta_tracked_joint out[FRUSTA_XR_JOINT_COUNT + 2];
+  g_array_layout = FRUSTA_JOINT_LAYOUT_XR;
+  sweep_output_array("frusta_hand_joints_from_pose", joints_array_call, out, sizeof out[0],
+                     FRUSTA_XR_JOINT_COUNT + 2, FRUSTA_XR_JOINT_COUNT, "out");
+  g_array_layout = FRUSTA_JOINT_LAYOUT_KEYPOINTS;
+  sweep_output_array("frusta_hand_joints_from_pose (keypoints)", joints_array_call, out, sizeof out[0],
+                     FRUSTA_XR_JOINT_COUNT + 2, FRUSTA_KEYPOINT_COUNT, "out");
+  for (int big = 0; big < 2; ++big) {
+    const frusta_hand_def d = extreme_hand_def(big);
+    what("frusta_hand_joints_from_pose: every part %g", big ? 5.0 : 1e-4);
+    untouched = 1;
+    accepted(joints_from(&d, FRUSTA_JOINT_LAYOUT_XR, &kIdentity, kZeroAngles, FRUSTA_HAND_JOINT_COUNT,
+                         &untouched));
+  }
+}
+
+/* ---- calibration */
+
+static frusta_result calibrate(const frusta_tracked_joint* frames, int32_t frame_count, int32_t layout,
+                               const frusta_hand_def* def, int* untouched) {
+  frusta_hand_def copy = *def;
+  const frusta_result r = frusta_calibrate_hand_def(frames, frame_count, layout, &copy);
+  if (r != FRUSTA_OK) {
+    *untouched = memcmp(&copy, def, sizeof copy) == 0;
+    return r;
+  }
+  /* used: the frames are the default hand's; a hand of the def sized is made */
+  int ignored = 1;
+  verify(fabs(copy.hand_length - 0.19) < 0.01 && fabs(copy.hand_breadth - 0.085) < 0.01 &&
+             call_create_hand(&copy, &ignored, NULL) == FRUSTA_OK,
+         "calibrated to %g x %g m, or refused by create_hand: %s", copy.hand_length,
+         copy.hand_breadth, frusta_last_error());
+  return r;
+}
+
+static frusta_result call_calibrate_def(const void* def, int* untouched, void* context) {
+  (void)context;
+  return calibrate(g_frames, CALIBRATION_FRAMES, FRUSTA_JOINT_LAYOUT_XR, (const frusta_hand_def*)def,
+                   untouched);
+}
+
+static frusta_result call_calibrate_frames(const frusta_tracked_joint* frames, int* untouched,
+                                           void* context) {
+  (void)context;
+  const frusta_hand_def def = frusta_default_hand_def();
+  return calibrate(frames, CALIBRATION_FRAMES, FRUSTA_JOINT_LAYOUT_XR, &def, untouched);
+}
+
+static void t_calibrate_hand_def(void) {
+  const frusta_hand_def def = frusta_default_hand_def();
+  int untouched = 1;
+  what("frusta_calibrate_hand_def(NULL, 3, 0, &def)");
+  refused(calibrate(NULL, CALIBRATION_FRAMES, 0, &def, &untouched), FRUSTA_ERROR_NULL_POINTER, "frames");
+  verify(untouched, "a refused call changed the def");
+  what("frusta_calibrate_hand_def(frames, 3, 0, NULL)");
+  refused(frusta_calibrate_hand_def(g_frames, CALIBRATION_FRAMES, 0, NULL), FRUSTA_ERROR_NULL_POINTER, "def");
+  const int32_t counts[] = {INT32_MIN, -1, 0, 65537, INT32_MAX};
+  for (int i = 0; i < 5; ++i) {
+    what("frusta_calibrate_hand_def: frame_count %d", counts[i]);
+    refused(calibrate(g_frames, counts[i], 0, &def, &untouched), FRUSTA_ERROR_OUT_OF_RANGE, "frame_count");
+    verify(untouched, "a refused call changed the def");
+  }
+  const int32_t layouts[] = {INT32_MIN, -1, 2, INT32_MAX};
+  for (int i = 0; i < 4; ++i) {
+    what("frusta_calibrate_hand_def: layout %d", layouts[i]);
+    refused(calibrate(g_frames, CALIBRATION_FRAMES, layouts[i], &def, &untouched),
+            FRUSTA_ERROR_OUT_OF_RANGE, "layout");
+    verify(untouched, "a refused call changed the def");
+  }
+  sweep_def_header("frusta_calibrate_hand_def", "frusta_hand_def", &def, sizeof def,
+                   offsetof(frusta_hand_def, internal_value), call_calibrate_def, NULL);
+  sweep_fields("frusta_calibrate_hand_def", &def, sizeof def, kHandFields, HAND_FIELD_COUNT,
+               call_calibrate_def, NULL);
+  /* a joint of the last frame: frames are one array, named by its index */
+  sweep_joint("frusta_calibrate_hand_def", "frames", g_frames, CALIBRATION_FRAMES * FRUSTA_XR_JOINT_COUNT,
+              2 * FRUSTA_XR_JOINT_COUNT + 13, call_calibrate_frames, NULL);
+  /* nothing tracked: nothing to size by */
+  frusta_tracked_joint frames[CALIBRATION_FRAMES * FRUSTA_XR_JOINT_COUNT];
+  memcpy(frames, g_frames, sizeof frames);
+  for (int i = 0; i < CALIBRATION_FRAMES * FRUSTA_XR_JOINT_COUNT; ++i) frames[i].flags &= ~8;
+  what("frusta_calibrate_hand_def: positions valid but none tracked");
+  refused(calibrate(frames, CALIBRATION_FRAMES, 0, &def, &untouched), FRUSTA_ERROR_OUT_OF_RANGE, "frames");
+  verify(untouched, "a refused call changed the def");
+  /* every frame's joints at one point: a hand of no size */
+  memcpy(frames, g_frames, sizeof frames);
+  for (int i = 0; i < CALIBRATION_FRAMES * FRUSTA_XR_JOINT_COUNT; ++i)
+    memset(frames[i].position, 0, sizeof frames[i].position);
+  what("frusta_calibrate_hand_def: every joint at the origin");
+  refused(calibrate(frames, CALIBRATION_FRAMES, 0, &def, &untouched), FRUSTA_ERROR_OUT_OF_RANGE, "hand_length");
+  verify(untouched, "a refused call changed the def");
+  /* one frame, and keypoints */
+  what("frusta_calibrate_hand_def: one frame");
+  accepted(calibrate(g_frames, 1, 0, &def, &untouched));
+  frusta_tracked_joint keypoints[FRUSTA_XR_JOINT_COUNT];
+  what("frusta_calibrate_hand_def: keypoints");
+  if (accepted(posed_joints(FRUSTA_JOINT_LAYOUT_KEYPOINTS, 0.5, keypoints)))
+    accepted(calibrate(keypoints, 1, FRUSTA_JOINT_LAYOUT_KEYPOINTS, &def, &untouched));
+}
+
 /* ------------------------------------------------------------------ the tables */
 
 typedef struct Entry {
@@ -3721,6 +4259,13 @@ static const Entry kFunctions[] = {
     {"frusta_hand_get_segments", t_hand_get_segments},
     {"frusta_hand_get_palm_spheres", t_hand_get_palm_spheres},
     {"frusta_hand_point_jacobian", t_hand_point_jacobian},
+    {"frusta_default_hand_fit_def", t_default_hand_fit_def},
+    {"frusta_create_hand_fitter", t_create_hand_fitter},
+    {"frusta_destroy_hand_fitter", t_destroy_hand_fitter},
+    {"frusta_hand_fitter_is_valid", t_hand_fitter_is_valid},
+    {"frusta_hand_fitter_fit", t_hand_fitter_fit},
+    {"frusta_hand_joints_from_pose", t_hand_joints_from_pose},
+    {"frusta_calibrate_hand_def", t_calibrate_hand_def},
     {"frusta_query_contact", t_query_contact},
     {"frusta_constraint_eval", t_constraint_eval},
     {"frusta_default_bake_def", t_default_bake_def},
@@ -3826,7 +4371,7 @@ static void run_entry(const Entry* e) {
 int main(void) {
   setvbuf(stdout, NULL, _IOLBF, 0);
   check_table_covers_header();
-  if (!setup() || !device_setup()) {
+  if (!setup() || !tracking_setup() || !device_setup()) {
     printf("FAIL setup: the fixtures could not be made\n%d passed, %d failed\n", g_passed, g_failed);
     return 1;
   }
@@ -3843,6 +4388,7 @@ int main(void) {
   destroy_rig(&g_b);
   destroy_rig(&g_dev);
   frusta_destroy_hand(g_hand);
+  frusta_destroy_hand_fitter(g_fitter);
   frusta_destroy_sphere_tree(g_box);
   frusta_destroy_sphere_tree(g_plate);
   if (frusta_sphere_tree_is_valid(g_saved_tree)) frusta_destroy_sphere_tree(g_saved_tree);

@@ -73,7 +73,7 @@
 /** This header's version, major.minor.patch: the major part. */
 #define FRUSTA_VERSION_MAJOR 0
 /** The minor part. */
-#define FRUSTA_VERSION_MINOR 4
+#define FRUSTA_VERSION_MINOR 5
 /** The patch part. */
 #define FRUSTA_VERSION_PATCH 0
 /** major*1000000 + minor*1000 + patch; frusta_version() returns the library's. */
@@ -384,6 +384,102 @@ typedef enum frusta_fit_flag {
                                  fewer than three points out of line were present */
 } frusta_fit_flag;
 #endif /* FRUSTA_BASE_TRACKING */
+
+/** One tracked joint, in any frame (the fit's palm is in that frame, composed with the
+ *  frame pose given to the fit). Fields a flag does not declare valid are ignored and
+ *  may hold anything; valid ones must be finite, positions within 1e6 m, quaternion
+ *  norms in [0.5, 2] (normalised), radius 0..5 m. */
+typedef struct frusta_tracked_joint {
+  double position[3];  /* metres */
+  double rotation[4];  /* unit quaternion (x, y, z, w), OpenXR's joint axes */
+  double radius;       /* metres, 0 when unknown (the fit does not use it) */
+  int32_t flags;       /* frusta_joint_flag bits */
+  int32_t reserved0;   /* explicit padding */
+} frusta_tracked_joint;
+
+/** Hand fitter handle. Opaque; pass by value; zero means null. */
+typedef struct frusta_hand_fitter_id {
+  int32_t index1;      /* slot + 1; 0 is null */
+  uint16_t world0;     /* always 0: fitters are standalone */
+  uint16_t generation; /* bumped when the slot is reused */
+} frusta_hand_fitter_id;
+
+/** How a fitter reads joints; from frusta_default_hand_fit_def(). */
+typedef struct frusta_hand_fit_def {
+  int32_t struct_size;        /* sizeof(frusta_hand_fit_def) */
+  int32_t layout;             /* frusta_joint_layout of the joints; default
+                                 FRUSTA_JOINT_LAYOUT_XR */
+  int32_t require_tracked;    /* 1: a joint whose position is valid but not tracked
+                                 (inferred by the runtime) counts as missing; default 0 */
+  int32_t max_iterations;     /* damped Gauss-Newton steps per finger, 1..100; default 10 */
+  double orientation_weight;  /* metres, 0..1: each palm-rigid joint orientation weighs in
+                                 the palm's fit like points this far from it; 0 (default):
+                                 orientations are used only when fewer than three points
+                                 out of line are present */
+  int32_t internal_value;     /* set by frusta_default_hand_fit_def(); do not touch */
+  int32_t reserved0;          /* explicit padding */
+} frusta_hand_fit_def;
+
+/** One fit: what frusta_world_set_haptic takes (palm, angles), and how good it is. */
+typedef struct frusta_hand_fit {
+  int32_t struct_size;        /* sizeof(frusta_hand_fit); set it before the call */
+  int32_t palm_flags;         /* frusta_fit_flag bits of the palm */
+  frusta_pose palm;           /* the hand frame: in the joints' frame, composed with the
+                                 frame pose given to the fit (metres) */
+  double angles[FRUSTA_HAND_JOINT_COUNT]; /* radians, finger-major, within the limits */
+  double palm_residual;       /* metres: RMS distance of the palm-rigid joints present from
+                                 the fitted hand's (0 when none is) */
+  double finger_residual[FRUSTA_FINGER_COUNT]; /* metres: the same over each finger's
+                                 moving joints */
+  int32_t finger_flags[FRUSTA_FINGER_COUNT];   /* frusta_fit_flag bits of each finger */
+  int32_t reserved0;          /* explicit padding */
+} frusta_hand_fit;
+
+/** Defaults for frusta_create_hand_fitter. Thread: any. */
+FRUSTA_API frusta_hand_fit_def frusta_default_hand_fit_def(void);
+/** Create a fitter for a hand of def (its side, sizes and limits: calibrate the def
+ *  first, frusta_calibrate_hand_def, for a close fit) reading joints as fit_def says.
+ *  It starts with no history (FRUSTA_FIT_NO_HISTORY). Thread: any; the calling thread
+ *  is the fitter's host. */
+FRUSTA_API frusta_result frusta_create_hand_fitter(const frusta_hand_def* def,
+                                                   const frusta_hand_fit_def* fit_def,
+                                                   frusta_hand_fitter_id* out_fitter);
+/** Destroy a fitter; its id and every copy of it become stale. Thread: host. */
+FRUSTA_API frusta_result frusta_destroy_hand_fitter(frusta_hand_fitter_id fitter);
+/** 1 if the id names a live fitter, else 0 (never an error). Thread: any. */
+FRUSTA_API int32_t frusta_hand_fitter_is_valid(frusta_hand_fitter_id fitter);
+/** Fit one sample: count joints of the fitter's layout (FRUSTA_XR_JOINT_COUNT or
+ *  FRUSTA_KEYPOINT_COUNT), in a frame whose pose in the world is frame (null: the
+ *  identity; e.g. the XR tracking origin), into out (set out->struct_size first). Feed
+ *  out->palm and out->angles to frusta_world_set_haptic. Joints breaking the rules of
+ *  frusta_tracked_joint are refused, naming the joint and field, and change nothing;
+ *  missing ones are not an error (see frusta_fit_flag). Allocation-free, microseconds.
+ *  Thread: host. */
+FRUSTA_API frusta_result frusta_hand_fitter_fit(frusta_hand_fitter_id fitter,
+                                                const frusta_tracked_joint* joints,
+                                                int32_t count, const frusta_pose* frame,
+                                                frusta_hand_fit* out);
+/** The joints of a layout on a hand of def at a palm pose (metres) with
+ *  FRUSTA_HAND_JOINT_COUNT joint angles (radians; clamped into the limits as
+ *  frusta_hand_set_joint_angles does), every flag set, by the output-array rule: what a
+ *  tracker would report for that hand (tests, recordings, demos). Thread: any. */
+FRUSTA_API frusta_result frusta_hand_joints_from_pose(const frusta_hand_def* def, int32_t layout,
+                                                      const frusta_pose* palm,
+                                                      const double* angles, int32_t angle_count,
+                                                      frusta_tracked_joint* out, int32_t capacity,
+                                                      int32_t* out_count);
+/** Size def from frame_count frames (1..65536; a few seconds of tracking, any poses)
+ *  of the layout's joints each, frame after frame: hand_length (wrist to the middle
+ *  fingertip, straight) and hand_breadth (the anthropometric breadth whose MCP joints
+ *  lie as measured) as frusta_hand_def_set_size refills the def with, then each segment
+ *  length measured (the median over the frames, less the noise's bias). A joint counts
+ *  when its flags have FRUSTA_JOINT_POSITION_VALID and FRUSTA_JOINT_POSITION_TRACKED.
+ *  Side and joint limits are kept; a segment no frame measures keeps its proportional
+ *  length. Refused (def unchanged, the message naming the joints) when no frame has
+ *  the wrist, the middle finger or the index and little MCP joints. Thread: any. */
+FRUSTA_API frusta_result frusta_calibrate_hand_def(const frusta_tracked_joint* frames,
+                                                   int32_t frame_count, int32_t layout,
+                                                   frusta_hand_def* def);
 
 /* ---------------------------------------------------------------- geometry queries */
 

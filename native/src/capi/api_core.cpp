@@ -34,7 +34,9 @@ struct NamedSize {
 constexpr NamedSize kStructSizes[] = {
     FRUSTA_NAMED_SIZE(frusta_hand_id),       FRUSTA_NAMED_SIZE(frusta_pose),
     FRUSTA_NAMED_SIZE(frusta_sphere),        FRUSTA_NAMED_SIZE(frusta_segment),
-    FRUSTA_NAMED_SIZE(frusta_hand_def),      FRUSTA_NAMED_SIZE(frusta_contact_query),
+    FRUSTA_NAMED_SIZE(frusta_hand_def),      FRUSTA_NAMED_SIZE(frusta_tracked_joint),
+    FRUSTA_NAMED_SIZE(frusta_hand_fitter_id), FRUSTA_NAMED_SIZE(frusta_hand_fit_def),
+    FRUSTA_NAMED_SIZE(frusta_hand_fit),      FRUSTA_NAMED_SIZE(frusta_contact_query),
     FRUSTA_NAMED_SIZE(frusta_constraint),    FRUSTA_NAMED_SIZE(frusta_tree_id),
     FRUSTA_NAMED_SIZE(frusta_bake_def),      FRUSTA_NAMED_SIZE(frusta_sphere_tree_info),
     FRUSTA_NAMED_SIZE(frusta_tree_hit),      FRUSTA_NAMED_SIZE(frusta_world_id),

@@ -22,6 +22,16 @@ frusta_result check_radius(double radius, const std::string& field) {
 
 vec3 to_vec3(const double v[3]) { return vec3(v[0], v[1], v[2]); }
 
+// the header's (x, y, z, w) order; GLM's constructor takes w first
+glm::dquat to_quat(const double q[4]) { return glm::dquat(q[3], q[0], q[1], q[2]); }
+
+void store(const glm::dquat& q, double out[4]) {
+  out[0] = q.x;
+  out[1] = q.y;
+  out[2] = q.z;
+  out[3] = q.w;
+}
+
 }  // namespace
 
 frusta_result check_output_array(const void* out, const char* out_name, int32_t capacity,
@@ -61,7 +71,7 @@ frusta_result read_pose(const frusta_pose* in, const char* name, Pose* out) {
   if (frusta_result r = check_pointer(in, name)) return r;
   if (frusta_result r = check_point(in->position, n + ".position")) return r;
   if (frusta_result r = check_finite(in->rotation, 4, (n + ".rotation").c_str())) return r;
-  const glm::dquat q(in->rotation[3], in->rotation[0], in->rotation[1], in->rotation[2]);
+  const glm::dquat q = to_quat(in->rotation);
   const double norm = glm::length(q);
   if (!(norm >= kMinQuaternionNorm && norm <= kMaxQuaternionNorm))
     return fail(FRUSTA_ERROR_OUT_OF_RANGE, "%s.rotation has norm %g; a unit quaternion (x, y, z, "
@@ -114,16 +124,30 @@ HandDef read_hand_def(const frusta_hand_def& in) {
 
 void store_hand_def(const HandDef& in, frusta_hand_def* out) { copy_hand_fields(in, *out); }
 
+TrackedJoint read_tracked_joint(const frusta_tracked_joint& in) {
+  TrackedJoint out;
+  out.position = to_vec3(in.position);
+  out.rotation = to_quat(in.rotation);
+  out.radius = in.radius;
+  out.flags = in.flags;
+  return out;
+}
+
+void store(const TrackedJoint& in, frusta_tracked_joint* out) {
+  store(in.position, out->position);
+  store(in.rotation, out->rotation);
+  out->radius = in.radius;
+  out->flags = in.flags;
+  out->reserved0 = 0;
+}
+
 void store(const vec3& v, double out[3]) {
   for (int k = 0; k < 3; ++k) out[k] = v[k];
 }
 
 void store(const Pose& pose, frusta_pose* out) {
   store(pose.position, out->position);
-  out->rotation[0] = pose.rotation.x;
-  out->rotation[1] = pose.rotation.y;
-  out->rotation[2] = pose.rotation.z;
-  out->rotation[3] = pose.rotation.w;
+  store(pose.rotation, out->rotation);
 }
 
 Pose to_pose(const vec3& position, const glm::dmat3& rotation) {

@@ -12,6 +12,7 @@
 #include "frusta/frusta.h"
 #include "geometry/types.h"
 #include "hand/hand_model.h"
+#include "tracking/hand_joints.h"
 
 namespace frusta {
 
@@ -78,6 +79,10 @@ frusta_result read_joint_angles(const double* in, int32_t count, const char* nam
 // leaves out's struct_size and internal_value as they were.
 HandDef read_hand_def(const frusta_hand_def& in);
 void store_hand_def(const HandDef& in, frusta_hand_def* out);
+
+// A tracked joint's fields as they are (check_tracked_joint checks them), both ways.
+TrackedJoint read_tracked_joint(const frusta_tracked_joint& in);
+void store(const TrackedJoint& in, frusta_tracked_joint* out);
 
 void store(const vec3& v, double out[3]);
 void store(const Pose& pose, frusta_pose* out);

@@ -33,22 +33,6 @@ double median(double* values, int count) {
   return 0.5 * (upper + *std::max_element(values, values + half));
 }
 
-// Distances between two joints over the frames where both count.
-class Distances {
- public:
-  Distances() = default;
-  void reserve(int frames) { samples_.reserve(static_cast<size_t>(frames)); }
-  void add(const TrackedJoint& a, const TrackedJoint& b) {
-    if (counted(a) && counted(b)) samples_.push_back(glm::distance(a.position, b.position));
-  }
-  bool empty() const { return samples_.empty(); }
-  // once: it reuses the samples
-  double length() { return bone_length(samples_.data(), static_cast<int>(samples_.size())); }
-
- private:
-  std::vector<double> samples_;
-};
-
 }  // namespace
 
 double bone_length(double* samples, int count) {
@@ -59,39 +43,47 @@ double bone_length(double* samples, int count) {
   return m > 0.0 ? std::max(m - sigma * sigma / m, 0.5 * m) : m;
 }
 
-frusta_result calibrate_hand_def(const TrackedJoint* frames, int frame_count, int32_t layout,
-                                 HandDef* def) {
-  const int count = joint_count(layout);
-  Distances bones[FRUSTA_FINGER_COUNT][FRUSTA_SEGMENTS_PER_FINGER];
-  Distances wrist_to_middle, index_to_little;  // the palm keeps both whatever the pose
-  for (auto& finger : bones)
-    for (Distances& bone : finger) bone.reserve(frame_count);
-  wrist_to_middle.reserve(frame_count);
-  index_to_little.reserve(frame_count);
-  for (int i = 0; i < frame_count; ++i) {
-    const TrackedJoint* joints = frames + static_cast<size_t>(i) * static_cast<size_t>(count);
-    auto chain = [&](int f, int k) -> const TrackedJoint& { return joints[chain_joint(layout, f, k)]; };
-    for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f)
-      for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s) bones[f][s].add(chain(f, s), chain(f, s + 1));
-    wrist_to_middle.add(joints[wrist_joint(layout)], chain(kMiddle, 0));
-    index_to_little.add(chain(kIndex, 0), chain(kLittle, 0));
-  }
-  const char* missing = wrist_to_middle.empty() ? "the wrist and the middle finger's MCP joint"
-                        : index_to_little.empty() ? "the index and the little finger's MCP joints"
-                        : bones[kMiddle][0].empty() ? "the middle finger's MCP and PIP joints"
-                        : bones[kMiddle][1].empty() ? "the middle finger's PIP and DIP joints"
-                        : bones[kMiddle][2].empty() ? "the middle finger's DIP joint and tip"
-                                                    : nullptr;
+void HandCalibration::Distances::add(const TrackedJoint& a, const TrackedJoint& b) {
+  if (counted(a) && counted(b)) samples_.push_back(glm::distance(a.position, b.position));
+}
+
+double HandCalibration::Distances::length() {
+  return bone_length(samples_.data(), static_cast<int>(samples_.size()));
+}
+
+HandCalibration::HandCalibration(int32_t layout, int frames) : layout_(layout) {
+  for (auto& finger : bones_)
+    for (Distances& bone : finger) bone.reserve(frames);
+  wrist_to_middle_.reserve(frames);
+  index_to_little_.reserve(frames);
+}
+
+void HandCalibration::add_frame(const TrackedJoint* joints) {
+  auto chain = [&](int f, int k) -> const TrackedJoint& { return joints[chain_joint(layout_, f, k)]; };
+  for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f)
+    for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s) bones_[f][s].add(chain(f, s), chain(f, s + 1));
+  wrist_to_middle_.add(joints[wrist_joint(layout_)], chain(kMiddle, 0));
+  index_to_little_.add(chain(kIndex, 0), chain(kLittle, 0));
+  ++frames_;
+}
+
+frusta_result HandCalibration::size(HandDef* def) {
+  const char* missing = wrist_to_middle_.empty() ? "the wrist and the middle finger's MCP joint"
+                        : index_to_little_.empty() ? "the index and the little finger's MCP joints"
+                        : bones_[kMiddle][0].empty() ? "the middle finger's MCP and PIP joints"
+                        : bones_[kMiddle][1].empty() ? "the middle finger's PIP and DIP joints"
+                        : bones_[kMiddle][2].empty() ? "the middle finger's DIP joint and tip"
+                                                     : nullptr;
   if (missing)
     return fail(FRUSTA_ERROR_OUT_OF_RANGE,
                 "frames: %s are never tracked together in the %d frames (both need "
                 "FRUSTA_JOINT_POSITION_VALID and FRUSTA_JOINT_POSITION_TRACKED): the hand's "
-                "size cannot be measured", missing, frame_count);
+                "size cannot be measured", missing, frames_);
 
   double bone_lengths[FRUSTA_FINGER_COUNT][FRUSTA_SEGMENTS_PER_FINGER] = {};
   for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f)
     for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s)
-      if (!bones[f][s].empty()) bone_lengths[f][s] = bones[f][s].length();
+      if (!bones_[f][s].empty()) bone_lengths[f][s] = bones_[f][s].length();
 
   // the anthropometry's geometry is linear in length and breadth: its parts per metre
   HandDef per_length, per_breadth;
@@ -104,8 +96,8 @@ frusta_result calibrate_hand_def(const TrackedJoint* frames, int frame_count, in
   // hand length: the middle MCP joint's distance along the hand plus the finger's bones
   // (the last to the fingertip's end); breadth: whatever puts the index and little MCP
   // joints as far apart as measured. Each needs the other a little: iterate.
-  const double wrist_middle = wrist_to_middle.length();
-  const double index_little = index_to_little.length();
+  const double wrist_middle = wrist_to_middle_.length();
+  const double index_little = index_to_little_.length();
   const double finger = bone_lengths[kMiddle][0] + bone_lengths[kMiddle][1] + bone_lengths[kMiddle][2];
   double breadth = index_little / std::fabs(spread_across), length = 0.0;
   for (int iteration = 0; iteration < 16; ++iteration) {
@@ -124,7 +116,7 @@ frusta_result calibrate_hand_def(const TrackedJoint* frames, int frame_count, in
   fill_hand_geometry(sized, length, breadth);
   for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f)
     for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s) {
-      if (bones[f][s].empty()) continue;
+      if (bones_[f][s].empty()) continue;
       // the last bone runs to the fingertip's end, the segment to the tip ball's centre
       const double measured = bone_lengths[f][s] - (s == 2 ? sized.joint_radius[f][3] : 0.0);
       if (measured >= kMinHandPart) sized.segment_length[f][s] = measured;

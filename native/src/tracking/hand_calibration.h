@@ -4,20 +4,51 @@
 // whatever the pose, and each bone's measured length.
 #pragma once
 
+#include <vector>
+
 #include "hand/hand_model.h"
 #include "tracking/hand_joints.h"
 
 namespace frusta {
 
-// 65536 frames: twelve minutes at 90 Hz, 2 MB of distances.
+// 65536 frames: twelve minutes at 90 Hz, 9 MB of distances.
 constexpr int kMaxCalibrationFrames = 65536;
 
-// Size def (side and joint limits kept) from frame_count frames of joint_count(layout)
-// joints each, every frame passed check_tracked_joints. A joint counts when its
-// position is valid and tracked. On failure def is unchanged and the thread's error
-// says which joints were missing.
-frusta_result calibrate_hand_def(const TrackedJoint* frames, int frame_count, int32_t layout,
-                                 HandDef* def);
+// Sizes a hand def from frames of tracked joints, given one at a time (they need not
+// be kept): per frame, the distances that do not change with the pose.
+class HandCalibration {
+ public:
+  // frames: how many will be added (at most kMaxCalibrationFrames), for the storage.
+  HandCalibration(int32_t layout, int frames);
+
+  // joint_count(layout) joints that passed check_tracked_joint. A joint counts when its
+  // position is valid and tracked.
+  void add_frame(const TrackedJoint* joints);
+
+  // Size def from the frames added (side and joint limits kept); once, as it reuses
+  // their storage. On failure def is unchanged and the thread's error says which joints
+  // were missing.
+  frusta_result size(HandDef* def);
+
+ private:
+  // distances between two joints over the frames where both count
+  class Distances {
+   public:
+    void reserve(int frames) { samples_.reserve(static_cast<size_t>(frames)); }
+    void add(const TrackedJoint& a, const TrackedJoint& b);
+    bool empty() const { return samples_.empty(); }
+    // once: it reuses the samples
+    double length();
+
+   private:
+    std::vector<double> samples_;
+  };
+
+  int32_t layout_;
+  int frames_ = 0;
+  Distances bones_[FRUSTA_FINGER_COUNT][FRUSTA_SEGMENTS_PER_FINGER];
+  Distances wrist_to_middle_, index_to_little_;  // the palm keeps both whatever the pose
+};
 
 // The length a bone has when its measured lengths are samples: their median, less the
 // bias noise perpendicular to the bone adds (sigma^2 / length, sigma from the samples'

@@ -33,10 +33,16 @@ const glm::dmat3 kMirror(1.0, 0.0, 0.0, 0.0, -1.0, 0.0, 0.0, 0.0, 1.0);
 // the XR index of a finger's metacarpal joint (fingers 1..4)
 int xr_metacarpal(int finger) { return kXrFingerFirst + kXrPerFinger * (finger - 1); }
 
-// OpenXR axes of a bone along `along` (unit), +Y as near the hand's +z as it can be
-glm::dmat3 bone_axes(const vec3& along) {
+// OpenXR axes of a bone from the wrist towards `towards`, +Y as near the hand's +z as
+// it can be. A def may put an MCP joint on the wrist or straight above it: then the
+// hand's x stands in for the bone and its -x for the back.
+glm::dmat3 bone_axes(const vec3& towards) {
+  const double length = glm::length(towards);
+  const vec3 along = length > 0.0 ? towards / length : vec3(1.0, 0.0, 0.0);
   const vec3 z(0.0, 0.0, 1.0);
-  const vec3 back = glm::normalize(z - glm::dot(z, along) * along);
+  vec3 back = z - glm::dot(z, along) * along;
+  if (glm::length(back) < 1e-9) back = vec3(-1.0, 0.0, 0.0) + along.x * along;
+  back = glm::normalize(back);
   return xr_axes(glm::dmat3(along, glm::cross(back, along), back));
 }
 
@@ -93,7 +99,7 @@ PalmJoints palm_joints(const HandModel& model, int32_t layout) {
     if (!xr) continue;
     PalmJoint& metacarpal = add(xr_metacarpal(f), kCarpometacarpalFraction * mcp, finger.radius[0]);
     metacarpal.has_orientation = true;
-    metacarpal.axes = bone_axes(glm::normalize(mcp));
+    metacarpal.axes = bone_axes(mcp);
     if (f == FRUSTA_FINGER_MIDDLE) {
       PalmJoint& palm = add(kXrPalm, 0.5 * (metacarpal.position + mcp), palm_radius);
       palm.has_orientation = true;

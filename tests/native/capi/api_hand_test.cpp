@@ -22,43 +22,20 @@
 namespace frusta {
 namespace {
 
+using testing::interior_angles;
+using testing::random_pose;
 using testing::ScopedHand;
 // suite names start with "capi" so that `ctest -R capi` selects them
 using capiHand = testing::CapiTest;
 
 constexpr int kJacobianSize = FRUSTA_POINT_JACOBIAN_LENGTH;
 using Segments = std::array<frusta_segment, FRUSTA_HAND_SEGMENT_COUNT>;
-using Angles = std::array<double, FRUSTA_HAND_JOINT_COUNT>;
+using testing::Angles;
 
 frusta_hand_def def_of(int side) {
   frusta_hand_def def = frusta_default_hand_def();
   def.side = side;
   return def;
-}
-
-// angles inside the limits, at least a tenth of each range away from either end
-Angles interior_angles(const frusta_hand_def& def, std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> unit(0.1, 0.9);
-  Angles a{};
-  for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f)
-    for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j)
-      a[f * 4 + j] = def.joint_min[f][j] + unit(rng) * (def.joint_max[f][j] - def.joint_min[f][j]);
-  return a;
-}
-
-// a random pose: position within a metre, a uniformly random unit quaternion (x, y, z, w)
-frusta_pose random_pose(std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> coord(-1.0, 1.0);
-  std::normal_distribution<double> gauss;
-  frusta_pose p{};
-  for (double& x : p.position) x = coord(rng);
-  double norm = 0.0;
-  for (double& q : p.rotation) {
-    q = gauss(rng);
-    norm += q * q;
-  }
-  for (double& q : p.rotation) q /= std::sqrt(norm);
-  return p;
 }
 
 Segments segments_of(frusta_hand_id hand) {

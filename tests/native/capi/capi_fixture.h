@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: MIT
 // Shared by the C ABI tests: a fixture that fails any test leaving an unexpected
-// error message behind, and an RAII owner for hand ids.
+// error message behind, an RAII owner for hand ids, and random hand inputs.
 #pragma once
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
+#include <random>
 #include <string>
 
 #include "core/error.h"
@@ -50,5 +53,32 @@ class ScopedHand {
  private:
   frusta_hand_id id_{};
 };
+
+using Angles = std::array<double, FRUSTA_HAND_JOINT_COUNT>;
+
+// angles inside the limits, at least a tenth of each range away from either end
+inline Angles interior_angles(const frusta_hand_def& def, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> unit(0.1, 0.9);
+  Angles a{};
+  for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f)
+    for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j)
+      a[f * 4 + j] = def.joint_min[f][j] + unit(rng) * (def.joint_max[f][j] - def.joint_min[f][j]);
+  return a;
+}
+
+// a random pose: position within a metre, a uniformly random unit quaternion (x, y, z, w)
+inline frusta_pose random_pose(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> coord(-1.0, 1.0);
+  std::normal_distribution<double> gauss;
+  frusta_pose p{};
+  for (double& x : p.position) x = coord(rng);
+  double norm = 0.0;
+  for (double& q : p.rotation) {
+    q = gauss(rng);
+    norm += q * q;
+  }
+  for (double& q : p.rotation) q /= std::sqrt(norm);
+  return p;
+}
 
 }  // namespace frusta::testing

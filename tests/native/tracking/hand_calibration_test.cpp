@@ -34,6 +34,14 @@ std::vector<TrackedJoint> recording(const HandDef& def, int32_t layout, int fram
   return out;
 }
 
+frusta_result calibrate(const std::vector<TrackedJoint>& frames, int32_t layout, HandDef* def) {
+  const int count = joint_count(layout);
+  const int n = static_cast<int>(frames.size()) / count;
+  HandCalibration calibration(layout, n);
+  for (int i = 0; i < n; ++i) calibration.add_frame(frames.data() + i * count);
+  return calibration.size(def);
+}
+
 struct Size {
   double length, breadth;
 };
@@ -49,7 +57,7 @@ TEST(HandCalibration, TwoSecondsOfNoisyTrackingSizeTheHandWithinTwoPercent) {
         const std::vector<TrackedJoint> frames = recording(truth, layout, 180, 0.002, ++seed);
         HandDef def = default_hand_def();
         def.side = side;
-        ASSERT_EQ(calibrate_hand_def(frames.data(), 180, layout, &def), FRUSTA_OK) << last_error_message();
+        ASSERT_EQ(calibrate(frames, layout, &def), FRUSTA_OK) << last_error_message();
         const double length_error = def.hand_length / size.length - 1.0;
         const double breadth_error = def.hand_breadth / size.breadth - 1.0;
         std::printf("%s %s %.3f x %.3f m: length %+.2f %%, breadth %+.2f %%\n",
@@ -73,7 +81,7 @@ TEST(HandCalibration, ExactJointsGiveTheExactDef) {
     HandDef def = default_hand_def();
     def.side = FRUSTA_HAND_LEFT;
     def.joint_max[1][1] = 1.0;  // limits are kept
-    ASSERT_EQ(calibrate_hand_def(frames.data(), 3, layout, &def), FRUSTA_OK);
+    ASSERT_EQ(calibrate(frames, layout, &def), FRUSTA_OK);
     EXPECT_NEAR(def.hand_length, 0.2, 1e-12);
     EXPECT_NEAR(def.hand_breadth, 0.09, 1e-12);
     EXPECT_EQ(def.joint_max[1][1], 1.0);
@@ -90,14 +98,14 @@ TEST(HandCalibration, AHandWhoseSizeCannotBeMeasuredLeavesTheDefUnchanged) {
   for (int i = 0; i < 10; ++i) frames[static_cast<size_t>(i * 26 + chain_joint(kXr, 2, 3))].flags = 0;
   HandDef def = default_hand_def();
   const HandDef before = def;
-  EXPECT_EQ(calibrate_hand_def(frames.data(), 10, kXr, &def), FRUSTA_ERROR_OUT_OF_RANGE);
+  EXPECT_EQ(calibrate(frames, kXr, &def), FRUSTA_ERROR_OUT_OF_RANGE);
   EXPECT_NE(std::string(last_error_message()).find("the middle finger's DIP joint and tip"),
             std::string::npos) << last_error_message();
   EXPECT_EQ(def.hand_length, before.hand_length);
   // positions valid but inferred, not tracked, do not count either
   frames = recording(truth, kXr, 10, 0.0, 8);
   for (TrackedJoint& j : frames) j.flags &= ~FRUSTA_JOINT_POSITION_TRACKED;
-  EXPECT_EQ(calibrate_hand_def(frames.data(), 10, kXr, &def), FRUSTA_ERROR_OUT_OF_RANGE);
+  EXPECT_EQ(calibrate(frames, kXr, &def), FRUSTA_ERROR_OUT_OF_RANGE);
 }
 
 TEST(HandCalibration, ABoneNoFrameMeasuresKeepsItsProportionalLength) {
@@ -105,7 +113,7 @@ TEST(HandCalibration, ABoneNoFrameMeasuresKeepsItsProportionalLength) {
   std::vector<TrackedJoint> frames = recording(truth, kKeypoints, 5, 0.0, 9);
   for (int i = 0; i < 5; ++i) frames[static_cast<size_t>(i * 21 + chain_joint(kKeypoints, 4, 3))].flags = 0;
   HandDef def = default_hand_def();
-  ASSERT_EQ(calibrate_hand_def(frames.data(), 5, kKeypoints, &def), FRUSTA_OK);
+  ASSERT_EQ(calibrate(frames, kKeypoints, &def), FRUSTA_OK);
   EXPECT_NEAR(def.segment_length[4][2], truth.segment_length[4][2], 1e-12);  // proportional
   EXPECT_NEAR(def.segment_length[4][1], truth.segment_length[4][1], 1e-12);  // measured
 }

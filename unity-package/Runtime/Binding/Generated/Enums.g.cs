@@ -198,7 +198,7 @@ namespace Frusta.Binding
         /// <summary>This header's version, major.minor.patch: the major part.</summary>
         public const int VersionMajor = 0;
         /// <summary>The minor part.</summary>
-        public const int VersionMinor = 4;
+        public const int VersionMinor = 5;
         /// <summary>The patch part.</summary>
         public const int VersionPatch = 0;
         /// <summary>major*1000000 + minor*1000 + patch; frusta_version() returns the library's.</summary>

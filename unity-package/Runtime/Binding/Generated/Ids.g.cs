@@ -61,6 +61,55 @@ namespace Frusta.Binding
         public override readonly string ToString() => $"{{{Index1}, {World0}, {Generation}}}";
     }
 
+    /// <summary>Hand fitter handle. Opaque; pass by value; zero means null.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public partial struct FrustaHandFitterId : IEquatable<FrustaHandFitterId>
+    {
+        /// <summary>slot + 1; 0 is null</summary>
+        public int Index1;
+        /// <summary>always 0: fitters are standalone</summary>
+        public ushort World0;
+        /// <summary>bumped when the slot is reused</summary>
+        public ushort Generation;
+
+        /// <summary>The null handle (all zero).</summary>
+        public static FrustaHandFitterId Null => default;
+
+        /// <summary>true for the null handle (<see cref="Index1"/> is 0).</summary>
+        public readonly bool IsNull => Index1 == 0;
+
+        /// <summary>Field-wise equality.</summary>
+        /// <param name="other">The handle to compare with.</param>
+        /// <returns>true when both name the same slot, world and generation.</returns>
+        public readonly bool Equals(FrustaHandFitterId other) =>
+            Index1 == other.Index1 && World0 == other.World0 && Generation == other.Generation;
+
+        /// <summary>Field-wise equality with a boxed handle.</summary>
+        /// <param name="obj">The object to compare with.</param>
+        /// <returns>true when obj is an equal handle.</returns>
+        public override readonly bool Equals(object obj) => obj is FrustaHandFitterId o && Equals(o);
+
+        /// <summary>A hash of the three fields.</summary>
+        /// <returns>The hash code.</returns>
+        public override readonly int GetHashCode() => Index1 * 31 + (World0 << 16 | Generation);
+
+        /// <summary>Field-wise equality.</summary>
+        /// <param name="a">The first handle.</param>
+        /// <param name="b">The second handle.</param>
+        /// <returns>true when equal.</returns>
+        public static bool operator ==(FrustaHandFitterId a, FrustaHandFitterId b) => a.Equals(b);
+
+        /// <summary>Field-wise inequality.</summary>
+        /// <param name="a">The first handle.</param>
+        /// <param name="b">The second handle.</param>
+        /// <returns>true when different.</returns>
+        public static bool operator !=(FrustaHandFitterId a, FrustaHandFitterId b) => !a.Equals(b);
+
+        /// <summary>"{index1, world0, generation}".</summary>
+        /// <returns>The text.</returns>
+        public override readonly string ToString() => $"{{{Index1}, {World0}, {Generation}}}";
+    }
+
     /// <summary>Sphere-tree handle (an object's shape). Opaque; pass by value; zero means null.</summary>
     [StructLayout(LayoutKind.Sequential)]
     public partial struct FrustaTreeId : IEquatable<FrustaTreeId>

@@ -136,6 +136,62 @@ namespace Frusta.Binding
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern FrustaResult frusta_hand_point_jacobian(FrustaHandId hand, int finger, int segment, double* localPoint, double* outPoint, double* outJacobian, int capacity, int* outCount);
 
+        /// <summary>Defaults for frusta_create_hand_fitter. Thread: any.</summary>
+        [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern FrustaHandFitDef frusta_default_hand_fit_def();
+
+        /// <summary>
+        /// Create a fitter for a hand of def (its side, sizes and limits: calibrate the def
+        /// first, frusta_calibrate_hand_def, for a close fit) reading joints as fit_def says.
+        /// It starts with no history (FRUSTA_FIT_NO_HISTORY). Thread: any; the calling thread
+        /// is the fitter's host.
+        /// </summary>
+        [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern FrustaResult frusta_create_hand_fitter(FrustaHandDef* def, FrustaHandFitDef* fitDef, FrustaHandFitterId* outFitter);
+
+        /// <summary>Destroy a fitter; its id and every copy of it become stale. Thread: host.</summary>
+        [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern FrustaResult frusta_destroy_hand_fitter(FrustaHandFitterId fitter);
+
+        /// <summary>1 if the id names a live fitter, else 0 (never an error). Thread: any.</summary>
+        [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern int frusta_hand_fitter_is_valid(FrustaHandFitterId fitter);
+
+        /// <summary>
+        /// Fit one sample: count joints of the fitter's layout (FRUSTA_XR_JOINT_COUNT or
+        /// FRUSTA_KEYPOINT_COUNT), in a frame whose pose in the world is frame (null: the
+        /// identity; e.g. the XR tracking origin), into out (set out-&gt;struct_size first). Feed
+        /// out-&gt;palm and out-&gt;angles to frusta_world_set_haptic. Joints breaking the rules of
+        /// frusta_tracked_joint are refused, naming the joint and field, and change nothing;
+        /// missing ones are not an error (see frusta_fit_flag). Allocation-free, microseconds.
+        /// Thread: host.
+        /// </summary>
+        [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern FrustaResult frusta_hand_fitter_fit(FrustaHandFitterId fitter, FrustaTrackedJoint* joints, int count, FrustaPose* frame, FrustaHandFit* @out);
+
+        /// <summary>
+        /// The joints of a layout on a hand of def at a palm pose (metres) with
+        /// FRUSTA_HAND_JOINT_COUNT joint angles (radians; clamped into the limits as
+        /// frusta_hand_set_joint_angles does), every flag set, by the output-array rule: what a
+        /// tracker would report for that hand (tests, recordings, demos). Thread: any.
+        /// </summary>
+        [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern FrustaResult frusta_hand_joints_from_pose(FrustaHandDef* def, int layout, FrustaPose* palm, double* angles, int angleCount, FrustaTrackedJoint* @out, int capacity, int* outCount);
+
+        /// <summary>
+        /// Size def from frame_count frames (1..65536; a few seconds of tracking, any poses)
+        /// of the layout's joints each, frame after frame: hand_length (wrist to the middle
+        /// fingertip, straight) and hand_breadth (the anthropometric breadth whose MCP joints
+        /// lie as measured) as frusta_hand_def_set_size refills the def with, then each segment
+        /// length measured (the median over the frames, less the noise's bias). A joint counts
+        /// when its flags have FRUSTA_JOINT_POSITION_VALID and FRUSTA_JOINT_POSITION_TRACKED.
+        /// Side and joint limits are kept; a segment no frame measures keeps its proportional
+        /// length. Refused (def unchanged, the message naming the joints) when no frame has
+        /// the wrist, the middle finger or the index and little MCP joints. Thread: any.
+        /// </summary>
+        [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern FrustaResult frusta_calibrate_hand_def(FrustaTrackedJoint* frames, int frameCount, int layout, FrustaHandDef* def);
+
         /// <summary>
         /// Query one sphere against one segment solid. Radii must be &gt;= 0 and every value
         /// finite with magnitude &lt;= 1e6 m. out-&gt;struct_size must be set. Thread: any.

@@ -101,6 +101,89 @@ namespace Frusta.Binding
         internal int reserved0;
     }
 
+    /// <summary>
+    /// One tracked joint, in any frame (the fit's palm is in that frame, composed with the
+    /// frame pose given to the fit). Fields a flag does not declare valid are ignored and
+    /// may hold anything; valid ones must be finite, positions within 1e6 m, quaternion
+    /// norms in [0.5, 2] (normalised), radius 0..5 m.
+    /// </summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public partial struct FrustaTrackedJoint
+    {
+        /// <summary>metres</summary>
+        public Vector3d Position;
+        /// <summary>unit quaternion (x, y, z, w), OpenXR's joint axes</summary>
+        public Quaterniond Rotation;
+        /// <summary>metres, 0 when unknown (the fit does not use it)</summary>
+        public double Radius;
+        /// <summary>frusta_joint_flag bits</summary>
+        public FrustaJointFlag Flags;
+        /// <summary>explicit padding</summary>
+        internal int reserved0;
+    }
+
+    /// <summary>How a fitter reads joints; from frusta_default_hand_fit_def().</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public partial struct FrustaHandFitDef
+    {
+        /// <summary>sizeof(frusta_hand_fit_def)</summary>
+        internal int struct_size;
+        /// <summary>
+        /// frusta_joint_layout of the joints; default
+        /// FRUSTA_JOINT_LAYOUT_XR
+        /// </summary>
+        public FrustaJointLayout Layout;
+        /// <summary>
+        /// 1: a joint whose position is valid but not tracked
+        /// (inferred by the runtime) counts as missing; default 0
+        /// </summary>
+        internal int require_tracked;
+        /// <summary>damped Gauss-Newton steps per finger, 1..100; default 10</summary>
+        public int MaxIterations;
+        /// <summary>
+        /// metres, 0..1: each palm-rigid joint orientation weighs in
+        /// the palm's fit like points this far from it; 0 (default):
+        /// orientations are used only when fewer than three points
+        /// out of line are present
+        /// </summary>
+        public double OrientationWeight;
+        /// <summary>set by frusta_default_hand_fit_def(); do not touch</summary>
+        internal int internal_value;
+        /// <summary>explicit padding</summary>
+        internal int reserved0;
+    }
+
+    /// <summary>One fit: what frusta_world_set_haptic takes (palm, angles), and how good it is.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public unsafe partial struct FrustaHandFit
+    {
+        /// <summary>sizeof(frusta_hand_fit); set it before the call</summary>
+        internal int struct_size;
+        /// <summary>frusta_fit_flag bits of the palm</summary>
+        public FrustaFitFlag PalmFlags;
+        /// <summary>
+        /// the hand frame: in the joints' frame, composed with the
+        /// frame pose given to the fit (metres)
+        /// </summary>
+        public FrustaPose Palm;
+        /// <summary>radians, finger-major, within the limits</summary>
+        internal fixed double angles[FrustaConstants.HandJointCount];
+        /// <summary>
+        /// metres: RMS distance of the palm-rigid joints present from
+        /// the fitted hand's (0 when none is)
+        /// </summary>
+        public double PalmResidual;
+        /// <summary>
+        /// metres: the same over each finger's
+        /// moving joints
+        /// </summary>
+        internal fixed double finger_residual[FrustaConstants.FingerCount];
+        /// <summary>frusta_fit_flag bits of each finger</summary>
+        internal fixed int finger_flags[FrustaConstants.FingerCount];
+        /// <summary>explicit padding</summary>
+        internal int reserved0;
+    }
+
     /// <summary>Everything one sphere/segment query knows.</summary>
     [StructLayout(LayoutKind.Sequential)]
     public partial struct FrustaContactQuery
@@ -679,6 +762,10 @@ namespace Frusta.Binding
             new Mirror("frusta_sphere", typeof(FrustaSphere), sizeof(FrustaSphere)),
             new Mirror("frusta_segment", typeof(FrustaSegment), sizeof(FrustaSegment)),
             new Mirror("frusta_hand_def", typeof(FrustaHandDef), sizeof(FrustaHandDef)),
+            new Mirror("frusta_tracked_joint", typeof(FrustaTrackedJoint), sizeof(FrustaTrackedJoint)),
+            new Mirror("frusta_hand_fitter_id", typeof(FrustaHandFitterId), sizeof(FrustaHandFitterId)),
+            new Mirror("frusta_hand_fit_def", typeof(FrustaHandFitDef), sizeof(FrustaHandFitDef)),
+            new Mirror("frusta_hand_fit", typeof(FrustaHandFit), sizeof(FrustaHandFit)),
             new Mirror("frusta_contact_query", typeof(FrustaContactQuery), sizeof(FrustaContactQuery)),
             new Mirror("frusta_constraint", typeof(FrustaConstraint), sizeof(FrustaConstraint)),
             new Mirror("frusta_tree_id", typeof(FrustaTreeId), sizeof(FrustaTreeId)),
