@@ -132,6 +132,8 @@ namespace Frusta.Binding.Tests
             Assert.Equal(128, FrustaWorldDef.Default.struct_size);
             Assert.Equal(224, FrustaObjectDef.Default.struct_size);
             Assert.Equal(728, FrustaDeviceDef.Default.struct_size);
+            Assert.Equal(32, FrustaHandFitDef.Default.struct_size);
+            Assert.NotEqual(0, FrustaHandFitDef.Default.internal_value);
             Assert.NotEqual(0, FrustaWorldDef.Default.internal_value);
             Assert.NotEqual(0, FrustaObjectDef.Default.internal_value);
             Assert.NotEqual(0, FrustaDeviceDef.Default.internal_value);
@@ -177,6 +179,9 @@ namespace Frusta.Binding.Tests
                 for (int s = 0; s < 3; ++s)
                     Assert.True(h.GetSegmentLength((FrustaFinger)f, s) > 0.005, $"segment {f}/{s}");
 
+            FrustaHandFitDef fit = FrustaHandFitDef.Default;
+            Assert.Equal((FrustaJointLayout.Xr, false, 10, 0.0), (fit.Layout, fit.RequireTracked, fit.MaxIterations, fit.OrientationWeight));
+
             FrustaBakeDef b = FrustaBakeDef.Default;
             Assert.Equal((4, 0.001, 200000L, 40, 100000L, 1UL), (b.Branching, b.TargetError, b.MaxLeaves, b.MaxDepth, b.ErrorSamples, b.Seed));
         }
@@ -187,7 +192,7 @@ namespace Frusta.Binding.Tests
             FrustaLibrary.EnsureCompatible();
             Assert.Equal(FrustaConstants.AbiVersion, FrustaLibrary.AbiVersion);
             Assert.Equal(FrustaConstants.Version, FrustaLibrary.Version);
-            Assert.Equal("0.4.0", FrustaLibrary.VersionString);
+            Assert.Equal("0.5.0", FrustaLibrary.VersionString);
             Assert.Equal("FRUSTA_ERROR_STALE_ID", FrustaLibrary.GetResultName(FrustaResult.StaleId));
             Assert.Equal(0, FrustaLibrary.GetNativeStructSize("frusta_no_such_struct"));
         }

@@ -201,7 +201,7 @@ namespace Frusta.Binding
         }
 
         /// <summary>Send the glove a zero command, stop its thread and close it (<c>frusta_destroy_device</c>);
-        /// the hand takes <see cref="World.SetHaptic"/> again. Raises no event. Safe to call twice, and
+        /// the hand takes <see cref="World.SetHaptic(FrustaHandId, in FrustaPose, ReadOnlySpan{double})"/> again. Raises no event. Safe to call twice, and
         /// after the world was disposed (which closed the glove already). Thread: host.</summary>
         public void Dispose() => handle.Dispose();
 

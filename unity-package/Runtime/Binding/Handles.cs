@@ -89,6 +89,11 @@ namespace Frusta.Binding
         protected override void Destroy() => Native.frusta_destroy_hand(Id);
     }
 
+    internal sealed class FitterHandle : IdHandle<FrustaHandFitterId>
+    {
+        protected override void Destroy() => Native.frusta_destroy_hand_fitter(Id);
+    }
+
     internal sealed class DeviceHandle : IdHandle<FrustaDeviceId>
     {
         // the owning world's handle: a glove closes only while its world is alive

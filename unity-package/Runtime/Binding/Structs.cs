@@ -62,6 +62,51 @@ namespace Frusta.Binding
                 Errors.Check(Native.frusta_hand_def_set_size(self, handLength, handBreadth), "frusta_hand_def_set_size");
         }
 
+        /// <summary>Size this def from tracked joints: hand length and breadth, then each segment
+        /// length measured (the median over the frames, less the noise's bias); side and joint
+        /// limits are kept (<c>frusta_calibrate_hand_def</c>). A few seconds of tracking in any
+        /// poses will do. A joint counts when its flags have
+        /// <see cref="FrustaJointFlag.PositionValid"/> and <see cref="FrustaJointFlag.PositionTracked"/>.
+        /// On error this def is unchanged. Thread: any.</summary>
+        /// <param name="frames">Frame after frame, each the layout's joints
+        /// (<see cref="HandFitter.JointCountOf"/>): at most 65536 frames.</param>
+        /// <param name="layout">How each frame's joints are laid out.</param>
+        /// <exception cref="ArgumentException">frames is not a whole number of frames.</exception>
+        /// <exception cref="FrustaException">A joint breaking the rules of <see cref="FrustaTrackedJoint"/>,
+        /// or no frame with the joints the hand's size needs (the message names them).</exception>
+        public void Calibrate(ReadOnlySpan<FrustaTrackedJoint> frames, FrustaJointLayout layout)
+        {
+            int perFrame = HandFitter.JointCountOf(layout);
+            if (frames.Length % perFrame != 0)
+                throw new ArgumentException($"{frames.Length} joints are not whole frames of {perFrame}", nameof(frames));
+            fixed (FrustaHandDef* self = &this)
+            fixed (FrustaTrackedJoint* j = frames)
+                Errors.Check(Native.frusta_calibrate_hand_def(j, frames.Length / perFrame, (int)layout, self),
+                             "frusta_calibrate_hand_def");
+        }
+
+        /// <summary>The joints a tracker would report for a hand of this def at a palm pose and joint
+        /// angles (clamped into the limits), every flag set: the first min(destination.Length, count)
+        /// (<c>frusta_hand_joints_from_pose</c>). For tests, recordings and demos. Thread: any.</summary>
+        /// <param name="layout">The joints' layout.</param>
+        /// <param name="palm">The hand frame, metres.</param>
+        /// <param name="angles">Exactly <see cref="FrustaConstants.HandJointCount"/> radians, finger-major.</param>
+        /// <param name="destination">Receives the joints; <see cref="HandFitter.JointCountOf"/> holds all.</param>
+        /// <returns>How many joints the layout has.</returns>
+        public readonly int GetJoints(FrustaJointLayout layout, in FrustaPose palm, ReadOnlySpan<double> angles,
+                                      Span<FrustaTrackedJoint> destination)
+        {
+            int count;
+            fixed (FrustaHandDef* self = &this)
+            fixed (FrustaPose* p = &palm)
+            fixed (double* a = angles)
+            fixed (FrustaTrackedJoint* d = destination)
+                Errors.Check(Native.frusta_hand_joints_from_pose(self, (int)layout, p, a, angles.Length, d,
+                                                                  destination.Length, &count),
+                             "frusta_hand_joints_from_pose");
+            return count;
+        }
+
         static int Index(FrustaFinger finger, int k, int count)
         {
             if ((uint)finger >= FrustaConstants.FingerCount) throw new ArgumentOutOfRangeException(nameof(finger));
@@ -156,6 +201,98 @@ namespace Frusta.Binding
         /// <param name="radians">Radians.</param>
         public void SetJointMax(FrustaFinger finger, int joint, double radians) =>
             joint_max[Index(finger, joint, FrustaConstants.JointsPerFinger)] = radians;
+    }
+
+    /// <remarks>In Frusta's right-handed frame; convert with <see cref="CoordinateConversion"/>. An
+    /// OpenXR joint's pose and locationFlags go in as they are.</remarks>
+    public partial struct FrustaTrackedJoint
+    {
+        /// <summary>A joint from its pose, radius and flags.</summary>
+        /// <param name="position">Metres.</param>
+        /// <param name="rotation">OpenXR's joint axes: -Z along the bone towards the tip, +Y out of its back.</param>
+        /// <param name="radius">Metres, 0 when unknown.</param>
+        /// <param name="flags">Which fields hold values.</param>
+        public FrustaTrackedJoint(Vector3d position, Quaterniond rotation, double radius, FrustaJointFlag flags)
+        {
+            Position = position;
+            Rotation = rotation;
+            Radius = radius;
+            Flags = flags;
+            reserved0 = 0;
+        }
+
+        /// <summary>A keypoint: a position alone, valid and tracked.</summary>
+        /// <param name="position">Metres.</param>
+        /// <returns>The joint.</returns>
+        public static FrustaTrackedJoint Keypoint(Vector3d position) =>
+            new FrustaTrackedJoint(position, Quaterniond.Identity, 0.0,
+                                   FrustaJointFlag.PositionValid | FrustaJointFlag.PositionTracked);
+    }
+
+    public partial struct FrustaHandFitDef
+    {
+        /// <summary>The library's defaults (<c>frusta_default_hand_fit_def</c>): OpenXR's 26 joints,
+        /// inferred joints taken, 10 refining steps, orientations only when points fall short.
+        /// Thread: any.</summary>
+        public static FrustaHandFitDef Default => FrustaLibrary.Compatible(() => Native.frusta_default_hand_fit_def());
+
+        /// <summary>true: a joint whose position is valid but not tracked (inferred by the runtime)
+        /// counts as missing; default false.</summary>
+        public bool RequireTracked
+        {
+            readonly get => require_tracked != 0;
+            set => require_tracked = value ? 1 : 0;
+        }
+    }
+
+    /// <remarks>Filled by <see cref="HandFitter.Fit(ReadOnlySpan{FrustaTrackedJoint}, in FrustaPose, ref FrustaHandFit)"/>;
+    /// feed it to <see cref="World.SetHaptic(FrustaHandId, in FrustaHandFit)"/>. Reuse one instance
+    /// per frame: nothing is allocated.</remarks>
+    public unsafe partial struct FrustaHandFit
+    {
+        static int Finger(FrustaFinger finger)
+        {
+            if ((uint)finger >= FrustaConstants.FingerCount) throw new ArgumentOutOfRangeException(nameof(finger));
+            return (int)finger;
+        }
+
+        /// <summary>One fitted joint angle, radians, within the hand's limits.</summary>
+        /// <param name="joint">finger * 4 + k; k 0 abduction, 1..3 flexion.</param>
+        /// <returns>Radians.</returns>
+        public readonly double GetAngle(int joint)
+        {
+            if ((uint)joint >= FrustaConstants.HandJointCount)
+                throw new ArgumentOutOfRangeException(nameof(joint), "must be 0..19");
+            fixed (double* a = angles) return a[joint];
+        }
+
+        /// <summary>Copy the fitted angles, radians, finger-major: the first min(destination.Length, 20).</summary>
+        /// <param name="destination">Receives the angles.</param>
+        /// <returns>How many angles there are (20).</returns>
+        public readonly int CopyAngles(Span<double> destination)
+        {
+            fixed (double* a = angles)
+                new ReadOnlySpan<double>(a, FrustaConstants.HandJointCount)
+                    .Slice(0, Math.Min(destination.Length, FrustaConstants.HandJointCount)).CopyTo(destination);
+            return FrustaConstants.HandJointCount;
+        }
+
+        /// <summary>RMS distance of a finger's moving joints present from the fitted hand's, metres
+        /// (0 when none is).</summary>
+        /// <param name="finger">The finger.</param>
+        /// <returns>Metres.</returns>
+        public readonly double GetFingerResidual(FrustaFinger finger)
+        {
+            fixed (double* r = finger_residual) return r[Finger(finger)];
+        }
+
+        /// <summary>How a finger's angles came about: fitted (none), held, partly held, clamped.</summary>
+        /// <param name="finger">The finger.</param>
+        /// <returns>The flags.</returns>
+        public readonly FrustaFitFlag GetFingerFlags(FrustaFinger finger)
+        {
+            fixed (int* f = finger_flags) return (FrustaFitFlag)f[Finger(finger)];
+        }
     }
 
     /// <remarks>From <see cref="Geometry.QueryContact"/>.</remarks>

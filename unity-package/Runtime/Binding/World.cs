@@ -12,7 +12,7 @@ namespace Frusta.Binding
     /// the stepping thread: object commands are queued for the next step and results are
     /// published as snapshots that <see cref="Read"/> latches.
     /// <para>Threads: the creating thread is the host (Unity's main thread) for every member
-    /// unless its documentation says otherwise; <see cref="SetHaptic"/> may come from one input
+    /// unless its documentation says otherwise; <see cref="SetHaptic(FrustaHandId, in FrustaPose, ReadOnlySpan{double})"/> may come from one input
     /// thread per hand; <see cref="ReadSnapshot"/> from any thread. Dispose is safe twice and
     /// from any thread; it waits for calls in flight, then stops the own thread, closes the
     /// world's gloves (<see cref="CreateDevice(string, in FrustaDeviceDef)"/>) and destroys the
@@ -106,6 +106,20 @@ namespace Frusta.Binding
             fixed (FrustaPose* p = &palm)
             fixed (double* a = angles)
                 Errors.Check(Native.frusta_world_set_haptic(handle.Id, hand, p, a, angles.Length), "frusta_world_set_haptic");
+        }
+
+        /// <summary>Set a hand's haptic input from a fit of tracked joints: its palm and angles, as
+        /// <see cref="SetHaptic(FrustaHandId, in FrustaPose, ReadOnlySpan{double})"/> takes them
+        /// (<c>frusta_world_set_haptic</c>). Lock-free and allocation-free. Thread: one input thread per hand.</summary>
+        /// <param name="hand">A hand of this world.</param>
+        /// <param name="fit">From <see cref="HandFitter.Fit(ReadOnlySpan{FrustaTrackedJoint}, in FrustaPose, ref FrustaHandFit)"/>,
+        /// in this world's frame (give the fit the joints' frame).</param>
+        public void SetHaptic(FrustaHandId hand, in FrustaHandFit fit)
+        {
+            using (new HandleUse(handle))
+            fixed (FrustaHandFit* f = &fit)
+                Errors.Check(Native.frusta_world_set_haptic(handle.Id, hand, &f->Palm, f->angles, FrustaConstants.HandJointCount),
+                             "frusta_world_set_haptic");
         }
 
         /// <summary>Create an object in this world with a tree's shape; queued, present from the next step
@@ -336,7 +350,7 @@ namespace Frusta.Binding
         /// one of <c>opengloves:PATH?baud=N</c> (OpenGloves alpha encoding over serial),
         /// <c>serial:PATH?baud=N</c> and <c>hid:VID:PID[:SERIAL]</c> (Frusta's binary profile), or
         /// <c>replay:FILE?speed=1|max&amp;loop=0|1</c> (a recording); any takes <c>&amp;record=FILE</c>.
-        /// While the glove is open it feeds the hand (<see cref="SetHaptic"/> on that hand is refused
+        /// While the glove is open it feeds the hand (<see cref="SetHaptic(FrustaHandId, in FrustaPose, ReadOnlySpan{double})"/> on that hand is refused
         /// with <see cref="FrustaResult.WrongState"/>), and its palm comes from
         /// <see cref="Device.SetPalmPose"/> unless the glove reports one. Thread: host.
         /// </summary>
