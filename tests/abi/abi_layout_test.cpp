@@ -131,13 +131,15 @@
   X(frusta_world_def, max_substeps, 68, 4)            \
   X(frusta_world_def, max_contacts_per_hand, 72, 4)   \
   X(frusta_world_def, command_capacity, 76, 4)        \
-  X(frusta_world_def, max_fingertip_force, 80, 8)     \
-  X(frusta_world_def, max_finger_resistance, 88, 8)   \
-  X(frusta_world_def, max_joint_torque, 96, 8)        \
-  X(frusta_world_def, max_palm_force, 104, 8)         \
-  X(frusta_world_def, max_palm_torque, 112, 8)        \
-  X(frusta_world_def, internal_value, 120, 4)         \
-  X(frusta_world_def, reserved0, 124, 4)              \
+  X(frusta_world_def, max_hands, 80, 4)               \
+  X(frusta_world_def, reserved1, 84, 4)               \
+  X(frusta_world_def, max_fingertip_force, 88, 8)     \
+  X(frusta_world_def, max_finger_resistance, 96, 8)   \
+  X(frusta_world_def, max_joint_torque, 104, 8)       \
+  X(frusta_world_def, max_palm_force, 112, 8)         \
+  X(frusta_world_def, max_palm_torque, 120, 8)        \
+  X(frusta_world_def, internal_value, 128, 4)         \
+  X(frusta_world_def, reserved0, 132, 4)              \
   X(frusta_object_def, struct_size, 0, 4)             \
   X(frusta_object_def, dynamic, 4, 4)                 \
   X(frusta_object_def, pose, 8, 56)                   \
@@ -182,11 +184,13 @@
   X(frusta_world_hand, substeps, 452, 4)              \
   X(frusta_world_hand, lagging, 456, 4)               \
   X(frusta_world_hand, infeasible, 460, 4)            \
-  X(frusta_world_hand, fingertip_force, 464, 120)     \
-  X(frusta_world_hand, finger_resistance, 584, 40)    \
-  X(frusta_world_hand, joint_torque, 624, 160)        \
-  X(frusta_world_hand, palm_force, 784, 24)           \
-  X(frusta_world_hand, palm_torque, 808, 24)          \
+  X(frusta_world_hand, ignored_objects, 464, 4)       \
+  X(frusta_world_hand, reserved0, 468, 4)             \
+  X(frusta_world_hand, fingertip_force, 472, 120)     \
+  X(frusta_world_hand, finger_resistance, 592, 40)    \
+  X(frusta_world_hand, joint_torque, 632, 160)        \
+  X(frusta_world_hand, palm_force, 792, 24)           \
+  X(frusta_world_hand, palm_torque, 816, 24)          \
   X(frusta_world_contact, object, 0, 8)               \
   X(frusta_world_contact, body, 8, 4)                 \
   X(frusta_world_contact, leaf, 12, 4)                \
@@ -205,6 +209,8 @@
   X(frusta_object_state, angular_velocity, 88, 24)    \
   X(frusta_object_state, reaction_force, 112, 24)     \
   X(frusta_object_state, reaction_torque, 136, 24) \
+  X(frusta_object_state, ignoring_hands, 160, 4) \
+  X(frusta_object_state, reserved0, 164, 4) \
   X(frusta_device_id, index1, 0, 4) \
   X(frusta_device_id, world0, 4, 2) \
   X(frusta_device_id, generation, 6, 2) \
@@ -283,19 +289,19 @@
   X(frusta_tree_hit, 40, 8)          \
   X(frusta_world_id, 8, 4)           \
   X(frusta_object_id, 8, 4)          \
-  X(frusta_world_def, 128, 8)        \
+  X(frusta_world_def, 136, 8)        \
   X(frusta_object_def, 224, 8)       \
   X(frusta_world_state, 112, 8)      \
-  X(frusta_world_hand, 832, 8)       \
+  X(frusta_world_hand, 840, 8)       \
   X(frusta_world_contact, 152, 8)    \
-  X(frusta_object_state, 160, 8) \
+  X(frusta_object_state, 168, 8) \
   X(frusta_device_id, 8, 4) \
   X(frusta_device_def, 728, 8) \
   X(frusta_device_status, 320, 8) \
   X(frusta_device_info, 268, 4)
 
-static_assert(FRUSTA_ABI_VERSION == 3,
-              "the layout table below is ABI 3: update it and the C# mirror with the ABI");
+static_assert(FRUSTA_ABI_VERSION == 4,
+              "the layout table below is ABI 4: update it and the C# mirror with the ABI");
 
 #define FRUSTA_CHECK_MEMBER(type, member, offset, size)                          \
   static_assert(offsetof(type, member) == (offset), #type "." #member " moved"); \
@@ -317,7 +323,8 @@ static_assert(sizeof(frusta_result) == 4 && sizeof(frusta_hand_side) == 4 &&
                   sizeof(frusta_constraint_form) == 4 && sizeof(frusta_device_output) == 4 &&
                   sizeof(frusta_device_state) == 4 && sizeof(frusta_watchdog_reason) == 4 &&
                   sizeof(frusta_device_kind) == 4 && sizeof(frusta_joint_layout) == 4 &&
-                  sizeof(frusta_joint_flag) == 4 && sizeof(frusta_fit_flag) == 4,
+                  sizeof(frusta_joint_flag) == 4 && sizeof(frusta_fit_flag) == 4 &&
+                  sizeof(frusta_hand_kind) == 4,
               "enums must be 32-bit");
 
 // ---------------------------------------------------------------- values
@@ -351,6 +358,7 @@ static_assert(FRUSTA_XR_JOINT_COUNT == 26 && FRUSTA_KEYPOINT_COUNT == 21);
 static_assert(FRUSTA_FEATURE_SIDE == 0 && FRUSTA_FEATURE_DISTAL == 1 &&
               FRUSTA_FEATURE_PROXIMAL == 2);
 static_assert(FRUSTA_CONSTRAINT_SQUARED == 0 && FRUSTA_CONSTRAINT_DISTANCE == 1);
+static_assert(FRUSTA_HAND_KIND_GRAPHIC == 0 && FRUSTA_HAND_KIND_HAPTIC == 1);
 static_assert(FRUSTA_FINGER_COUNT == 5 && FRUSTA_SEGMENTS_PER_FINGER == 3 &&
               FRUSTA_JOINTS_PER_FINGER == 4 && FRUSTA_HAND_SEGMENT_COUNT == 15 &&
               FRUSTA_HAND_JOINT_COUNT == 20 && FRUSTA_PALM_DOF == 6 &&
@@ -433,6 +441,7 @@ FRUSTA_CHECK_SIGNATURE(frusta_destroy_world, frusta_result (*)(frusta_world_id))
 FRUSTA_CHECK_SIGNATURE(frusta_world_is_valid, int32_t (*)(frusta_world_id))
 FRUSTA_CHECK_SIGNATURE(frusta_create_world_hand,
                        frusta_result (*)(frusta_world_id, const frusta_hand_def*, frusta_hand_id*))
+FRUSTA_CHECK_SIGNATURE(frusta_destroy_world_hand, frusta_result (*)(frusta_hand_id))
 FRUSTA_CHECK_SIGNATURE(frusta_world_set_haptic,
                        frusta_result (*)(frusta_world_id, frusta_hand_id, const frusta_pose*,
                                          const double*, int32_t))
@@ -456,6 +465,15 @@ FRUSTA_CHECK_SIGNATURE(frusta_world_get_contacts,
                                          int32_t, int32_t*))
 FRUSTA_CHECK_SIGNATURE(frusta_world_get_object,
                        frusta_result (*)(frusta_world_id, frusta_object_id, frusta_object_state*))
+FRUSTA_CHECK_SIGNATURE(frusta_world_get_object_ignored_by,
+                       frusta_result (*)(frusta_world_id, frusta_object_id, frusta_hand_id,
+                                         int32_t*))
+FRUSTA_CHECK_SIGNATURE(frusta_world_get_hand_segments,
+                       frusta_result (*)(frusta_world_id, frusta_hand_id, int32_t, frusta_segment*,
+                                         int32_t, int32_t*))
+FRUSTA_CHECK_SIGNATURE(frusta_world_get_hand_palm_spheres,
+                       frusta_result (*)(frusta_world_id, frusta_hand_id, int32_t, frusta_sphere*,
+                                         int32_t, int32_t*))
 FRUSTA_CHECK_SIGNATURE(frusta_default_device_def, frusta_device_def (*)())
 FRUSTA_CHECK_SIGNATURE(frusta_enumerate_devices,
                        frusta_result (*)(frusta_device_info*, int32_t, int32_t*))
@@ -521,7 +539,7 @@ TEST(abiLayout, StructsHaveNoImplicitPaddingAndTheTableIsComplete) {
 TEST(abiLayout, DefaultDefCarriesItsSize) {
   EXPECT_EQ(frusta_default_hand_def().struct_size, 896);
   EXPECT_EQ(frusta_default_bake_def().struct_size, 56);
-  EXPECT_EQ(frusta_default_world_def().struct_size, 128);
+  EXPECT_EQ(frusta_default_world_def().struct_size, 136);
   EXPECT_EQ(frusta_default_object_def().struct_size, 224);
   EXPECT_EQ(frusta_default_device_def().struct_size, 728);
   EXPECT_EQ(frusta_default_hand_fit_def().struct_size, 32);

@@ -2173,6 +2173,7 @@ static const IntField kWorldInts[] = {
     {WORLD_FIELD(max_substeps), 1, 1024},
     {WORLD_FIELD(max_contacts_per_hand), 0, 65536},
     {WORLD_FIELD(command_capacity), 1, 1 << 20},
+    {WORLD_FIELD(max_hands), 1, 64},
 };
 
 #define OBJECT_FIELD(member) #member, offsetof(frusta_object_def, member)
@@ -2229,6 +2230,8 @@ static void use_world(frusta_world_id world, const frusta_world_def* def) {
     return;
   }
   rig.hands = 1;
+  /* the hand's command first: a queue of one takes one command a step */
+  if (!verify(frusta_world_step(world) == FRUSTA_OK, "step")) return;
   frusta_object_def box = box_under_tip(0, 0.0);
   if (!add_rig_object(&rig, g_box, &box) || !verify(frusta_world_step(world) == FRUSTA_OK, "step")) return;
   if (def->max_objects > 1) {
@@ -2340,7 +2343,8 @@ static void t_world_is_valid(void) {
 }
 
 /* add_hand's sweep: hands go into a world of their own, a new one every 16 hands, each
- * world stepped once with every hand given an input before it goes. */
+ * world stepped once with every hand given an input before it goes (the step adds them
+ * all). */
 static Rig g_hands_rig;
 static void flush_hands_rig(void) {
   if (!frusta_world_is_valid(g_hands_rig.world)) return;
@@ -2361,6 +2365,7 @@ static frusta_result call_add_hand(const void* def, int* untouched, void* contex
     wd.max_contacts_per_hand = 1;
     wd.max_objects = 1;
     wd.prediction_margin = 1e-5;  /* below the smallest finger radius a def may have */
+    wd.max_hands = 16;
     make_rig(&g_hands_rig, &wd, 0);
   }
   frusta_hand_id hand;
@@ -2374,10 +2379,6 @@ static frusta_result call_add_hand(const void* def, int* untouched, void* contex
   verify(hand.index1 == g_hands_rig.hands + 1 && frusta_hand_is_valid(hand) == 1,
          "hand index1 %d, want %d", hand.index1, g_hands_rig.hands + 1);
   g_hands_rig.hand[g_hands_rig.hands++] = hand;
-  frusta_result rr;
-  const frusta_world_state s = read_state(g_hands_rig.world, &rr);
-  verify(rr == FRUSTA_OK && s.hand_count == g_hands_rig.hands, "hand_count %d, want %d", s.hand_count,
-         g_hands_rig.hands);
   return r;
 }
 
@@ -2398,9 +2399,20 @@ static void t_world_add_hand(void) {
   fill(&hand, sizeof hand);
   what("frusta_create_world_hand(world, NULL, &hand)");
   refused(frusta_create_world_hand(g_a.world, NULL, &hand), FRUSTA_ERROR_NULL_POINTER, "def");
-  what("frusta_create_world_hand after the first step");
-  refused(frusta_create_world_hand(g_a.world, &def, &hand), FRUSTA_ERROR_WRONG_STATE, "step");
-  verify(is_sentinel(&hand, sizeof hand), "out_hand written");
+  /* after the first step, as before it: present from the next step on, and gone again */
+  what("frusta_create_world_hand after the first step, then frusta_destroy_world_hand");
+  if (accepted(frusta_create_world_hand(g_a.world, &def, &hand))) {
+    frusta_world_hand h;
+    refused(get_hand(g_a.world, hand, &h), FRUSTA_ERROR_STALE_ID, "latched step");
+    accepted(frusta_world_step(g_a.world));
+    frusta_result r;
+    verify(read_state(g_a.world, &r).hand_count == 3 && get_hand(g_a.world, hand, &h) == FRUSTA_OK &&
+               h.solved == 0,
+           "the hand added is not in the next step");
+    accepted(frusta_destroy_world_hand(hand));
+    accepted(frusta_world_step(g_a.world));
+    check_world(&g_a);
+  }
   memset(&g_hands_rig, 0, sizeof g_hands_rig);
   what("frusta_create_world_hand(world, &def, NULL)");
   int untouched = 1;
@@ -2421,8 +2433,9 @@ static void t_world_add_hand(void) {
     refused(frusta_create_world_hand(rig.world, &def, &hand), FRUSTA_ERROR_OUT_OF_RANGE,
             "prediction_margin");
     accepted(frusta_world_start(rig.world));
-    what("frusta_create_world_hand while the world runs");
-    refused(frusta_create_world_hand(rig.world, &def, &hand), FRUSTA_ERROR_WRONG_STATE, "");
+    what("frusta_create_world_hand while the world runs: its settings are checked as ever");
+    refused(frusta_create_world_hand(rig.world, &def, &hand), FRUSTA_ERROR_OUT_OF_RANGE,
+            "prediction_margin");
     accepted(frusta_world_stop(rig.world));
     destroy_rig(&rig);
   }
@@ -2627,6 +2640,11 @@ static void t_world_add_object(void) {
   Rig rig;
   if (make_rig(&rig, &wd, 1)) {
     what("frusta_create_object with the command queue full");
+    /* a hand's and an object's commands share the queue */
+    fill(&object, sizeof object);
+    refused(frusta_create_object(rig.world, g_box, &def, &object), FRUSTA_ERROR_CAPACITY, "queue");
+    verify(is_sentinel(&object, sizeof object), "out_object written");
+    accepted(frusta_world_step(rig.world));
     accepted(frusta_create_object(rig.world, g_box, &def, &object));
     fill(&object, sizeof object);
     refused(frusta_create_object(rig.world, g_box, &def, &object), FRUSTA_ERROR_CAPACITY, "queue");
@@ -2881,6 +2899,15 @@ static void unlatched(const char* label, int which) {
     refused(frusta_world_get_contacts(rig.world, rig.hand[0], NULL, 0, &count),
             FRUSTA_ERROR_WRONG_STATE, "frusta_world_read");
   if (which == 2) refused(get_object(rig.world, rig.object[0], &o), FRUSTA_ERROR_WRONG_STATE, "frusta_world_read");
+  if (which == 3)
+    refused(frusta_world_get_object_ignored_by(rig.world, rig.object[0], rig.hand[0], &count),
+            FRUSTA_ERROR_WRONG_STATE, "frusta_world_read");
+  if (which == 4)
+    refused(frusta_world_get_hand_segments(rig.world, rig.hand[0], 0, NULL, 0, &count),
+            FRUSTA_ERROR_WRONG_STATE, "frusta_world_read");
+  if (which == 5)
+    refused(frusta_world_get_hand_palm_spheres(rig.world, rig.hand[0], 1, NULL, 0, &count),
+            FRUSTA_ERROR_WRONG_STATE, "frusta_world_read");
   verify(is_sentinel(&count, sizeof count), "out_count written");
   destroy_rig(&rig);
 }
@@ -2991,6 +3018,219 @@ static void t_world_get_object(void) {
   refused(frusta_world_get_object(g_a.world, g_far, NULL), FRUSTA_ERROR_NULL_POINTER, "out");
   sweep_out_size("frusta_world_get_object", "frusta_object_state", sizeof(frusta_object_state), get_object_out);
   unlatched("frusta_world_get_object", 2);
+  frusta_destroy_object(g_far);
+  frusta_world_step(g_a.world);
+}
+
+/* frusta_destroy_world_hand: the id alone names the world. Every bad id is refused and
+ * g_a keeps its hands; a hand of another live world is that world's, and goes. Then a
+ * hand destroyed for good, a full world, and a hand a glove drives. */
+static int a_hands_kept(void) {
+  return frusta_hand_is_valid(g_a.hand[0]) == 1 && frusta_hand_is_valid(g_a.hand[1]) == 1 &&
+         frusta_world_step(g_a.world) == FRUSTA_OK && check_world(&g_a);
+}
+
+static frusta_result call_destroy_world_hand(RawId id, int* untouched) {
+  const frusta_result r = frusta_destroy_world_hand(hand_of_raw(id));
+  *untouched = a_hands_kept();
+  return r;
+}
+
+static void t_destroy_world_hand(void) {
+  sweep_ids("frusta_destroy_world_hand", "hand", TO_RAW(g_a.hand[0]), TO_RAW(g_dead_world_hand), 0,
+            call_destroy_world_hand);
+  what("frusta_destroy_world_hand with a standalone hand");
+  int untouched = 1;
+  refused(call_destroy_world_hand(TO_RAW(g_hand), &untouched), FRUSTA_ERROR_STALE_ID, "standalone");
+  verify(untouched && frusta_hand_is_valid(g_hand) == 1, "a refused call changed something");
+
+  /* destroyed: stale at once, shown until a step applied it, then gone */
+  Rig rig;
+  frusta_world_def wd = frusta_default_world_def();
+  wd.max_hands = 1;
+  if (!make_press_rig(&rig, &wd, 1, NULL)) return;
+  press(&rig, 4, 0.002, 0.2, 4);
+  const frusta_hand_id hand = rig.hand[0];
+  frusta_hand_id again;
+  const frusta_hand_def hd = frusta_default_hand_def();
+  what("frusta_destroy_world_hand, then every call on the hand");
+  accepted(frusta_destroy_world_hand(hand));
+  refused(frusta_destroy_world_hand(hand), FRUSTA_ERROR_STALE_ID, "hand");
+  refused(frusta_world_set_haptic(rig.world, hand, &kIdentity, rig.angles[0], FRUSTA_HAND_JOINT_COUNT),
+          FRUSTA_ERROR_STALE_ID, "hand");
+  ++g_calls;
+  verify(frusta_hand_is_valid(hand) == 0, "still valid");
+  frusta_world_hand h;
+  accepted(get_hand(rig.world, hand, &h));  /* the latched step shows it still */
+  fill(&again, sizeof again);
+  refused(frusta_create_world_hand(rig.world, &hd, &again), FRUSTA_ERROR_CAPACITY, "max_hands");
+  accepted(frusta_world_step(rig.world));
+  refused(frusta_create_world_hand(rig.world, &hd, &again), FRUSTA_ERROR_CAPACITY, "removed");
+  verify(is_sentinel(&again, sizeof again), "out_hand written");
+  frusta_result r;
+  verify(read_state(rig.world, &r).hand_count == 0, "the hand is still in the step");
+  refused(get_hand(rig.world, hand, &h), FRUSTA_ERROR_STALE_ID, "hand");
+  if (accepted(frusta_create_world_hand(rig.world, &hd, &again))) {
+    ++g_calls;
+    verify(again.index1 == hand.index1 && again.generation != hand.generation,
+           "the new hand is not in the slot of the one destroyed");
+    refused(frusta_destroy_world_hand(hand), FRUSTA_ERROR_STALE_ID, "hand");
+    ++g_calls;
+    verify(frusta_hand_is_valid(again) == 1, "the old id destroyed the new hand");
+    /* a glove holds it until it is closed */
+    frusta_device_def dd = frusta_default_device_def();
+    dd.hand = again;
+    frusta_device_id glove;
+    if (accepted(frusta_create_device(rig.world, "replay:" FRUSTA_RECORDING_PATH "?speed=1&loop=1", &dd,
+                                      &glove))) {
+      refused(frusta_destroy_world_hand(again), FRUSTA_ERROR_WRONG_STATE, "glove");
+      accepted(frusta_destroy_device(glove));
+      accepted(frusta_destroy_world_hand(again));
+    }
+  }
+  destroy_rig(&rig);
+}
+
+/* A latched hand's geometry calls, `which` 0 (graphic) or 1 (haptic). */
+static int32_t g_which;
+static frusta_result hand_segments_call(void* out, int32_t capacity, int32_t* count) {
+  return frusta_world_get_hand_segments(g_a.world, g_a.hand[0], g_which, (frusta_segment*)out, capacity,
+                                        count);
+}
+static frusta_result hand_palm_spheres_call(void* out, int32_t capacity, int32_t* count) {
+  return frusta_world_get_hand_palm_spheres(g_a.world, g_a.hand[0], g_which, (frusta_sphere*)out,
+                                            capacity, count);
+}
+
+typedef frusta_result (*HandGeometryCall)(frusta_world_id world, frusta_hand_id hand, int32_t which,
+                                          void* out, int32_t capacity, int32_t* count);
+static frusta_result segments_of(frusta_world_id world, frusta_hand_id hand, int32_t which, void* out,
+                                 int32_t capacity, int32_t* count) {
+  return frusta_world_get_hand_segments(world, hand, which, (frusta_segment*)out, capacity, count);
+}
+static frusta_result palm_spheres_of(frusta_world_id world, frusta_hand_id hand, int32_t which,
+                                     void* out, int32_t capacity, int32_t* count) {
+  return frusta_world_get_hand_palm_spheres(world, hand, which, (frusta_sphere*)out, capacity, count);
+}
+
+static HandGeometryCall g_geometry;
+static frusta_result call_geometry_world(RawId id, int* untouched) {
+  static frusta_sphere out[4];  /* room for 2 segments */
+  int32_t count;
+  fill(out, sizeof out);
+  fill(&count, sizeof count);
+  const frusta_result r = g_geometry(world_of_raw(id), g_a.hand[0], 0, out, 2, &count);
+  *untouched = is_sentinel(out, sizeof out) && is_sentinel(&count, sizeof count);
+  return r;
+}
+static frusta_result call_geometry_hand(RawId id, int* untouched) {
+  static frusta_sphere out[4];
+  int32_t count;
+  fill(out, sizeof out);
+  fill(&count, sizeof count);
+  const frusta_result r = g_geometry(g_a.world, hand_of_raw(id), 1, out, 2, &count);
+  *untouched = is_sentinel(out, sizeof out) && is_sentinel(&count, sizeof count);
+  return r;
+}
+
+/* Every bad world, hand and `which`, the output-array rule for both hands, the calls
+ * before a read and on a hand with no input yet; what is copied is finite. */
+static void sweep_hand_geometry(const char* label, HandGeometryCall call, ArrayCall array,
+                                size_t size, int32_t want_count, int unlatched_case) {
+  g_geometry = call;
+  sweep_ids(label, "world", TO_RAW(g_a.world), TO_RAW(g_dead_world), 1, call_geometry_world);
+  press(&g_a, 4, 0.004, 0.3, 4);
+  sweep_world_hand_ids(label, g_a.hand[0], call_geometry_hand);
+  int32_t count;
+  static frusta_sphere out[4096 + 2];
+  for (int i = 0; i < HOSTILE_INT_COUNT + 2; ++i) {
+    const int32_t which = i < HOSTILE_INT_COUNT ? kHostileInts[i] : i == HOSTILE_INT_COUNT ? 2 : -2;
+    if (which == 0) continue;
+    fill(out, sizeof out[0] * 4);
+    fill(&count, sizeof count);
+    what("%s: which %d", label, which);
+    refused(call(g_a.world, g_a.hand[0], which, out, 2, &count), FRUSTA_ERROR_OUT_OF_RANGE, "which");
+    verify(is_sentinel(out, sizeof out[0] * 4) && is_sentinel(&count, sizeof count), "out written");
+  }
+  for (g_which = 0; g_which < 2; ++g_which)
+    sweep_output_array(label, array, out, size, want_count + 2, want_count, "out");
+  what("%s: what is copied", label);
+  for (int32_t which = 0; which < 2; ++which) {
+    accepted(call(g_a.world, g_a.hand[1], which, out, want_count, &count));
+    verify(count == want_count && all_finite((const double*)out, (size_t)count * size / sizeof(double)),
+           "%d elements, or not finite", count);
+  }
+  unlatched(label, unlatched_case);
+  /* a hand with no input has no pose */
+  Rig rig;
+  const frusta_world_def wd = frusta_default_world_def();
+  if (make_rig(&rig, &wd, 1)) {
+    frusta_result r;
+    frusta_world_step(rig.world);
+    read_state(rig.world, &r);
+    fill(&count, sizeof count);
+    what("%s on a hand with no input", label);
+    refused(call(rig.world, rig.hand[0], 0, NULL, 0, &count), FRUSTA_ERROR_WRONG_STATE, "solved");
+    verify(is_sentinel(&count, sizeof count), "out_count written");
+    destroy_rig(&rig);
+  }
+}
+
+static void t_world_get_hand_segments(void) {
+  sweep_hand_geometry("frusta_world_get_hand_segments", segments_of, hand_segments_call,
+                      sizeof(frusta_segment), FRUSTA_HAND_SEGMENT_COUNT, 4);
+}
+
+static void t_world_get_hand_palm_spheres(void) {
+  int32_t spheres = 0;
+  frusta_hand_get_palm_spheres(g_hand, NULL, 0, &spheres);
+  sweep_hand_geometry("frusta_world_get_hand_palm_spheres", palm_spheres_of, hand_palm_spheres_call,
+                      sizeof(frusta_sphere), spheres, 5);
+}
+
+/* frusta_world_get_object_ignored_by: bad worlds, objects and hands, a null out, the
+ * calls before a read; g_a's boxes are under its hands, not put inside them: 0. */
+static frusta_result call_ignored_world(RawId id, int* untouched) {
+  int32_t out;
+  fill(&out, sizeof out);
+  const frusta_result r = frusta_world_get_object_ignored_by(world_of_raw(id), g_far, g_a.hand[0], &out);
+  *untouched = is_sentinel(&out, sizeof out);
+  return r;
+}
+static frusta_result call_ignored_object(RawId id, int* untouched) {
+  int32_t out;
+  fill(&out, sizeof out);
+  const frusta_result r =
+      frusta_world_get_object_ignored_by(g_a.world, object_of_raw(id), g_a.hand[0], &out);
+  *untouched = is_sentinel(&out, sizeof out);
+  return r;
+}
+static frusta_result call_ignored_hand(RawId id, int* untouched) {
+  int32_t out;
+  fill(&out, sizeof out);
+  const frusta_result r = frusta_world_get_object_ignored_by(g_a.world, g_far, hand_of_raw(id), &out);
+  *untouched = is_sentinel(&out, sizeof out);
+  return r;
+}
+
+static void t_world_get_object_ignored_by(void) {
+  g_far = add_far_object();
+  check_world(&g_a);
+  sweep_ids("frusta_world_get_object_ignored_by", "world", TO_RAW(g_a.world), TO_RAW(g_dead_world), 1,
+            call_ignored_world);
+  sweep_object_ids("frusta_world_get_object_ignored_by", call_ignored_object);
+  sweep_world_hand_ids("frusta_world_get_object_ignored_by", g_a.hand[0], call_ignored_hand);
+  what("frusta_world_get_object_ignored_by(world, object, hand, NULL)");
+  refused(frusta_world_get_object_ignored_by(g_a.world, g_far, g_a.hand[0], NULL),
+          FRUSTA_ERROR_NULL_POINTER, "out_ignored");
+  what("frusta_world_get_object_ignored_by: every object and hand of g_a");
+  for (int o = 0; o < g_a.objects; ++o)
+    for (int h = 0; h < g_a.hands; ++h) {
+      int32_t ignored = -1;
+      accepted(frusta_world_get_object_ignored_by(g_a.world, g_a.object[o], g_a.hand[h], &ignored));
+      verify(ignored == 0, "object %d ignored by hand %d (%d)", o, h, ignored);
+    }
+  unlatched("frusta_world_get_object_ignored_by", 3);
   frusta_destroy_object(g_far);
   frusta_world_step(g_a.world);
 }
@@ -3658,7 +3898,9 @@ static void s_running(void) {
   wd.spin_us = 0.0;
   Rig rig;
   what("a world running at 100 kHz under hostile calls");
-  if (!make_press_rig(&rig, &wd, 2, NULL) || !accepted(frusta_world_start(rig.world))) {
+  /* a step first: the hands are in from it on */
+  if (!make_press_rig(&rig, &wd, 2, NULL) || !accepted(frusta_world_step(rig.world)) ||
+      !accepted(frusta_world_start(rig.world))) {
     destroy_rig(&rig);
     return;
   }
@@ -4283,6 +4525,7 @@ static const Entry kFunctions[] = {
     {"frusta_destroy_world", t_destroy_world},
     {"frusta_world_is_valid", t_world_is_valid},
     {"frusta_create_world_hand", t_world_add_hand},
+    {"frusta_destroy_world_hand", t_destroy_world_hand},
     {"frusta_world_set_haptic", t_world_set_haptic},
     {"frusta_create_object", t_world_add_object},
     {"frusta_destroy_object", t_destroy_object},
@@ -4295,6 +4538,9 @@ static const Entry kFunctions[] = {
     {"frusta_world_get_hand", t_world_get_hand},
     {"frusta_world_get_contacts", t_world_get_contacts},
     {"frusta_world_get_object", t_world_get_object},
+    {"frusta_world_get_object_ignored_by", t_world_get_object_ignored_by},
+    {"frusta_world_get_hand_segments", t_world_get_hand_segments},
+    {"frusta_world_get_hand_palm_spheres", t_world_get_hand_palm_spheres},
     {"frusta_default_device_def", t_default_device_def},
     {"frusta_enumerate_devices", t_enumerate_devices},
     {"frusta_create_device", t_world_open_device},

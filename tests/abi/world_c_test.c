@@ -32,15 +32,15 @@
  * offset table lives in abi_layout_test.cpp, these are its sizes. */
 _Static_assert(sizeof(frusta_world_id) == 8, "frusta_world_id layout changed");
 _Static_assert(sizeof(frusta_object_id) == 8, "frusta_object_id layout changed");
-_Static_assert(sizeof(frusta_world_def) == 128, "frusta_world_def layout changed");
-_Static_assert(offsetof(frusta_world_def, internal_value) == 120, "frusta_world_def layout changed");
+_Static_assert(sizeof(frusta_world_def) == 136, "frusta_world_def layout changed");
+_Static_assert(offsetof(frusta_world_def, internal_value) == 128, "frusta_world_def layout changed");
 _Static_assert(sizeof(frusta_object_def) == 224, "frusta_object_def layout changed");
 _Static_assert(offsetof(frusta_object_def, internal_value) == 216,
                "frusta_object_def layout changed");
 _Static_assert(sizeof(frusta_world_state) == 112, "frusta_world_state layout changed");
-_Static_assert(sizeof(frusta_world_hand) == 832, "frusta_world_hand layout changed");
+_Static_assert(sizeof(frusta_world_hand) == 840, "frusta_world_hand layout changed");
 _Static_assert(sizeof(frusta_world_contact) == 152, "frusta_world_contact layout changed");
-_Static_assert(sizeof(frusta_object_state) == 160, "frusta_object_state layout changed");
+_Static_assert(sizeof(frusta_object_state) == 168, "frusta_object_state layout changed");
 
 
 static double dot3(const double a[3], const double b[3]) {
@@ -206,8 +206,9 @@ static void test_defaults(void) {
   check(w.prediction_margin == 0.002 && w.node_radius == 0.0 && w.max_iterations == 2 &&
             w.max_substeps == 64,
         "world def: prediction_margin 0.002, node_radius 0, max_iterations 2, max_substeps 64");
-  check(w.max_contacts_per_hand == 256 && w.command_capacity == 256,
-        "world def: max_contacts_per_hand 256, command_capacity 256");
+  check(w.max_contacts_per_hand == 256 && w.command_capacity == 256 && w.max_hands == 8 &&
+            w.reserved1 == 0,
+        "world def: max_contacts_per_hand 256, command_capacity 256, max_hands 8");
   check(w.max_fingertip_force == 10.0 && w.max_finger_resistance == 10.0 &&
             w.max_joint_torque == 0.5 && w.max_palm_force == 20.0 && w.max_palm_torque == 1.0,
         "world def: device limits 10 N, 10 N, 0.5 N m, 20 N, 1 N m");
@@ -353,6 +354,8 @@ static void test_create_errors(void) {
       {WORLD_FIELD(max_contacts_per_hand), -1}, {WORLD_FIELD(max_contacts_per_hand), 65537},
       {WORLD_FIELD(command_capacity), 0},     {WORLD_FIELD(command_capacity), -5},
       {WORLD_FIELD(command_capacity), (1 << 20) + 1},
+      {WORLD_FIELD(max_hands), 0},            {WORLD_FIELD(max_hands), -1},
+      {WORLD_FIELD(max_hands), 65},
   };
   for (size_t i = 0; i < sizeof ints / sizeof ints[0]; ++i) {
     const int_case* c = &ints[i];
@@ -414,10 +417,16 @@ static void expect_world_id_refused(frusta_world_id id, frusta_result want, cons
   int32_t count;
   frusta_object_id out_object;
   frusta_world_contact contacts[2];
+  frusta_segment segments[2];
+  frusta_sphere spheres[2];
+  int32_t ignored;
   fill(&out_hand, sizeof out_hand);
   fill(&count, sizeof count);
   fill(&out_object, sizeof out_object);
   fill(contacts, sizeof contacts);
+  fill(segments, sizeof segments);
+  fill(spheres, sizeof spheres);
+  fill(&ignored, sizeof ignored);
   frusta_world_state state = sentinel_state();
   frusta_world_hand hand = sentinel_hand();
   frusta_object_state object_state = sentinel_object();
@@ -442,7 +451,16 @@ static void expect_world_id_refused(frusta_world_id id, frusta_result want, cons
   REFUSED(frusta_world_get_hand(id, a_hand, &hand), "world_get_hand");
   REFUSED(frusta_world_get_contacts(id, a_hand, contacts, 2, &count), "world_get_contacts");
   REFUSED(frusta_world_get_object(id, object, &object_state), "world_get_object");
+  REFUSED(frusta_world_get_object_ignored_by(id, object, a_hand, &ignored),
+          "world_get_object_ignored_by");
+  REFUSED(frusta_world_get_hand_segments(id, a_hand, FRUSTA_HAND_KIND_GRAPHIC, segments, 2, &count),
+          "world_get_hand_segments");
+  REFUSED(frusta_world_get_hand_palm_spheres(id, a_hand, FRUSTA_HAND_KIND_HAPTIC, spheres, 2, &count),
+          "world_get_hand_palm_spheres");
 #undef REFUSED
+  check(is_sentinel(segments, sizeof segments) && is_sentinel(spheres, sizeof spheres) &&
+            is_sentinel(&ignored, sizeof ignored),
+        "the geometry and ignored_by calls with %s write nothing", label);
   check(is_sentinel(&out_hand, sizeof out_hand) && is_sentinel(&out_object, sizeof out_object) &&
             is_sentinel(&count, sizeof count) && is_sentinel(contacts, sizeof contacts) &&
             memcmp(&state, &state_before, sizeof state) == 0 &&
@@ -510,9 +528,10 @@ static void test_world_ids(void) {
 
 /* ------------------------------------------------------------------ hands */
 
+/* Hands present after one more step (hands come at a step); -1 if it failed. */
 static int32_t hand_count(frusta_world_id world) {
   frusta_world_state state;
-  return step_and_read(world, 0, &state) ? state.hand_count : -1;
+  return step_and_read(world, 1, &state) ? state.hand_count : -1;
 }
 
 static void test_add_hand(void) {
@@ -578,23 +597,19 @@ static void test_add_hand(void) {
           out.generation);
   check(hand_count(world) == 2, "hand_count 2 (%d)", hand_count(world));
 
-  /* a read latched before add_hand is gone: the snapshots were rebuilt */
+  /* after steps, hands come as before, each at the next step: the latched step does
+     not have it */
+  def = good;
+  expect_ok("create_world_hand after steps", frusta_create_world_hand(world, &def, &out));
+  check(out.index1 == 3 && frusta_hand_is_valid(out) == 1, "the third hand {%d, %u, %u}",
+        out.index1, out.world0, out.generation);
   frusta_world_hand h = sentinel_hand();
   const frusta_world_hand h_before = h;
-  def.side = FRUSTA_HAND_RIGHT;
-  expect_ok("add a third hand after a read", frusta_create_world_hand(world, &def, &out));
-  expect_error("get_hand right after create_world_hand", frusta_world_get_hand(world, first, &h),
-               FRUSTA_ERROR_WRONG_STATE, "frusta_world_read", NULL);
+  expect_error("get_hand before a step added it", frusta_world_get_hand(world, out, &h),
+               FRUSTA_ERROR_STALE_ID, "latched step", NULL);
   check(memcmp(&h, &h_before, sizeof h) == 0, "the refused get_hand leaves out unchanged");
-
-  /* after the first step: too late */
-  expect_ok("step", frusta_world_step(world));
-  fill(&out, sizeof out);
-  def = good;
-  expect_error("add_hand after the first step", frusta_create_world_hand(world, &def, &out),
-               FRUSTA_ERROR_WRONG_STATE, "first step", NULL);
-  check(is_sentinel(&out, sizeof out), "add_hand after the first step leaves out_hand unchanged");
-  check(hand_count(world) == 3, "still 3 hands (%d)", hand_count(world));
+  check(hand_count(world) == 3, "3 hands (%d)", hand_count(world));
+  expect_ok("and now get_hand", frusta_world_get_hand(world, out, &h));
   frusta_destroy_world(world);
 
   /* the world's prediction margin must stay below the hand's smallest radius */
@@ -670,8 +685,12 @@ static void test_hand_ids(void) {
                             "another world's hand");
   frusta_hand_id forged = hand;
   forged.generation = (uint16_t)(hand.generation + 1);
-  expect_world_hand_refused(world, forged, FRUSTA_ERROR_STALE_ID, "another world",
+  expect_world_hand_refused(world, forged, FRUSTA_ERROR_STALE_ID, "no hand of this world",
                             "the hand with the next generation");
+  forged = hand;
+  forged.world0 = (uint16_t)(hand.world0 + 0x100);
+  expect_world_hand_refused(world, forged, FRUSTA_ERROR_STALE_ID, "another world",
+                            "the hand with the next world generation");
   const int32_t indices[] = {2, -1, INT32_MIN};
   for (int i = 0; i < 3; ++i) {
     char label[64];
@@ -758,7 +777,7 @@ static void test_set_haptic(void) {
     snprintf(what, sizeof what, "set_haptic(hand index1 %d of 1)", hands[i]);
     expect_error(what,
                  frusta_world_set_haptic(world, forged, &start, angles, FRUSTA_HAND_JOINT_COUNT),
-                 FRUSTA_ERROR_STALE_ID, "hand id", NULL);
+                 FRUSTA_ERROR_STALE_ID, "no hand of this world", NULL);
   }
 
   /* the palm pose: positions within 1e6 m, finite quaternion of norm 0.5..2 */
@@ -1407,6 +1426,36 @@ static void test_press(void) {
     if (f != FRUSTA_FINGER_INDEX) others_free &= h.finger_resistance[f] == 0.0;
   check(others_free, "no other finger feels anything");
 
+  /* the graphic hand's geometry stays out of the box, by the exact distance; the
+     haptic hand's sinks in as deep as it was lowered */
+  static frusta_sphere leaves[4096];
+  int32_t leaf_count = 0, segment_count = 0;
+  frusta_segment graphic[FRUSTA_HAND_SEGMENT_COUNT], haptic[FRUSTA_HAND_SEGMENT_COUNT];
+  frusta_sphere_tree_get_leaves(tree, leaves, 4096, &leaf_count);
+  expect_ok("get_hand_segments(graphic)",
+            frusta_world_get_hand_segments(world, hand, FRUSTA_HAND_KIND_GRAPHIC, graphic,
+                                           FRUSTA_HAND_SEGMENT_COUNT, &segment_count));
+  expect_ok("get_hand_segments(haptic)",
+            frusta_world_get_hand_segments(world, hand, FRUSTA_HAND_KIND_HAPTIC, haptic,
+                                           FRUSTA_HAND_SEGMENT_COUNT, &segment_count));
+  double graphic_gap = INFINITY, haptic_gap = INFINITY;
+  for (int32_t l = 0; l < leaf_count && l < 4096; ++l) {
+    frusta_sphere sphere = leaves[l];
+    for (int k = 0; k < 3; ++k) sphere.center[k] += box_def.pose.position[k];
+    for (int i = 0; i < FRUSTA_HAND_SEGMENT_COUNT; ++i) {
+      frusta_contact_query q;
+      q.struct_size = (int32_t)sizeof q;
+      if (frusta_query_contact(&graphic[i], &sphere, &q) == FRUSTA_OK)
+        graphic_gap = fmin(graphic_gap, q.distance);
+      if (frusta_query_contact(&haptic[i], &sphere, &q) == FRUSTA_OK)
+        haptic_gap = fmin(haptic_gap, q.distance);
+    }
+  }
+  check(leaf_count > 0 && leaf_count <= 4096 && graphic_gap >= -1e-6 && haptic_gap < -0.001,
+        "of %d leaves, the graphic segments' nearest is %g m away (>= -1e-6), the haptic ones "
+        "sink %g m in",
+        leaf_count, graphic_gap, -haptic_gap);
+
   /* contacts: the size query, then the copy */
   int32_t count = -1;
   expect_ok("get_contacts(null, 0) size query",
@@ -1587,6 +1636,331 @@ static void test_dynamics(void) {
   frusta_destroy_world(world);
 }
 
+/* ------------------------------------------------------------------ hands come and go */
+
+static const frusta_hand_id kNullHand = {0, 0, 0};
+
+/* frusta_destroy_world_hand's error paths, and a destroyed hand's id: stale at once for
+ * the calls that change the world, shown by reads until a step applied the removal,
+ * its slot taken again once a read latched that step. */
+static void test_destroy_world_hand(void) {
+  frusta_world_def world_def = frusta_default_world_def();
+  world_def.max_hands = 2;
+  const frusta_hand_def hand_def = frusta_default_hand_def();
+  frusta_world_id world, other;
+  frusta_hand_id a = {0}, b = {0}, c, standalone = {0}, other_hand = {0};
+  frusta_world_state state;
+  frusta_world_hand h;
+  if (!make_world(&world_def, &world, "two hand slots")) return;
+  if (!add_default_hand(world, &a) || !add_default_hand(world, &b)) return;
+  fill(&c, sizeof c);
+  expect_error("create_world_hand in a full world", frusta_create_world_hand(world, &hand_def, &c),
+               FRUSTA_ERROR_CAPACITY, "max_hands", "2");
+  check(is_sentinel(&c, sizeof c), "a full world's refusal leaves out_hand unchanged");
+
+  expect_error("destroy_world_hand(null)", frusta_destroy_world_hand(kNullHand),
+               FRUSTA_ERROR_NULL_ID, "null", NULL);
+  expect_ok("a standalone hand", frusta_create_hand(&hand_def, &standalone));
+  expect_error("destroy_world_hand(a standalone hand)", frusta_destroy_world_hand(standalone),
+               FRUSTA_ERROR_STALE_ID, "standalone", NULL);
+  check(frusta_hand_is_valid(standalone) == 1, "the standalone hand lives on");
+  frusta_destroy_hand(standalone);
+  frusta_hand_id forged = a;
+  forged.generation = (uint16_t)(a.generation + 1);
+  expect_error("destroy_world_hand(the next generation)", frusta_destroy_world_hand(forged),
+               FRUSTA_ERROR_STALE_ID, "no hand of this world", NULL);
+  const int32_t indices[] = {3, 1000, -1, INT32_MIN};
+  for (int i = 0; i < 4; ++i) {
+    char what[64];
+    forged = a;
+    forged.index1 = indices[i];
+    snprintf(what, sizeof what, "destroy_world_hand(index1 %d)", indices[i]);
+    expect_error(what, frusta_destroy_world_hand(forged), FRUSTA_ERROR_STALE_ID, "no hand", NULL);
+  }
+  check(frusta_hand_is_valid(a) == 1 && frusta_hand_is_valid(b) == 1, "both hands live on");
+
+  /* a destroyed world's hand */
+  if (make_world(&world_def, &other, "another") && add_default_hand(other, &other_hand)) {
+    expect_ok("destroy the other world", frusta_destroy_world(other));
+    expect_error("destroy_world_hand(a destroyed world's hand)",
+                 frusta_destroy_world_hand(other_hand), FRUSTA_ERROR_STALE_ID, "destroyed", NULL);
+  }
+
+  /* destroyed: stale at once for every call that changes the world */
+  frusta_pose palm;
+  double angles[FRUSTA_HAND_JOINT_COUNT];
+  open_hand(0.0, &palm, angles);
+  expect_ok("set_haptic(a)", frusta_world_set_haptic(world, a, &palm, angles, FRUSTA_HAND_JOINT_COUNT));
+  step_and_read(world, 1, &state);
+  if (!expect_ok("destroy_world_hand(a)", frusta_destroy_world_hand(a))) return;
+  check(frusta_hand_is_valid(a) == 0, "a's id is stale at once");
+  expect_error("destroy_world_hand(a) twice", frusta_destroy_world_hand(a), FRUSTA_ERROR_STALE_ID,
+               "no hand of this world", NULL);
+  expect_error("set_haptic(a destroyed hand)",
+               frusta_world_set_haptic(world, a, &palm, angles, FRUSTA_HAND_JOINT_COUNT),
+               FRUSTA_ERROR_STALE_ID, "no hand of this world", NULL);
+  frusta_device_def device_def = frusta_default_device_def();
+  device_def.hand = a;
+  frusta_device_id device;
+  expect_error("create_device(def.hand a destroyed hand)",
+               frusta_create_device(world, "replay:" FRUSTA_RECORDING_PATH, &device_def, &device),
+               FRUSTA_ERROR_STALE_ID, "frusta_device_def.hand", "no hand of this world");
+  check(get_hand(world, a, &h) && h.solved == 1,
+        "the latched step still shows it (a step has not applied the removal)");
+
+  /* its slot is taken again once a read latched a step that applied the removal */
+  fill(&c, sizeof c);
+  expect_error("create_world_hand while a's removal is under way",
+               frusta_create_world_hand(world, &hand_def, &c), FRUSTA_ERROR_CAPACITY, "removed", NULL);
+  expect_ok("step", frusta_world_step(world));
+  expect_error("create_world_hand before a read latched that step",
+               frusta_create_world_hand(world, &hand_def, &c), FRUSTA_ERROR_CAPACITY, "removed", NULL);
+  check(is_sentinel(&c, sizeof c), "and out_hand is unchanged");
+  step_and_read(world, 0, &state);
+  check(state.hand_count == 1, "one hand left (%d)", state.hand_count);
+  h = sentinel_hand();
+  expect_error("get_hand(a) once the removal is latched", frusta_world_get_hand(world, a, &h),
+               FRUSTA_ERROR_STALE_ID, "latched step", NULL);
+  if (expect_ok("create_world_hand in a's slot", frusta_create_world_hand(world, &hand_def, &c)))
+    check(c.index1 == a.index1 && c.world0 == a.world0 && c.generation != a.generation &&
+              frusta_hand_is_valid(c) == 1 && frusta_hand_is_valid(a) == 0,
+          "a new generation in a's slot ({%d, %u, %u}, a was {%d, %u, %u})", c.index1, c.world0,
+          c.generation, a.index1, a.world0, a.generation);
+  expect_error("set_haptic(a) reaches not the hand in its slot",
+               frusta_world_set_haptic(world, a, &palm, angles, FRUSTA_HAND_JOINT_COUNT),
+               FRUSTA_ERROR_STALE_ID, "no hand of this world", NULL);
+  step_and_read(world, 1, &state);
+  check(get_hand(world, c, &h) && h.solved == 0, "the new hand has had no input");
+
+  /* a hand a glove drives stays until the glove is closed */
+  device_def.hand = b;
+  if (expect_ok("open a replayed glove on b",
+                frusta_create_device(world, "replay:" FRUSTA_RECORDING_PATH "?loop=1", &device_def,
+                                     &device))) {
+    expect_error("destroy_world_hand(b, a glove drives it)", frusta_destroy_world_hand(b),
+                 FRUSTA_ERROR_WRONG_STATE, "frusta_destroy_device", NULL);
+    check(frusta_hand_is_valid(b) == 1 && frusta_device_is_valid(device) == 1,
+          "the hand and the glove live on");
+    expect_ok("destroy the glove", frusta_destroy_device(device));
+    expect_ok("then destroy_world_hand(b)", frusta_destroy_world_hand(b));
+  }
+  frusta_destroy_world(world);
+  check(frusta_hand_is_valid(c) == 0, "a destroyed world's hands are not valid");
+}
+
+static int same_segments(const frusta_segment* a, const frusta_segment* b, int n, double* worst) {
+  *worst = 0.0;
+  for (int i = 0; i < n; ++i) {
+    for (int k = 0; k < 3; ++k) {
+      *worst = fmax(*worst, fabs(a[i].proximal[k] - b[i].proximal[k]));
+      *worst = fmax(*worst, fabs(a[i].distal[k] - b[i].distal[k]));
+    }
+    *worst = fmax(*worst, fabs(a[i].proximal_radius - b[i].proximal_radius));
+    *worst = fmax(*worst, fabs(a[i].distal_radius - b[i].distal_radius));
+  }
+  return *worst <= 1e-12;
+}
+
+/* A standalone hand put in a world hand's latched state: its geometry is the one the
+ * world gives for that hand (frusta_hand_get_segments and _palm_spheres). */
+static void expect_world_geometry(frusta_world_id world, frusta_hand_id hand, int32_t which,
+                                  const frusta_pose* palm, const double* angles, const char* label) {
+  const frusta_hand_def def = frusta_default_hand_def();
+  frusta_hand_id alone;
+  if (!expect_ok("a standalone hand", frusta_create_hand(&def, &alone))) return;
+  frusta_hand_set_palm_pose(alone, palm);
+  frusta_hand_set_joint_angles(alone, angles, FRUSTA_HAND_JOINT_COUNT);
+  frusta_segment got[FRUSTA_HAND_SEGMENT_COUNT], want[FRUSTA_HAND_SEGMENT_COUNT];
+  int32_t n = 0, m = 0;
+  double worst;
+  expect_ok(label, frusta_world_get_hand_segments(world, hand, which, got, FRUSTA_HAND_SEGMENT_COUNT, &n));
+  frusta_hand_get_segments(alone, want, FRUSTA_HAND_SEGMENT_COUNT, &m);
+  check(n == FRUSTA_HAND_SEGMENT_COUNT && m == n && same_segments(got, want, n, &worst),
+        "%s: %d segments, those of a standalone hand in its state (off by %g m)", label, n, worst);
+  int32_t spheres = 0, spheres_alone = 0;
+  frusta_hand_get_palm_spheres(alone, NULL, 0, &spheres_alone);
+  expect_ok(label, frusta_world_get_hand_palm_spheres(world, hand, which, NULL, 0, &spheres));
+  static frusta_sphere got_palm[4096], want_palm[4096];
+  int32_t copied = 0;
+  if (check(spheres == spheres_alone && spheres > 0 && spheres <= 4096, "%s: %d palm spheres",
+            label, spheres)) {
+    frusta_world_get_hand_palm_spheres(world, hand, which, got_palm, spheres, &copied);
+    frusta_hand_get_palm_spheres(alone, want_palm, spheres, &m);
+    worst = 0.0;
+    for (int32_t i = 0; i < spheres; ++i) {
+      for (int k = 0; k < 3; ++k)
+        worst = fmax(worst, fabs(got_palm[i].center[k] - want_palm[i].center[k]));
+      worst = fmax(worst, fabs(got_palm[i].radius - want_palm[i].radius));
+    }
+    check(copied == spheres && worst <= 1e-12, "%s: the palm spheres of the standalone hand (off by %g m)",
+          label, worst);
+  }
+  frusta_destroy_hand(alone);
+}
+
+/* Every segment and palm sphere of a world's hand, graphic or haptic, as a standalone
+ * hand in the same state has them; and the calls' error paths. */
+static void test_hand_geometry(void) {
+  const frusta_world_def world_def = frusta_default_world_def();
+  frusta_world_id world;
+  frusta_hand_id hand = {0}, late = {0};
+  frusta_world_state state;
+  frusta_world_hand h;
+  frusta_segment segments[FRUSTA_HAND_SEGMENT_COUNT + 1];
+  int32_t count;
+  if (!make_world(&world_def, &world, "hand geometry")) return;
+  if (!add_default_hand(world, &hand) || !add_default_hand(world, &late)) return;
+  /* a turned, moved palm; flexed fingers, one of them past its limit */
+  const frusta_pose palm = {{0.1, -0.2, 0.3}, {0.0, 0.0, 0.38268343236508978, 0.92387953251128674}};
+  double angles[FRUSTA_HAND_JOINT_COUNT];
+  for (int j = 0; j < FRUSTA_HAND_JOINT_COUNT; ++j) angles[j] = j % 4 == 0 ? 0.05 : 0.4;
+  angles[FRUSTA_FINGER_MIDDLE * FRUSTA_JOINTS_PER_FINGER + 2] = 3.0;
+  frusta_world_set_haptic(world, hand, &palm, angles, FRUSTA_HAND_JOINT_COUNT);
+  step_and_read(world, 3, &state);
+  if (!check(get_hand(world, hand, &h) && h.solved == 1, "the hand is solved")) return;
+  expect_world_geometry(world, hand, FRUSTA_HAND_KIND_GRAPHIC, &h.graphic_palm, h.graphic_angles,
+                        "get_hand_segments(graphic)");
+  expect_world_geometry(world, hand, FRUSTA_HAND_KIND_HAPTIC, &h.haptic_palm, h.haptic_angles,
+                        "get_hand_segments(haptic)");
+
+  /* the output-array rule */
+  fill(segments, sizeof segments);
+  fill(&count, sizeof count);
+  expect_ok("get_hand_segments(null, 0): the count",
+            frusta_world_get_hand_segments(world, hand, 0, NULL, 0, &count));
+  check(count == FRUSTA_HAND_SEGMENT_COUNT, "%d segments", count);
+  expect_ok("get_hand_segments(capacity 4)",
+            frusta_world_get_hand_segments(world, hand, 0, segments, 4, &count));
+  check(count == FRUSTA_HAND_SEGMENT_COUNT && is_sentinel(&segments[4], sizeof segments[4]),
+        "a short buffer gets 4 segments and the count of all");
+  fill(segments, sizeof segments);
+  fill(&count, sizeof count);
+  const struct {
+    const char* what;
+    int32_t which, capacity;
+    int null_out, null_count;
+    frusta_result want;
+    const char* field;
+  } refused[] = {
+      {"which 2", 2, 4, 0, 0, FRUSTA_ERROR_OUT_OF_RANGE, "which"},
+      {"which -1", -1, 4, 0, 0, FRUSTA_ERROR_OUT_OF_RANGE, "which"},
+      {"capacity -1", 0, -1, 0, 0, FRUSTA_ERROR_OUT_OF_RANGE, "capacity"},
+      {"out null, capacity 4", 0, 4, 1, 0, FRUSTA_ERROR_NULL_POINTER, "out"},
+      {"out_count null", 0, 4, 0, 1, FRUSTA_ERROR_NULL_POINTER, "out_count"},
+  };
+  for (size_t i = 0; i < sizeof refused / sizeof refused[0]; ++i) {
+    char what[96];
+    snprintf(what, sizeof what, "get_hand_segments(%s)", refused[i].what);
+    expect_error(what,
+                 frusta_world_get_hand_segments(world, hand, refused[i].which,
+                                                refused[i].null_out ? NULL : segments,
+                                                refused[i].capacity,
+                                                refused[i].null_count ? NULL : &count),
+                 refused[i].want, refused[i].field, NULL);
+    snprintf(what, sizeof what, "get_hand_palm_spheres(%s)", refused[i].what);
+    frusta_sphere spheres[2];
+    fill(spheres, sizeof spheres);
+    expect_error(what,
+                 frusta_world_get_hand_palm_spheres(world, hand, refused[i].which,
+                                                    refused[i].null_out ? NULL : spheres,
+                                                    refused[i].capacity,
+                                                    refused[i].null_count ? NULL : &count),
+                 refused[i].want, refused[i].field, NULL);
+    check(is_sentinel(spheres, sizeof spheres), "%s writes nothing", what);
+  }
+  expect_error("get_hand_segments(a hand with no input yet)",
+               frusta_world_get_hand_segments(world, late, 0, segments, 4, &count),
+               FRUSTA_ERROR_WRONG_STATE, "solved", NULL);
+  check(is_sentinel(segments, sizeof segments) && is_sentinel(&count, sizeof count),
+        "the refused calls write nothing");
+  frusta_destroy_world(world);
+}
+
+/* An object created inside a hand: the hand ignores it until they part, and the
+ * latched step says so for the object (a count), the hand (a count) and the pair. */
+static void test_ignored_objects(void) {
+  const frusta_world_def world_def = frusta_default_world_def();
+  frusta_world_id world;
+  frusta_hand_id hand = {0}, other = {0};
+  frusta_object_id box, far_box;
+  frusta_world_state state;
+  frusta_world_hand h;
+  frusta_object_state o;
+  if (!make_world(&world_def, &world, "ignored objects")) return;
+  if (!add_default_hand(world, &hand) || !add_default_hand(world, &other)) return;
+  frusta_pose palm;
+  double angles[FRUSTA_HAND_JOINT_COUNT];
+  open_hand(0.0, &palm, angles);
+  frusta_world_set_haptic(world, hand, &palm, angles, FRUSTA_HAND_JOINT_COUNT);
+  frusta_pose away = palm;
+  away.position[1] = 1.0;
+  frusta_world_set_haptic(world, other, &away, angles, FRUSTA_HAND_JOINT_COUNT);
+  step_and_read(world, 1, &state);
+  /* the box around the index fingertip, and one far from both hands */
+  frusta_object_def inside = frusta_default_object_def();
+  for (int k = 0; k < 3; ++k) inside.pose.position[k] = g_tip.distal[k];
+  frusta_object_def far = frusta_default_object_def();
+  far.pose.position[2] = 1.0;
+  expect_ok("create a box around the index fingertip",
+            frusta_create_object(world, g_box, &inside, &box));
+  expect_ok("and one far away", frusta_create_object(world, g_box, &far, &far_box));
+  step_and_read(world, 5, &state);
+  int32_t ignored = -1, other_ignored = -1, far_ignored = -1;
+  expect_ok("get_object_ignored_by(box, hand)",
+            frusta_world_get_object_ignored_by(world, box, hand, &ignored));
+  expect_ok("get_object_ignored_by(box, other)",
+            frusta_world_get_object_ignored_by(world, box, other, &other_ignored));
+  expect_ok("get_object_ignored_by(far box, hand)",
+            frusta_world_get_object_ignored_by(world, far_box, hand, &far_ignored));
+  check(ignored == 1 && other_ignored == 0 && far_ignored == 0,
+        "the hand it was put into ignores the box (%d), the other hand does not (%d), nor "
+        "does anyone the far box (%d)",
+        ignored, other_ignored, far_ignored);
+  check(get_object(world, box, &o) && o.ignoring_hands == 1 && o.reserved0 == 0,
+        "the box's state counts one hand ignoring it (%d)", o.ignoring_hands);
+  check(get_hand(world, hand, &h) && h.ignored_objects == 1 && h.contact_count == 0 &&
+            h.reserved0 == 0,
+        "the hand passes through one object (%d), touching nothing (%d contacts)",
+        h.ignored_objects, h.contact_count);
+  check(get_object(world, far_box, &o) && o.ignoring_hands == 0, "the far box: none");
+
+  /* once they part, the box is solid to the hand again */
+  frusta_pose back = palm;
+  back.position[0] = -0.2;
+  for (int t = 0; t < 20; ++t) {
+    frusta_world_set_haptic(world, hand, &back, angles, FRUSTA_HAND_JOINT_COUNT);
+    frusta_world_step(world);
+  }
+  step_and_read(world, 0, &state);
+  frusta_world_get_object_ignored_by(world, box, hand, &ignored);
+  check(ignored == 0 && get_object(world, box, &o) && o.ignoring_hands == 0 &&
+            get_hand(world, hand, &h) && h.ignored_objects == 0,
+        "parted: nobody ignores the box");
+
+  /* error paths: ids (object first, then hand), the pointer, the latched step */
+  const frusta_object_id stale_object = {box.index1, box.world0, (uint16_t)(box.generation + 1)};
+  frusta_hand_id stale_hand = hand;
+  stale_hand.generation = (uint16_t)(hand.generation + 1);
+  fill(&ignored, sizeof ignored);
+  expect_error("get_object_ignored_by(null object)",
+               frusta_world_get_object_ignored_by(world, kNullObject, hand, &ignored),
+               FRUSTA_ERROR_NULL_ID, "object", NULL);
+  expect_error("get_object_ignored_by(null hand)",
+               frusta_world_get_object_ignored_by(world, box, kNullHand, &ignored),
+               FRUSTA_ERROR_NULL_ID, "hand", NULL);
+  expect_error("get_object_ignored_by(stale object)",
+               frusta_world_get_object_ignored_by(world, stale_object, hand, &ignored),
+               FRUSTA_ERROR_STALE_ID, "object", NULL);
+  expect_error("get_object_ignored_by(stale hand)",
+               frusta_world_get_object_ignored_by(world, box, stale_hand, &ignored),
+               FRUSTA_ERROR_STALE_ID, "hand", NULL);
+  expect_error("get_object_ignored_by(out_ignored null)",
+               frusta_world_get_object_ignored_by(world, box, hand, NULL),
+               FRUSTA_ERROR_NULL_POINTER, "out_ignored", NULL);
+  check(is_sentinel(&ignored, sizeof ignored), "the refused calls write nothing");
+  frusta_destroy_world(world);
+}
+
 /* ------------------------------------------------------------------ own thread */
 
 static void test_thread(void) {
@@ -1611,11 +1985,8 @@ static void test_thread(void) {
   expect_error("step while the own thread runs", frusta_world_step(world),
                FRUSTA_ERROR_WRONG_STATE, "own thread", NULL);
   const frusta_hand_def hand_def = frusta_default_hand_def();
-  fill(&late_hand, sizeof late_hand);
-  expect_error("add_hand while the own thread runs",
-               frusta_create_world_hand(world, &hand_def, &late_hand), FRUSTA_ERROR_WRONG_STATE,
-               "first step", NULL);
-  check(is_sentinel(&late_hand, sizeof late_hand), "and leaves out_hand unchanged");
+  expect_ok("add a hand while the own thread runs",
+            frusta_create_world_hand(world, &hand_def, &late_hand));
 
   /* host calls go on while it runs: inputs, commands, reads. The thread's first steps
      may take a while on a loaded machine (the sanitizer run): wait for them, up to 5 s */
@@ -1641,7 +2012,7 @@ static void test_thread(void) {
         "the step count grew while it ran (%llu at the first read that saw a step, %llu at "
         "the stop)",
         (unsigned long long)first, (unsigned long long)state.step);
-  check(state.achieved_rate_hz > 0.0 && state.hand_count == 1 && state.object_count == 1,
+  check(state.achieved_rate_hz > 0.0 && state.hand_count == 2 && state.object_count == 1,
         "achieved_rate_hz %g > 0 (rate_hz %g); wake late p50 %g us, p99 %g us; %lld overruns",
         state.achieved_rate_hz, def.rate_hz, state.wake_late_us_p50, state.wake_late_us_p99,
         (long long)state.overruns);
@@ -1684,6 +2055,9 @@ int main(void) {
   test_read_errors();
   test_press();
   test_dynamics();
+  test_destroy_world_hand();
+  test_hand_geometry();
+  test_ignored_objects();
   test_thread();
   frusta_destroy_sphere_tree(g_box);
   printf("%d passed, %d failed\n", g_passed, g_failed);

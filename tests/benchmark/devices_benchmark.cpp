@@ -124,7 +124,7 @@ struct Latency {
 Latency measure(const GloveSide& side, int transitions) {
   const HandModel model = make_hand_model(default_hand_def());
   World world(WorldDef{});
-  int32_t hand = -1;
+  HandHandle hand;
   world.add_hand(model, &hand);
   ObjectDef box;
   box.pose.position =
@@ -145,7 +145,7 @@ Latency measure(const GloveSide& side, int transitions) {
   DeviceLinkDef def;
   def.host_timeout_s = 0.0;  // this host does not read snapshots
   def.rates.max_force_rate = 1e9;  // the first command after contact brakes at once
-  DeviceLink link(world.port(hand), def, std::make_unique<SerialStream>(path, side.baud), side.protocol());
+  DeviceLink link(world.port(hand.slot), def, std::make_unique<SerialStream>(path, side.baud), side.protocol());
   link.open();
 
   Latency result;

@@ -182,7 +182,7 @@ void press_and_slide(std::shared_ptr<const TreeFile> box, double bake_error, dou
   ObjectDef def;
   def.pose.position = vec3(tip.x + 0.005, tip.y, face - 0.5 * kBoxSize.z);  // 5 mm to slide into
   World world(WorldDef{});
-  int32_t index = -1;
+  HandHandle index;
   check(world.add_hand(model, &index), "add_hand");
   ObjectHandle handle;
   check(world.add_object(box, def, &handle), "add_object");
@@ -197,7 +197,7 @@ void press_and_slide(std::shared_ptr<const TreeFile> box, double bake_error, dou
     world.step();
     press_us.record(world.read().step_us);
   }
-  const HandSnapshot& held = world.read().hands[static_cast<size_t>(index)];
+  const HandSnapshot& held = *world.read().hand(index);
   const TipForces pressed = tip_forces(held);
   const double exact_depth = face - lowest_tip_z(model, held.haptic);
   const double exact = k * exact_depth;
@@ -216,7 +216,7 @@ void press_and_slide(std::shared_ptr<const TreeFile> box, double bake_error, dou
     haptic.palm_position.x = kSpeed * 1e-3 * t;
     world.set_haptic(index, haptic);
     world.step();
-    const HandSnapshot& h = world.read().hands[static_cast<size_t>(index)];
+    const HandSnapshot& h = *world.read().hand(index);
     slide_us.record(world.read().step_us);
     if (t <= kSlide / 2) continue;
     const TipForces f = tip_forces(h);

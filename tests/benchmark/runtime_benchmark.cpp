@@ -83,9 +83,9 @@ void world_steps(int hands, int objects, bool last) {
   left_def.side = FRUSTA_HAND_LEFT;
   // the left hand grasps its own ball half a metre away (its palm there too)
   const vec3 offsets[2] = {vec3(0.0), vec3(0.0, 0.5, 0.0)};
+  HandHandle handles[2];
   for (int h = 0; h < hands; ++h) {
-    int32_t index = -1;
-    world.add_hand(make_hand_model(h == 0 ? default_hand_def() : left_def), &index);
+    world.add_hand(make_hand_model(h == 0 ? default_hand_def() : left_def), &handles[h]);
     ObjectHandle handle;
     world.add_object(ball, RigidPose{offsets[h] + vec3(0.10, 0.0, -0.058), glm::dmat3(1.0)}, &handle);
   }
@@ -100,7 +100,7 @@ void world_steps(int hands, int objects, bool last) {
     for (int h = 0; h < hands; ++h) {
       HandState haptic = grasp.haptic(std::min(t, grasp.steps - 1));
       haptic.palm_position += offsets[h];
-      world.set_haptic(h, haptic);
+      world.set_haptic(handles[h], haptic);
     }
     const Clock::time_point start = Clock::now();
     world.step();
@@ -110,7 +110,7 @@ void world_steps(int hands, int objects, bool last) {
   std::printf("  {\"hands\": %d, \"objects\": %d, \"leaves_per_ball\": 2000, \"steps\": %d, \"p50_us\": %.2f, "
               "\"p99_us\": %.2f, \"max_us\": %.2f, \"contacts_hand0\": %d}%s\n",
               hands, objects, kMeasured, steps.percentile(0.5), steps.percentile(0.99), steps.max(),
-              s.hands[0].contact_count, last ? "" : ",");
+              s.hand(handles[0])->contact_count, last ? "" : ",");
 }
 
 }  // namespace

@@ -18,8 +18,7 @@
  *   frusta_create_world_hand, frusta_create_device) takes the world first, its id
  *   names that world (world0 != 0), and its destroy takes the id alone. A thing made
  *   from different sources names the source: frusta_create_sphere_tree_from_mesh,
- *   frusta_create_sphere_tree_from_file. A world's hands have no destroy: they live
- *   as long as their world.
+ *   frusta_create_sphere_tree_from_file.
  * - Ids are small values passed by value. Zero-initialised means null
  *   (FRUSTA_ERROR_NULL_ID). An id whose thing was destroyed, that belongs to another
  *   world, or a standalone hand's id given to a world, is refused with
@@ -80,7 +79,7 @@
 #define FRUSTA_VERSION \
   (FRUSTA_VERSION_MAJOR * 1000000 + FRUSTA_VERSION_MINOR * 1000 + FRUSTA_VERSION_PATCH)
 /** Bumped whenever a struct layout or a signature changes; see frusta_check_abi(). */
-#define FRUSTA_ABI_VERSION 3
+#define FRUSTA_ABI_VERSION 4
 
 /** The library's FRUSTA_VERSION. Thread: any. */
 FRUSTA_API int32_t frusta_version(void);
@@ -137,10 +136,10 @@ FRUSTA_API int32_t frusta_struct_size(const char* name);
 /** Hand handle, of a standalone hand (frusta_create_hand) or of a world's
  *  (frusta_create_world_hand). Opaque; pass by value. Zero-initialised means null. */
 typedef struct frusta_hand_id {
-  int32_t index1;      /* slot + 1 (a world's hand: its index in the world + 1); 0 is null */
+  int32_t index1;      /* slot + 1 (a world's hand: its hand slot in the world + 1); 0 is null */
   uint16_t world0;     /* 0: standalone; else the owning world: slot + 1, and its
                           generation's low byte */
-  uint16_t generation; /* bumped when the slot is reused (a world's hand: its world's) */
+  uint16_t generation; /* bumped when the slot is reused */
 } frusta_hand_id;
 #define FRUSTA_IS_NULL(id) ((id).index1 == 0)
 
@@ -260,7 +259,8 @@ FRUSTA_API frusta_result frusta_hand_def_set_size(frusta_hand_def* def, double h
  *  internally); the calling thread is the hand's host. */
 FRUSTA_API frusta_result frusta_create_hand(const frusta_hand_def* def, frusta_hand_id* out_hand);
 /** Destroy a standalone hand; its id and every copy of it become stale. A world's hand
- *  is refused (FRUSTA_ERROR_STALE_ID): it lives as long as its world. Thread: host. */
+ *  is refused (FRUSTA_ERROR_STALE_ID): frusta_destroy_world_hand destroys it.
+ *  Thread: host. */
 FRUSTA_API frusta_result frusta_destroy_hand(frusta_hand_id hand);
 /** 1 if the id names a live hand, standalone or in a live world, else 0 (never an
  *  error). Thread: any. */
@@ -687,8 +687,11 @@ typedef struct frusta_world_def {
   int32_t max_iterations;       /* re-linearisations per solver stage, 1..100; default 2 */
   int32_t max_substeps;         /* per step, 1..1024; default 64 */
   int32_t max_contacts_per_hand;/* kept per hand per step, 0..65536; default 256 */
-  int32_t command_capacity;     /* queued object commands between steps, 1..2^20
-                                   (rounded up to a power of two); default 256 */
+  int32_t command_capacity;     /* queued object and hand commands between steps,
+                                   1..2^20 (rounded up to a power of two); default 256 */
+  int32_t max_hands;            /* hand slots, 1..64; default 8. An empty slot costs a
+                                   few kilobytes and no step time */
+  int32_t reserved1;            /* explicit padding */
   /* device limits: every output is scaled down to fit, never turned */
   double max_fingertip_force;   /* newtons, per finger; default 10 */
   double max_finger_resistance; /* newtons, per finger; default 10 */
@@ -734,7 +737,7 @@ typedef struct frusta_object_def {
 /** What frusta_world_read latches: the newest step's summary. */
 typedef struct frusta_world_state {
   int32_t struct_size;          /* sizeof(frusta_world_state); set it before the call */
-  int32_t hand_count;           /* hands in the world */
+  int32_t hand_count;           /* hands present at the step */
   uint64_t step;                /* steps so far; 0 before the first */
   double time;                  /* seconds: steps times 1/rate_hz */
   double step_us;               /* this step's time, microseconds */
@@ -766,6 +769,9 @@ typedef struct frusta_world_hand {
                                    was given (nearly parallel or contradictory
                                    constraints); the hand stayed at its last safe
                                    estimate, short of its input */
+  int32_t ignored_objects;      /* objects put inside the hand that it passes through
+                                   until they part (see frusta_create_object) */
+  int32_t reserved0;            /* explicit padding */
   /* device outputs, each clamped to the world's limits; pick what the device renders */
   double fingertip_force[FRUSTA_FINGER_COUNT][3]; /* on each distal segment, newtons */
   double finger_resistance[FRUSTA_FINGER_COUNT];  /* |force| on each finger, newtons */
@@ -798,6 +804,10 @@ typedef struct frusta_object_state {
   double angular_velocity[3];   /* rad/s */
   double reaction_force[3];     /* from every hand, newtons: what a host engine applies */
   double reaction_torque[3];    /* about the pose position, newton-metres */
+  int32_t ignoring_hands;       /* hands the object was put inside, which pass through
+                                   it until they part (frusta_world_get_object_ignored_by
+                                   names them) */
+  int32_t reserved0;            /* explicit padding */
 } frusta_object_state;
 
 /** Defaults for frusta_create_world. Thread: any. */
@@ -816,14 +826,30 @@ FRUSTA_API frusta_result frusta_destroy_world(frusta_world_id world);
 /** 1 if the id names a live world, else 0. Thread: any. */
 FRUSTA_API int32_t frusta_world_is_valid(frusta_world_id world);
 
-/** Create a hand in the world, built from def; *out_hand names it in every call on
- *  the world's hands (frusta_world_set_haptic, frusta_world_get_hand, ...,
- *  frusta_device_def.hand). It lives as long as the world. Only before the first
- *  step: FRUSTA_ERROR_WRONG_STATE afterwards. The world's solver settings are checked
- *  against the hand here. Thread: host. */
+/** Create a hand in the world, built from def, at any time (the world's own thread may
+ *  be running); *out_hand names it in every call on the world's hands
+ *  (frusta_world_set_haptic, frusta_world_get_hand, ..., frusta_device_def.hand).
+ *  Queued like an object: it takes haptic inputs at once and is solved from the next
+ *  step on; the frusta_world_get_* calls refuse it (FRUSTA_ERROR_STALE_ID) until
+ *  frusta_world_read has latched such a step. All the memory it needs is allocated
+ *  here, on the host thread. Its first input is placed outside every object (or, with
+ *  no free placement near, counted in rejected_inputs). The world's solver settings
+ *  are checked against the hand here. FRUSTA_ERROR_CAPACITY when max_hands hands are
+ *  present or still being let go of (see frusta_destroy_world_hand), or the command
+ *  queue is full (step the world). Thread: host. */
 FRUSTA_API frusta_result frusta_create_world_hand(frusta_world_id world,
                                                   const frusta_hand_def* def,
                                                   frusta_hand_id* out_hand);
+/** Destroy a hand of a world (queued; the id names its world). Its id turns stale at
+ *  once for the calls that change the world: frusta_world_set_haptic from an input
+ *  thread still feeding it gets FRUSTA_ERROR_STALE_ID. The frusta_world_get_* calls
+ *  report the latched step, in which the hand is present until a step has applied the
+ *  removal. A hand a glove drives is refused (FRUSTA_ERROR_WRONG_STATE) until
+ *  frusta_destroy_device closes the glove. The hand's memory is freed on the host
+ *  thread, never in a step, by the first frusta_world_read that latches a step which
+ *  applied the removal; its slot takes a new hand from then on. Thread: host (of the
+ *  hand's world). */
+FRUSTA_API frusta_result frusta_destroy_world_hand(frusta_hand_id hand);
 /** Set a world hand's haptic input (the glove): palm pose (metres, world frame) and
  *  FRUSTA_HAND_JOINT_COUNT joint angles (radians, finger-major). The newest input
  *  wins; the next step uses it. The one rule for every input of a hand (this call,
@@ -831,16 +857,22 @@ FRUSTA_API frusta_result frusta_create_world_hand(frusta_world_id world,
  *  quaternion norm in [0.5, 2] (normalised), |angle| <= FRUSTA_MAX_JOINT_ANGLE
  *  (clamped into the hand's limits). What this call accepts the next step uses; what
  *  breaks the rule is refused here. Lock-free and allocation-free.
- *  FRUSTA_ERROR_WRONG_STATE on a hand a glove drives (frusta_create_device).
- *  Thread: input. */
+ *  FRUSTA_ERROR_WRONG_STATE on a hand a glove drives (frusta_create_device);
+ *  FRUSTA_ERROR_STALE_ID from the moment the host destroys the hand, even while this
+ *  call runs on another thread. Thread: input. */
 FRUSTA_API frusta_result frusta_world_set_haptic(frusta_world_id world, frusta_hand_id hand,
                                                  const frusta_pose* palm, const double* angles,
                                                  int32_t count);
 
 /** Create an object in the world with the tree's shape; queued, present from the next
  *  step. The world keeps the tree alive while it uses it, even if the tree's id is
- *  destroyed. FRUSTA_ERROR_CAPACITY when max_objects are present or the command queue
- *  is full (step the world). Thread: host. */
+ *  destroyed. An object created where a graphic hand already is, overlapping it, is
+ *  ignored by that hand until they part: the hand passes through it, touches it
+ *  nowhere and pushes it with no force, rather than being trapped in it or flung out
+ *  of it (frusta_object_state.ignoring_hands, frusta_world_get_object_ignored_by and
+ *  frusta_world_hand.ignored_objects show it; move the hand out, or the object away,
+ *  to make it solid to the hand). FRUSTA_ERROR_CAPACITY when max_objects are present
+ *  or the command queue is full (step the world). Thread: host. */
 FRUSTA_API frusta_result frusta_create_object(frusta_world_id world, frusta_tree_id tree,
                                               const frusta_object_def* def,
                                               frusta_object_id* out_object);
@@ -849,7 +881,9 @@ FRUSTA_API frusta_result frusta_create_object(frusta_world_id world, frusta_tree
  *  latched step, in which the object is present until a step has applied the removal.
  *  Thread: host (of the object's world). */
 FRUSTA_API frusta_result frusta_destroy_object(frusta_object_id object);
-/** Put an object at a pose (metres, world frame), at rest (queued). Thread: host. */
+/** Put an object at a pose (metres, world frame), at rest (queued). A hand it is put
+ *  into ignores it until they part, as for frusta_create_object; an object the
+ *  world's dynamics move into a hand is pushed by it as usual. Thread: host. */
 FRUSTA_API frusta_result frusta_world_set_object_pose(frusta_world_id world,
                                                       frusta_object_id object,
                                                       const frusta_pose* pose);
@@ -873,11 +907,13 @@ FRUSTA_API frusta_result frusta_world_stop(frusta_world_id world);
  *  state->struct_size first). The frusta_world_get_* functions below read the latched
  *  step until the next call. Thread: host. */
 FRUSTA_API frusta_result frusta_world_read(frusta_world_id world, frusta_world_state* state);
-/** One hand of the latched step (set out->struct_size first). Thread: host. */
+/** One hand of the latched step (set out->struct_size first). FRUSTA_ERROR_STALE_ID
+ *  for a hand destroyed, or created after the latched step. Thread: host. */
 FRUSTA_API frusta_result frusta_world_get_hand(frusta_world_id world, frusta_hand_id hand,
                                                frusta_world_hand* out);
 /** The contacts of one hand in the latched step (at most max_contacts_per_hand), by
- *  the output-array rule (capacity 0 and out null ask for the count). Thread: host. */
+ *  the output-array rule (capacity 0 and out null ask for the count); refused as
+ *  frusta_world_get_hand. Thread: host. */
 FRUSTA_API frusta_result frusta_world_get_contacts(frusta_world_id world, frusta_hand_id hand,
                                                    frusta_world_contact* out, int32_t capacity,
                                                    int32_t* out_count);
@@ -886,6 +922,42 @@ FRUSTA_API frusta_result frusta_world_get_contacts(frusta_world_id world, frusta
  *  Thread: host. */
 FRUSTA_API frusta_result frusta_world_get_object(frusta_world_id world, frusta_object_id object,
                                                  frusta_object_state* out);
+/** *out_ignored = 1 if, in the latched step, the hand ignores the object (it was
+ *  created or moved into the hand and they have not parted since; see
+ *  frusta_create_object), else 0. Both must be in the latched step
+ *  (FRUSTA_ERROR_STALE_ID otherwise). Thread: host. */
+FRUSTA_API frusta_result frusta_world_get_object_ignored_by(frusta_world_id world,
+                                                            frusta_object_id object,
+                                                            frusta_hand_id hand,
+                                                            int32_t* out_ignored);
+
+/** Which of a world hand's two hands a geometry call copies. */
+typedef enum frusta_hand_kind {
+  FRUSTA_HAND_KIND_GRAPHIC = 0, /* the displayed hand, outside every object */
+  FRUSTA_HAND_KIND_HAPTIC = 1   /* the input as the solver aims at it, angles clamped to
+                                   the limits: the glove's "ghost" hand, inside objects
+                                   where the user pushes */
+} frusta_hand_kind;
+
+/** The world geometry of one hand of the latched step (which: frusta_hand_kind), as
+ *  frusta_hand_get_segments gives a standalone hand's: FRUSTA_HAND_SEGMENT_COUNT
+ *  segments, finger-major (thumb first), proximal to distal, metres, by the
+ *  output-array rule; the last segment of each finger has its tip hemisphere at the
+ *  distal end. Worked out from the latched hand's pose and joint angles, exactly as a
+ *  standalone hand given them. FRUSTA_ERROR_WRONG_STATE while the hand has had no
+ *  input (frusta_world_hand.solved 0). Thread: host. */
+FRUSTA_API frusta_result frusta_world_get_hand_segments(frusta_world_id world,
+                                                        frusta_hand_id hand, int32_t which,
+                                                        frusta_segment* out, int32_t capacity,
+                                                        int32_t* out_count);
+/** The palm spheres of one hand of the latched step in world coordinates, as
+ *  frusta_hand_get_palm_spheres gives a standalone hand's, by the output-array rule
+ *  (capacity 0 and out null ask for the count); otherwise as
+ *  frusta_world_get_hand_segments. Thread: host. */
+FRUSTA_API frusta_result frusta_world_get_hand_palm_spheres(frusta_world_id world,
+                                                            frusta_hand_id hand, int32_t which,
+                                                            frusta_sphere* out, int32_t capacity,
+                                                            int32_t* out_count);
 
 /* ---------------------------------------------------------------- devices
  * A force-feedback glove drives one hand of a world. It is opened by URI:
@@ -909,7 +981,7 @@ FRUSTA_API frusta_result frusta_world_get_object(frusta_world_id world, frusta_o
 
 /** Device handle. Opaque; pass by value; zero means null. */
 typedef struct frusta_device_id {
-  int32_t index1;      /* the hand it drives + 1; 0 is null */
+  int32_t index1;      /* the hand slot it drives + 1; 0 is null */
   uint16_t world0;     /* the owning world: slot + 1, and its generation's low byte */
   uint16_t generation; /* bumped at each open on that hand */
 } frusta_device_id;
@@ -1038,8 +1110,8 @@ FRUSTA_API frusta_result frusta_enumerate_devices(frusta_device_info* out, int32
                                                   int32_t* out_count);
 /** Open the glove at uri (UTF-8) to drive the world's hand def->hand, and start its
  *  thread. A glove absent at open is an error (FRUSTA_ERROR_IO, naming it), not a
- *  retry; one glove per hand (FRUSTA_ERROR_WRONG_STATE); gloves drive the first 16
- *  hands of a world. While open, frusta_world_set_haptic on that hand is refused: its
+ *  retry; one glove per hand (FRUSTA_ERROR_WRONG_STATE). While open,
+ *  frusta_world_set_haptic on that hand is refused, and so is destroying the hand: its
  *  palm comes from frusta_device_set_palm_pose unless the glove reports one.
  *  Thread: host. */
 FRUSTA_API frusta_result frusta_create_device(frusta_world_id world, const char* uri,

@@ -158,7 +158,8 @@ frusta_result find_device(frusta_device_id id, WorldObject** world, DeviceLink**
   frusta_world_id world_id;
   if (frusta_result r = world_registry().find_by_tag(id.world0, "device", world, &world_id)) return r;
   // index1 is checked before 1 is taken off it: INT32_MIN - 1 overflows
-  const int32_t h = id.index1 >= 1 && id.index1 <= kMaxGloves ? id.index1 - 1 : -1;
+  const int32_t slots = static_cast<int32_t>((*world)->gloves.size());
+  const int32_t h = id.index1 >= 1 && id.index1 <= slots ? id.index1 - 1 : -1;
   if (h < 0 || !(*world)->gloves[static_cast<size_t>(h)] ||
       (*world)->glove_generation[static_cast<size_t>(h)] != id.generation)
     return fail(FRUSTA_ERROR_STALE_ID,
@@ -228,18 +229,21 @@ FRUSTA_API frusta_result frusta_create_device(frusta_world_id world, const char*
   DeviceLinkDef link_def;
   GloveCalibration calibration;
   if (frusta_result r = read_device_def(*def, &link_def, &calibration)) return r;
-  int32_t hand = -1;
-  if (frusta_result r = world_hand_index(world, *w, def->hand, &hand)) {
+  HandHandle handle;
+  frusta_result found = hand_handle(world, def->hand, &handle);
+  if (found == FRUSTA_OK && !w->world.hand_is_live(handle))
+    found = fail(FRUSTA_ERROR_STALE_ID,
+                 "hand id {index1=%d, generation=%u} names no hand of this world: it was "
+                 "destroyed, or never created",
+                 def->hand.index1, def->hand.generation);
+  if (found != FRUSTA_OK) {
     // the field, then why, without the code's name that opens the message
     const std::string why = last_error_message();
     const size_t colon = why.find(": ");
-    return fail(r, "frusta_device_def.hand: %s",
+    return fail(found, "frusta_device_def.hand: %s",
                 colon == std::string::npos ? why.c_str() : why.c_str() + colon + 2);
   }
-  if (hand >= kMaxGloves)
-    return fail(FRUSTA_ERROR_OUT_OF_RANGE,
-                "frusta_device_def.hand is the world's hand %d; gloves drive the first %d", hand,
-                kMaxGloves);
+  const int32_t hand = handle.slot;
   DeviceAddress address;
   if (frusta_result r = parse_device_uri(uri, &address)) return r;
   return guarded("frusta_create_device", [&] {
@@ -275,7 +279,8 @@ FRUSTA_API int32_t frusta_device_is_valid(frusta_device_id device) {
   WorldObject* w = nullptr;
   frusta_world_id world;
   if (world_registry().find_by_tag(device.world0, nullptr, &w, &world) != FRUSTA_OK) return 0;
-  if (device.index1 < 1 || device.index1 > kMaxGloves) return 0;  // before taking 1 off it
+  // index1 is checked before 1 is taken off it
+  if (device.index1 < 1 || device.index1 > static_cast<int32_t>(w->gloves.size())) return 0;
   const int32_t h = device.index1 - 1;
   return w->gloves[static_cast<size_t>(h)] &&
                  w->glove_generation[static_cast<size_t>(h)] == device.generation

@@ -23,7 +23,8 @@ frusta_result find_hand(frusta_hand_id id, HandObject** out) {
   if (world_hand_is_valid(id))
     return fail(FRUSTA_ERROR_STALE_ID,
                 "hand id {index1=%d, world0=%u, generation=%u} names a world's hand, not a "
-                "standalone one: the frusta_world_* calls take it",
+                "standalone one: the frusta_world_* calls take it (frusta_destroy_world_hand "
+                "destroys it)",
                 id.index1, id.world0, id.generation);
   return hand_registry().find(id, out);
 }
@@ -112,15 +113,7 @@ FRUSTA_API frusta_result frusta_hand_get_segments(frusta_hand_id hand, frusta_se
   HandObject* h = nullptr;
   if (frusta_result r = find_hand(hand, &h)) return r;
   if (frusta_result r = check_output_array(out, "out", capacity, out_count)) return r;
-  return fill_output_array(capacity, FRUSTA_HAND_SEGMENT_COUNT, out_count, [&](int32_t i) {
-    const Segment seg = finger_segment(h->model, h->pose, i / FRUSTA_SEGMENTS_PER_FINGER,
-                                       i % FRUSTA_SEGMENTS_PER_FINGER);
-    frusta_segment& o = out[i];
-    store(seg.proximal, o.proximal);
-    store(seg.distal, o.distal);
-    o.proximal_radius = seg.proximal_radius;
-    o.distal_radius = seg.distal_radius;
-  });
+  return copy_segments(h->model, h->pose, out, capacity, out_count);
 }
 
 FRUSTA_API frusta_result frusta_hand_get_palm_spheres(frusta_hand_id hand, frusta_sphere* out,
@@ -128,12 +121,7 @@ FRUSTA_API frusta_result frusta_hand_get_palm_spheres(frusta_hand_id hand, frust
   HandObject* h = nullptr;
   if (frusta_result r = find_hand(hand, &h)) return r;
   if (frusta_result r = check_output_array(out, "out", capacity, out_count)) return r;
-  const int32_t count = static_cast<int32_t>(h->model.palm_spheres.size());
-  return fill_output_array(capacity, count, out_count, [&](int32_t i) {
-    const Sphere s = palm_sphere(h->model, h->pose, i);
-    store(s.center, out[i].center);
-    out[i].radius = s.radius;
-  });
+  return copy_palm_spheres(h->model, h->pose, out, capacity, out_count);
 }
 
 FRUSTA_API frusta_result frusta_hand_point_jacobian(frusta_hand_id hand, int32_t finger,

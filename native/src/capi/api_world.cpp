@@ -3,6 +3,7 @@
 // calls a device thread makes (frusta_world_set_haptic) take no lock and allocate
 // nothing.
 #include <algorithm>
+#include <bitset>
 #include <cstring>
 #include <glm/gtc/quaternion.hpp>
 
@@ -23,6 +24,7 @@ vec3 vec3_of(const double v[3]) { return vec3(v[0], v[1], v[2]); }
 frusta_result read_world_def(const frusta_world_def& in, WorldDef* out) {
   WorldDef def;
   def.max_objects = in.max_objects;
+  def.max_hands = in.max_hands;
   def.rate_hz = in.rate_hz;
   def.spin_us = in.spin_us;
   def.gravity = vec3_of(in.gravity);
@@ -63,43 +65,51 @@ frusta_result read_object_def(const frusta_object_def& in, ObjectDef* out) {
   return FRUSTA_OK;
 }
 
-// An object id's generation from its slot's and back: the world generation's high byte
-// is mixed in, as world0 holds only its low byte. Otherwise an object id of a world
-// destroyed 256 generations of its slot ago named the slot's new world's object.
-uint16_t id_generation(frusta_world_id world, uint32_t slot_generation) {
-  return static_cast<uint16_t>(slot_generation ^ (world.generation & 0xFF00u));
-}
-
-frusta_object_id object_id(frusta_world_id world, int32_t slot, uint32_t slot_generation) {
-  return {slot + 1, world_tag(world), id_generation(world, slot_generation)};
-}
-
-// The object slot of id in this world (checked against the host's view: live now).
-frusta_result object_handle(frusta_world_id world, frusta_object_id id, ObjectHandle* out) {
-  if (id.index1 == 0) return fail(FRUSTA_ERROR_NULL_ID, "object id is null (zero-initialised)");
-  if (id.world0 != world_tag(world))
-    return fail(FRUSTA_ERROR_STALE_ID,
-                "object id {index1=%d, world0=%u} belongs to another world, or to a destroyed one",
-                id.index1, id.world0);
-  if (id.index1 < 0)  // never issued; and index1 - 1 would overflow for INT32_MIN
-    return fail(FRUSTA_ERROR_STALE_ID, "object id {index1=%d, generation=%u} names no object",
-                id.index1, id.generation);
-  *out = {id.index1 - 1, id_generation(world, id.generation)};  // the mix undone
-  return FRUSTA_OK;
-}
-
-frusta_result latched(WorldObject* w, const WorldSnapshot** out) {
-  if (!w->latched)
+// What an id names in the latched step (`shown`, null when it is not there), or why not:
+// no step latched yet (for an id of something there now: `live`), or a stale id.
+template <class Shown>
+frusta_result from_latched(const WorldObject* w, const Shown* shown, bool live, const char* kind,
+                           int32_t index1, uint16_t generation, const Shown** out) {
+  if (!w->latched && live)
     return fail(FRUSTA_ERROR_WRONG_STATE, "no step latched yet: call frusta_world_read first");
-  *out = w->latched;
+  if (!shown)
+    return fail(FRUSTA_ERROR_STALE_ID,
+                "%s id {index1=%d, generation=%u} names no %s of this world in the latched step: "
+                "destroyed, or created after it (step, then frusta_world_read)",
+                kind, index1, generation, kind);
+  *out = shown;
   return FRUSTA_OK;
 }
 
-// A checked hand in the latched step (which has every hand: creating one unlatches).
-frusta_result hand_of(const WorldSnapshot& snap, int32_t hand, const HandSnapshot** out) {
-  if (hand >= static_cast<int32_t>(snap.hands.size()))
-    return fail(FRUSTA_ERROR_INTERNAL, "hand %d is not in the latched step", hand);
-  *out = &snap.hands[static_cast<size_t>(hand)];
+frusta_result latched_hand(frusta_world_id world, WorldObject* w, frusta_hand_id id,
+                           const HandSnapshot** out) {
+  HandHandle handle;
+  if (frusta_result r = hand_handle(world, id, &handle)) return r;
+  return from_latched(w, w->latched ? w->latched->hand(handle) : nullptr,
+                      w->world.hand_is_live(handle), "hand", id.index1, id.generation, out);
+}
+
+frusta_result latched_object(frusta_world_id world, WorldObject* w, frusta_object_id id,
+                             const ObjectSnapshot** out) {
+  ObjectHandle handle;
+  if (frusta_result r = object_handle(world, id, &handle)) return r;
+  return from_latched(w, w->latched ? w->latched->object(handle) : nullptr,
+                      w->world.object_is_live(handle), "object", id.index1, id.generation, out);
+}
+
+// The pose of one of a latched hand's two hands (which: frusta_hand_kind).
+frusta_result latched_hand_pose(frusta_world_id world, WorldObject* w, frusta_hand_id id,
+                                int32_t which, const HandSnapshot** hand, HandPose* pose) {
+  if (which != FRUSTA_HAND_KIND_GRAPHIC && which != FRUSTA_HAND_KIND_HAPTIC)
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "which is %d, must be 0 (graphic) or 1 (haptic)", which);
+  if (frusta_result r = latched_hand(world, w, id, hand)) return r;
+  if (!(*hand)->solved)
+    return fail(FRUSTA_ERROR_WRONG_STATE,
+                "hand id {index1=%d} has had no input yet: it has no pose (solved 0)", id.index1);
+  if (which == FRUSTA_HAND_KIND_GRAPHIC)
+    forward_kinematics(*(*hand)->model, (*hand)->graphic, *pose);
+  else
+    haptic_hand_pose(*(*hand)->model, (*hand)->haptic, *pose);
   return FRUSTA_OK;
 }
 
@@ -114,6 +124,7 @@ FRUSTA_API frusta_world_def frusta_default_world_def(void) {
   const WorldDef d;
   frusta_world_def def = blank_def<frusta_world_def>();
   def.max_objects = d.max_objects;
+  def.max_hands = d.max_hands;
   def.rate_hz = d.rate_hz;
   def.spin_us = d.spin_us;
   store(d.gravity, def.gravity);
@@ -175,12 +186,27 @@ FRUSTA_API frusta_result frusta_create_world_hand(frusta_world_id world, const f
   const HandDef d = read_hand_def(*def);
   if (frusta_result r = check_hand_def(d)) return r;
   return guarded("frusta_create_world_hand", [&] {
-    int32_t hand = -1;
+    HandHandle hand;
     if (frusta_result r = w->world.add_hand(make_hand_model(d), &hand)) return r;
-    w->latched = nullptr;  // the snapshots were rebuilt for the new hand
-    *out_hand = world_hand_id(world, hand);
+    *out_hand = hand_id(world, hand);
     return FRUSTA_OK;
   });
+}
+
+FRUSTA_API frusta_result frusta_destroy_world_hand(frusta_hand_id hand) {
+  if (hand.index1 == 0) return fail(FRUSTA_ERROR_NULL_ID, "hand id is null (zero-initialised)");
+  if (hand.world0 == 0)
+    return fail(FRUSTA_ERROR_STALE_ID,
+                "hand id {index1=%d, world0=0} names a standalone hand: frusta_destroy_hand "
+                "destroys it",
+                hand.index1);
+  WorldObject* w = nullptr;
+  frusta_world_id world;
+  if (frusta_result r = world_registry().find_by_tag(hand.world0, "hand", &w, &world)) return r;
+  HandHandle handle;
+  if (frusta_result r = hand_handle(world, hand, &handle)) return r;
+  // refused while a glove drives it: the glove holds the hand's port
+  return guarded("frusta_destroy_world_hand", [&] { return w->world.remove_hand(handle); });
 }
 
 FRUSTA_API frusta_result frusta_world_set_haptic(frusta_world_id world, frusta_hand_id hand_id,
@@ -188,15 +214,16 @@ FRUSTA_API frusta_result frusta_world_set_haptic(frusta_world_id world, frusta_h
                                                  int32_t count) {
   WorldObject* w = nullptr;
   if (frusta_result r = world_registry().find(world, &w)) return r;
-  int32_t hand = -1;
-  if (frusta_result r = world_hand_index(world, *w, hand_id, &hand)) return r;
+  HandHandle hand;
+  if (frusta_result r = hand_handle(world, hand_id, &hand)) return r;
   Pose pose;
   if (frusta_result r = read_pose(palm, "palm", &pose)) return r;
   HandState state;
   if (frusta_result r = read_joint_angles(angles, count, "angles", &state.angles)) return r;
   state.palm_position = pose.position;
   state.palm_rotation = pose.rotation;
-  return w->world.set_haptic(hand, state);  // the hand's port refuses it while a glove drives it
+  // the hand's port refuses it once the hand is destroyed, and while a glove drives it
+  return w->world.set_haptic(hand, state);
 }
 
 FRUSTA_API frusta_result frusta_create_object(frusta_world_id world, frusta_tree_id tree,
@@ -215,7 +242,7 @@ FRUSTA_API frusta_result frusta_create_object(frusta_world_id world, frusta_tree
     std::shared_ptr<const TreeFile> file(shape, &shape->file);
     ObjectHandle handle;
     if (frusta_result r = w->world.add_object(std::move(file), d, &handle)) return r;
-    *out_object = object_id(world, handle.slot, handle.generation);
+    *out_object = object_id(world, handle);
     return FRUSTA_OK;
   });
 }
@@ -278,7 +305,9 @@ FRUSTA_API frusta_result frusta_world_read(frusta_world_id world, frusta_world_s
   if (frusta_result r = check_out_struct(state, "state", "frusta_world_state")) return r;
   const WorldSnapshot& snap = w->world.read();
   w->latched = &snap;
-  state->hand_count = static_cast<int32_t>(snap.hands.size());
+  int32_t hands = 0;
+  for (const HandSlot& h : snap.hands) hands += h.present ? 1 : 0;
+  state->hand_count = hands;
   state->step = snap.step;
   state->time = snap.time;
   state->step_us = snap.step_us;
@@ -303,12 +332,8 @@ FRUSTA_API frusta_result frusta_world_get_hand(frusta_world_id world, frusta_han
   WorldObject* w = nullptr;
   if (frusta_result r = world_registry().find(world, &w)) return r;
   if (frusta_result r = check_out_struct(out, "out", "frusta_world_hand")) return r;
-  int32_t index = -1;
-  if (frusta_result r = world_hand_index(world, *w, hand, &index)) return r;
-  const WorldSnapshot* snap = nullptr;
-  if (frusta_result r = latched(w, &snap)) return r;
   const HandSnapshot* h = nullptr;
-  if (frusta_result r = hand_of(*snap, index, &h)) return r;
+  if (frusta_result r = latched_hand(world, w, hand, &h)) return r;
   out->solved = h->solved ? 1 : 0;
   store_state(h->graphic, &out->graphic_palm, out->graphic_angles);
   store_state(h->haptic, &out->haptic_palm, out->haptic_angles);
@@ -318,6 +343,8 @@ FRUSTA_API frusta_result frusta_world_get_hand(frusta_world_id world, frusta_han
   out->substeps = h->stats.substeps;
   out->lagging = h->stats.lagging ? 1 : 0;
   out->infeasible = h->stats.infeasible ? 1 : 0;
+  out->ignored_objects = h->ignored_objects;
+  out->reserved0 = 0;
   for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
     store(h->device.fingertip_force[static_cast<size_t>(f)], out->fingertip_force[f]);
     out->finger_resistance[f] = h->device.finger_resistance[static_cast<size_t>(f)];
@@ -333,20 +360,19 @@ FRUSTA_API frusta_result frusta_world_get_contacts(frusta_world_id world, frusta
                                                    int32_t* out_count) {
   WorldObject* w = nullptr;
   if (frusta_result r = world_registry().find(world, &w)) return r;
-  int32_t index = -1;
-  if (frusta_result r = world_hand_index(world, *w, hand, &index)) return r;
+  HandHandle handle;
+  if (frusta_result r = hand_handle(world, hand, &handle)) return r;
   if (frusta_result r = check_output_array(out, "out", capacity, out_count)) return r;
-  const WorldSnapshot* snap = nullptr;
-  if (frusta_result r = latched(w, &snap)) return r;
   const HandSnapshot* h = nullptr;
-  if (frusta_result r = hand_of(*snap, index, &h)) return r;
+  if (frusta_result r = latched_hand(world, w, hand, &h)) return r;
+  const WorldSnapshot& snap = *w->latched;
   const int32_t kept = std::min(h->contact_count, static_cast<int32_t>(h->contacts.size()));
   return fill_output_array(capacity, kept, out_count, [&](int32_t i) {
     const SolverContact& c = h->contacts[static_cast<size_t>(i)];
     const ContactForce& f = h->forces[static_cast<size_t>(i)];
     frusta_world_contact& o = out[i];
-    const ObjectSnapshot& object = snap->objects[static_cast<size_t>(c.object)];
-    o.object = object_id(world, c.object, object.generation);
+    const ObjectSnapshot& object = snap.objects[static_cast<size_t>(c.object)];
+    o.object = object_id(world, {c.object, object.generation});
     o.body = c.body;
     o.leaf = c.leaf;
     o.slipping = f.slipping ? 1 : 0;
@@ -367,20 +393,64 @@ FRUSTA_API frusta_result frusta_world_get_object(frusta_world_id world, frusta_o
   ObjectHandle handle;
   if (frusta_result r = object_handle(world, object, &handle)) return r;
   if (frusta_result r = check_out_struct(out, "out", "frusta_object_state")) return r;
-  const WorldSnapshot* snap = nullptr;
-  if (frusta_result r = latched(w, &snap)) return r;
-  if (handle.slot < 0 || handle.slot >= static_cast<int32_t>(snap->objects.size()) ||
-      !snap->objects[static_cast<size_t>(handle.slot)].present ||
-      snap->objects[static_cast<size_t>(handle.slot)].generation != handle.generation)
-    return fail(FRUSTA_ERROR_STALE_ID,
-                "object id {index1=%d, generation=%u} names no object in the latched step",
-                object.index1, object.generation);
-  const ObjectSnapshot& o = snap->objects[static_cast<size_t>(handle.slot)];
-  out->dynamic = o.dynamic ? 1 : 0;
-  store(to_pose(o.pose.position, o.pose.rotation), &out->pose);
-  store(o.linear_velocity, out->linear_velocity);
-  store(o.angular_velocity, out->angular_velocity);
-  store(o.reaction.force, out->reaction_force);
-  store(o.reaction.torque, out->reaction_torque);
+  const ObjectSnapshot* o = nullptr;
+  if (frusta_result r = latched_object(world, w, object, &o)) return r;
+  out->dynamic = o->dynamic ? 1 : 0;
+  store(to_pose(o->pose.position, o->pose.rotation), &out->pose);
+  store(o->linear_velocity, out->linear_velocity);
+  store(o->angular_velocity, out->angular_velocity);
+  store(o->reaction.force, out->reaction_force);
+  store(o->reaction.torque, out->reaction_torque);
+  out->ignoring_hands = static_cast<int32_t>(std::bitset<64>(o->ignored_by).count());
+  out->reserved0 = 0;
   return FRUSTA_OK;
+}
+
+FRUSTA_API frusta_result frusta_world_get_object_ignored_by(frusta_world_id world,
+                                                            frusta_object_id object,
+                                                            frusta_hand_id hand,
+                                                            int32_t* out_ignored) {
+  WorldObject* w = nullptr;
+  if (frusta_result r = world_registry().find(world, &w)) return r;
+  ObjectHandle object_slot;
+  if (frusta_result r = object_handle(world, object, &object_slot)) return r;
+  HandHandle hand_slot;
+  if (frusta_result r = hand_handle(world, hand, &hand_slot)) return r;
+  if (frusta_result r = check_pointer(out_ignored, "out_ignored")) return r;
+  const ObjectSnapshot* o = nullptr;
+  if (frusta_result r = latched_object(world, w, object, &o)) return r;
+  const HandSnapshot* h = nullptr;
+  if (frusta_result r = latched_hand(world, w, hand, &h)) return r;
+  *out_ignored = static_cast<int32_t>((o->ignored_by >> hand_slot.slot) & 1u);
+  return FRUSTA_OK;
+}
+
+FRUSTA_API frusta_result frusta_world_get_hand_segments(frusta_world_id world,
+                                                        frusta_hand_id hand, int32_t which,
+                                                        frusta_segment* out, int32_t capacity,
+                                                        int32_t* out_count) {
+  WorldObject* w = nullptr;
+  if (frusta_result r = world_registry().find(world, &w)) return r;
+  HandHandle handle;
+  if (frusta_result r = hand_handle(world, hand, &handle)) return r;
+  if (frusta_result r = check_output_array(out, "out", capacity, out_count)) return r;
+  const HandSnapshot* h = nullptr;
+  HandPose pose;
+  if (frusta_result r = latched_hand_pose(world, w, hand, which, &h, &pose)) return r;
+  return copy_segments(*h->model, pose, out, capacity, out_count);
+}
+
+FRUSTA_API frusta_result frusta_world_get_hand_palm_spheres(frusta_world_id world,
+                                                            frusta_hand_id hand, int32_t which,
+                                                            frusta_sphere* out, int32_t capacity,
+                                                            int32_t* out_count) {
+  WorldObject* w = nullptr;
+  if (frusta_result r = world_registry().find(world, &w)) return r;
+  HandHandle handle;
+  if (frusta_result r = hand_handle(world, hand, &handle)) return r;
+  if (frusta_result r = check_output_array(out, "out", capacity, out_count)) return r;
+  const HandSnapshot* h = nullptr;
+  HandPose pose;
+  if (frusta_result r = latched_hand_pose(world, w, hand, which, &h, &pose)) return r;
+  return copy_palm_spheres(*h->model, pose, out, capacity, out_count);
 }

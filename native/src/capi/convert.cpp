@@ -154,4 +154,27 @@ Pose to_pose(const vec3& position, const glm::dmat3& rotation) {
   return {position, glm::normalize(glm::quat_cast(rotation))};
 }
 
+frusta_result copy_segments(const HandModel& model, const HandPose& pose, frusta_segment* out,
+                            int32_t capacity, int32_t* out_count) {
+  return fill_output_array(capacity, FRUSTA_HAND_SEGMENT_COUNT, out_count, [&](int32_t i) {
+    const Segment seg = finger_segment(model, pose, i / FRUSTA_SEGMENTS_PER_FINGER,
+                                       i % FRUSTA_SEGMENTS_PER_FINGER);
+    frusta_segment& o = out[i];
+    store(seg.proximal, o.proximal);
+    store(seg.distal, o.distal);
+    o.proximal_radius = seg.proximal_radius;
+    o.distal_radius = seg.distal_radius;
+  });
+}
+
+frusta_result copy_palm_spheres(const HandModel& model, const HandPose& pose, frusta_sphere* out,
+                                int32_t capacity, int32_t* out_count) {
+  const int32_t count = static_cast<int32_t>(model.palm_spheres.size());
+  return fill_output_array(capacity, count, out_count, [&](int32_t i) {
+    const Sphere s = palm_sphere(model, pose, i);
+    store(s.center, out[i].center);
+    out[i].radius = s.radius;
+  });
+}
+
 }  // namespace frusta

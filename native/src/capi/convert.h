@@ -12,6 +12,7 @@
 #include "frusta/frusta.h"
 #include "geometry/types.h"
 #include "hand/hand_model.h"
+#include "hand/kinematics.h"
 #include "tracking/hand_joints.h"
 
 namespace frusta {
@@ -63,6 +64,14 @@ frusta_result fill_output_array(int32_t capacity, int32_t count, int32_t* out_co
   *out_count = count;
   return FRUSTA_OK;
 }
+
+// A hand's geometry at `pose` by the rest of the output-array rule (check_output_array
+// passed): every finger segment, finger-major, proximal to distal; every palm sphere.
+// The one conversion for standalone hands and a world's.
+frusta_result copy_segments(const HandModel& model, const HandPose& pose, frusta_segment* out,
+                            int32_t capacity, int32_t* out_count);
+frusta_result copy_palm_spheres(const HandModel& model, const HandPose& pose, frusta_sphere* out,
+                                int32_t capacity, int32_t* out_count);
 
 // name prefixes the field names in messages, e.g. "segment" -> "segment.distal[1]"
 frusta_result read_segment(const frusta_segment* in, const char* name, Segment* out);

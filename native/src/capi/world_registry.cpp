@@ -81,38 +81,58 @@ frusta_result WorldRegistry::find_by_tag(uint16_t tag, const char* what, WorldOb
               what, tag);
 }
 
-frusta_hand_id world_hand_id(frusta_world_id world, int32_t hand) {
-  return {hand + 1, world_tag(world), world.generation};
+namespace {
+
+// slot generation <-> id generation: the mix undoes itself
+uint16_t mixed_generation(frusta_world_id world, uint32_t generation) {
+  return static_cast<uint16_t>(generation ^ (world.generation & 0xFF00u));
 }
 
-frusta_result world_hand_index(frusta_world_id world, const WorldObject& w, frusta_hand_id id,
-                               int32_t* out) {
-  if (id.index1 == 0) return fail(FRUSTA_ERROR_NULL_ID, "hand id is null (zero-initialised)");
-  if (id.world0 == 0)
+// The slot and slot generation of an id of a thing of `kind` in this world.
+frusta_result slot_of(frusta_world_id world, int32_t index1, uint16_t world0, uint16_t generation,
+                      const char* kind, int32_t* slot, uint32_t* slot_generation) {
+  if (index1 == 0) return fail(FRUSTA_ERROR_NULL_ID, "%s id is null (zero-initialised)", kind);
+  if (world0 != world_tag(world))
+    return fail(FRUSTA_ERROR_STALE_ID,
+                "%s id {index1=%d, world0=%u} belongs to another world, or to a destroyed one",
+                kind, index1, world0);
+  if (index1 < 0)  // never issued; and index1 - 1 would overflow for INT32_MIN
+    return fail(FRUSTA_ERROR_STALE_ID, "%s id {index1=%d, generation=%u} names no %s of this world",
+                kind, index1, generation, kind);
+  *slot = index1 - 1;
+  *slot_generation = mixed_generation(world, generation);
+  return FRUSTA_OK;
+}
+
+}  // namespace
+
+frusta_object_id object_id(frusta_world_id world, ObjectHandle object) {
+  return {object.slot + 1, world_tag(world), mixed_generation(world, object.generation)};
+}
+
+frusta_hand_id hand_id(frusta_world_id world, HandHandle hand) {
+  return {hand.slot + 1, world_tag(world), mixed_generation(world, hand.generation)};
+}
+
+frusta_result object_handle(frusta_world_id world, frusta_object_id id, ObjectHandle* out) {
+  return slot_of(world, id.index1, id.world0, id.generation, "object", &out->slot, &out->generation);
+}
+
+frusta_result hand_handle(frusta_world_id world, frusta_hand_id id, HandHandle* out) {
+  if (id.index1 != 0 && id.world0 == 0)
     return fail(FRUSTA_ERROR_STALE_ID,
                 "hand id {index1=%d, world0=0, generation=%u} names a standalone hand "
                 "(frusta_create_hand), not a hand of a world (frusta_create_world_hand)",
                 id.index1, id.generation);
-  if (id.world0 != world_tag(world) || id.generation != world.generation)
-    return fail(FRUSTA_ERROR_STALE_ID,
-                "hand id {index1=%d, world0=%u, generation=%u} belongs to another world, or to "
-                "a destroyed one",
-                id.index1, id.world0, id.generation);
-  // index1 is checked before 1 is taken off it: INT32_MIN - 1 overflows
-  if (id.index1 < 1 || id.index1 > w.world.hand_count())
-    return fail(FRUSTA_ERROR_STALE_ID,
-                "hand id {index1=%d} names no hand of this world (it has %d)", id.index1,
-                w.world.hand_count());
-  *out = id.index1 - 1;
-  return FRUSTA_OK;
+  return slot_of(world, id.index1, id.world0, id.generation, "hand", &out->slot, &out->generation);
 }
 
 bool world_hand_is_valid(frusta_hand_id id) {
-  if (id.index1 == 0 || id.world0 == 0) return false;
+  if (id.index1 < 1 || id.world0 == 0) return false;
   WorldObject* w = nullptr;
   frusta_world_id world;
   if (world_registry().find_by_tag(id.world0, nullptr, &w, &world) != FRUSTA_OK) return false;
-  return id.generation == world.generation && id.index1 >= 1 && id.index1 <= w->world.hand_count();
+  return w->world.hand_is_live({id.index1 - 1, mixed_generation(world, id.generation)});
 }
 
 bool WorldRegistry::is_valid(frusta_world_id id) const {

@@ -4,10 +4,11 @@
 // must never wait for a host thread creating or destroying another world.
 #pragma once
 
-#include <array>
 #include <atomic>
 #include <cstdint>
+#include <memory>
 #include <mutex>
+#include <vector>
 
 #include "core/id_pool.h"
 #include "devices/device_link.h"
@@ -16,31 +17,35 @@
 
 namespace frusta {
 
-// Gloves drive the first kMaxGloves hands of a world, one each.
-constexpr int32_t kMaxGloves = 16;
-
 struct WorldObject {
-  explicit WorldObject(const WorldDef& def) : world(def) {}
+  explicit WorldObject(const WorldDef& def)
+      : world(def),
+        gloves(static_cast<size_t>(def.max_hands)),
+        glove_generation(static_cast<size_t>(def.max_hands), 0) {}
   World world;
   const WorldSnapshot* latched = nullptr;  // by frusta_world_read; host thread only
-  // declared after the world, so they close (and zero their gloves) before it goes
-  std::array<std::unique_ptr<DeviceLink>, kMaxGloves> gloves;  // host thread only
-  std::array<uint16_t, kMaxGloves> glove_generation{};        // host thread only
+  // one per hand slot; declared after the world, so they close (and zero their gloves)
+  // before it goes
+  std::vector<std::unique_ptr<DeviceLink>> gloves;  // host thread only
+  std::vector<uint16_t> glove_generation;           // host thread only
 };
 
-// An object's or a glove's world0: the world's slot + 1 in the low byte and its
-// generation's low byte above.
+// An object's, a hand's or a glove's world0: the world's slot + 1 in the low byte and
+// its generation's low byte above.
 uint16_t world_tag(frusta_world_id world);
 
-// A world's hand as the header names it: its index + 1, the world's tag, and the
-// world's whole generation (hands are never removed, so the world's generation tells a
-// hand of this world from one of a world that had the slot 256 generations ago).
-frusta_hand_id world_hand_id(frusta_world_id world, int32_t hand);
-// The index of a hand id in this world, or why not: null, standalone (world0 0),
-// another world's, or never issued (STALE_ID naming it).
-frusta_result world_hand_index(frusta_world_id world, const WorldObject& w, frusta_hand_id id,
-                               int32_t* out);
-// 1 if id names a hand of a live world (never an error).
+// Objects and hands of a world as the header names them: slot + 1, the world's tag, and
+// the slot's generation with the world generation's high byte mixed in (world0 holds
+// only its low byte: without the mix, an id of a world destroyed 256 generations of
+// its slot ago named the slot's new world's object or hand).
+frusta_object_id object_id(frusta_world_id world, ObjectHandle object);
+frusta_hand_id hand_id(frusta_world_id world, HandHandle hand);
+// The handle an id names in this world, or why not (the thread's error names the id):
+// null, another world's (a hand: or a standalone one), or never issued. Whether the
+// thing is there now is the caller's to check, against the host's view or a snapshot.
+frusta_result object_handle(frusta_world_id world, frusta_object_id id, ObjectHandle* out);
+frusta_result hand_handle(frusta_world_id world, frusta_hand_id id, HandHandle* out);
+// 1 if id names a live hand of a live world (never an error). Lock-free.
 bool world_hand_is_valid(frusta_hand_id id);
 
 class WorldRegistry {

@@ -26,14 +26,18 @@ bool IdPool::acquire(int32_t* slot, uint16_t* generation) {
   return true;
 }
 
-void IdPool::release(int32_t slot) {
+void IdPool::retire(int32_t slot) {
   Slot& s = slots_[static_cast<size_t>(slot)];
   assert(s.taken.load(std::memory_order_relaxed));
   // the generation first: a lookup racing this sees a stale id, not a slot being emptied
   const uint16_t g = s.generation.load(std::memory_order_relaxed);
   s.generation.store(static_cast<uint16_t>(g == UINT16_MAX ? 1 : g + 1), std::memory_order_release);
   s.taken.store(false, std::memory_order_release);
-  free_.push_back(slot);
+}
+
+void IdPool::reclaim(int32_t slot) {
+  assert(!slots_[static_cast<size_t>(slot)].taken.load(std::memory_order_relaxed));
+  free_.push_back(slot);  // within the capacity reserved up front
 }
 
 bool IdPool::is_live(int32_t slot, uint16_t generation) const {

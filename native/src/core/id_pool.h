@@ -26,7 +26,15 @@ class IdPool {
   // false when every slot is taken.
   bool acquire(int32_t* slot, uint16_t* generation);
   // Free a taken slot: ids of what was there turn stale.
-  void release(int32_t slot);
+  void release(int32_t slot) {
+    retire(slot);
+    reclaim(slot);
+  }
+  // The same in two parts, for a slot whose old occupant is let go of later: ids of what
+  // was there turn stale now (retire), and the slot is handed out again only after
+  // reclaim.
+  void retire(int32_t slot);
+  void reclaim(int32_t slot);
   // Whether (slot, generation) names what is in a taken slot now.
   bool is_live(int32_t slot, uint16_t generation) const;
   uint16_t generation(int32_t slot) const {
@@ -41,7 +49,7 @@ class IdPool {
   };
   int32_t capacity_;
   std::unique_ptr<Slot[]> slots_;
-  std::vector<int32_t> free_;  // freed slots, the last freed last
+  std::vector<int32_t> free_;  // reclaimed slots, the last reclaimed last
   int32_t unused_ = 0;         // slots from here on were never taken
 };
 

@@ -19,13 +19,19 @@ class TripleBuffer {
   TripleBuffer(const TripleBuffer&) = delete;
   TripleBuffer& operator=(const TripleBuffer&) = delete;
 
-  // Only while neither side runs (set-up): every slot becomes value.
+  // Only while neither side runs (set-up): every slot becomes value, and nothing is
+  // waiting to be read.
   void reset(const T& value) {
     for (T& slot : slots_) slot = value;
+    write_ = 0;
+    read_ = 1;
+    middle_.store(2u, std::memory_order_release);
   }
 
-  // Writer thread only: the slot to fill, then publish() it.
+  // Writer thread only: the slot to fill, then publish() it, and which of the three it
+  // is (0..2), for a writer that keeps data of its own per slot.
   T& write_slot() { return slots_[write_]; }
+  int write_index() const { return static_cast<int>(write_); }
   void publish() {
     const uint32_t previous = middle_.exchange(write_ | kFresh, std::memory_order_acq_rel);
     write_ = previous & kIndex;

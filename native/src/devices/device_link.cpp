@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdint>
 
+#include "core/error.h"
 #include "core/periodic_clock.h"
 #include "core/timer_resolution.h"
 
@@ -47,6 +48,11 @@ DeviceLink::DeviceLink(HandPort& port, const DeviceLinkDef& def, std::unique_ptr
 DeviceLink::~DeviceLink() { close(); }
 
 frusta_result DeviceLink::open() {
+  // the hand in the port's slot now; it stays while this holds the port (a world refuses
+  // to remove a hand a device drives)
+  hand_generation_ = port_.generation();
+  if (hand_generation_ == 0)
+    return fail(FRUSTA_ERROR_WRONG_STATE, "the port has no hand: add one to the world first");
   // one driver per hand: the port refuses a second glove, and the host while this holds it
   if (frusta_result r = port_.claim_for_device()) return r;
   if (frusta_result r = open_glove()) {
@@ -248,7 +254,7 @@ void DeviceLink::on_sample(const DeviceSample& sample) {
     haptic.palm_rotation = palm.rotation;
   }
   // the one rule for a hand's inputs, checked where the port takes them
-  if (port_.set_input(haptic, HandPort::Driver::kDevice) != FRUSTA_OK) {
+  if (port_.set_input(haptic, HandPort::Driver::kDevice, hand_generation_) != FRUSTA_OK) {
     ++working_.samples_rejected;
     return;
   }

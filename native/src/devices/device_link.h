@@ -92,14 +92,17 @@ struct DeviceLinkStatus {
 
 class DeviceLink final : private ProtocolSink {
  public:
-  // Drives the hand behind `port`, which must outlive the link.
+  // Drives the hand in `port`'s slot when opened; the port must outlive the link (a
+  // world's ports live as long as the world), and its hand may not go while the link
+  // holds it (a world refuses to remove a hand a device drives).
   DeviceLink(HandPort& port, const DeviceLinkDef& def, std::unique_ptr<ByteStream> stream,
              std::unique_ptr<GloveProtocol> protocol);
   ~DeviceLink() override;
   DeviceLink(const DeviceLink&) = delete;
   DeviceLink& operator=(const DeviceLink&) = delete;
 
-  // Host: take the hand's port (FRUSTA_ERROR_WRONG_STATE if another glove has it), open
+  // Host: take the hand's port (FRUSTA_ERROR_WRONG_STATE if another glove has it, or the
+  // port has no hand), open
   // the glove (a failure is returned: a glove absent at open is an error, not a
   // reconnect) and start the thread.
   frusta_result open();
@@ -139,6 +142,7 @@ class DeviceLink final : private ProtocolSink {
   HandPort& port_;
   DeviceLinkDef def_;
   bool claimed_ = false;  // the host's: this link holds the port
+  uint32_t hand_generation_ = 0;  // of the hand in the port, set before the thread starts
   std::unique_ptr<ByteStream> stream_;
   std::unique_ptr<GloveProtocol> protocol_;
   Recorder recorder_;

@@ -9,7 +9,29 @@ namespace frusta {
 HandPort::HandPort(int32_t hand, double rate_hz)
     : input_(TimedInput{}), feed_(DeviceFeed{}), hand_(hand), rate_hz_(rate_hz) {}
 
-frusta_result HandPort::set_input(const HandState& state, Driver from) {
+void HandPort::open(uint32_t generation) {
+  input_.reset(TimedInput{});
+  feed_.reset(DeviceFeed{});
+  generation_.store(generation, std::memory_order_seq_cst);
+}
+
+void HandPort::close() { generation_.store(0, std::memory_order_seq_cst); }
+
+frusta_result HandPort::set_input(const HandState& state, Driver from, uint32_t generation) {
+  writers_.fetch_add(1, std::memory_order_seq_cst);
+  if (generation == 0 || generation_.load(std::memory_order_seq_cst) != generation) {
+    writers_.fetch_sub(1, std::memory_order_release);  // out before the message is written
+    return fail(FRUSTA_ERROR_STALE_ID,
+                "hand {slot=%d, generation=%u} names no hand of this world: it was destroyed, or "
+                "never added",
+                hand_, generation);
+  }
+  const frusta_result r = write_input(state, from);
+  writers_.fetch_sub(1, std::memory_order_release);
+  return r;
+}
+
+frusta_result HandPort::write_input(const HandState& state, Driver from) {
   if (from == Driver::kHost && device_driven())
     return fail(FRUSTA_ERROR_WRONG_STATE,
                 "hand %d is driven by a glove: set its palm through the glove "

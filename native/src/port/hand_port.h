@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: MIT
 // The seam between one hand of a world and what drives it: the host (through
-// frusta_world_set_haptic) or a glove's thread. The world owns one port per hand. A
-// driver writes the hand's haptic input to the port and reads the hand's device feed
-// from it; it never sees the world. One driver at a time: a glove claims the port,
-// and while it holds it the host's inputs are refused.
+// frusta_world_set_haptic) or a glove's thread. The world owns one port per hand slot,
+// for as long as it lives, so a driver holding one never dangles; the port is opened
+// to each hand that takes the slot and closed when the hand goes. A driver writes the
+// hand's haptic input to the port and reads the hand's device feed from it; it never
+// sees the world. One driver at a time: a glove claims the port, and while it holds it
+// the host's inputs are refused.
 //
-// Threads: set_input from any one thread per port (its driver); read_feed from one
-// device thread; claim_for_device / release_device from the host; the stepping
-// thread takes the input and publishes the feed. No call waits for another.
+// Threads: set_input from any one thread per port (its driver; a driver of a hand
+// already gone may still be in it); read_feed from one device thread; open / close /
+// idle / claim_for_device / release_device from the host; the stepping thread takes
+// the input and publishes the feed. No call waits for another.
 #pragma once
 
 #include <atomic>
@@ -44,16 +47,29 @@ class HandPort {
  public:
   enum class Driver : uint8_t { kHost, kDevice };
 
-  // hand: the hand's index in its world (for messages); rate_hz: the world's step
-  // rate, which a device paces its commands by
+  // hand: the hand slot in its world (for messages); rate_hz: the world's step rate,
+  // which a device paces its commands by. Closed until open().
   HandPort(int32_t hand, double rate_hz);
   HandPort(const HandPort&) = delete;
   HandPort& operator=(const HandPort&) = delete;
 
-  // The driver: the newest input, which the world's next step uses. The one rule for a
-  // hand's inputs (check_hand_state) is checked here, and what passes is used; the
-  // host (kHost) is refused with FRUSTA_ERROR_WRONG_STATE while a device drives the hand.
-  frusta_result set_input(const HandState& state, Driver from);
+  // Host: give the port to the hand whose ids carry `generation` (not 0), with no input
+  // and no feed yet. Only while nothing else uses the port: closed, idle(), and no step
+  // solving a hand through it.
+  void open(uint32_t generation);
+  // Host: the hand goes; inputs naming it are refused from now on.
+  void close();
+  // Host: whether no driver is inside set_input (one of a hand just closed may be).
+  bool idle() const { return writers_.load(std::memory_order_seq_cst) == 0; }
+  // The open hand's generation; 0 when closed.
+  uint32_t generation() const { return generation_.load(std::memory_order_acquire); }
+
+  // The driver of the hand `generation` names: the newest input, which the world's next
+  // step uses. FRUSTA_ERROR_STALE_ID when that hand is no longer the port's. The one
+  // rule for a hand's inputs (check_hand_state) is checked here, and what passes is
+  // used; the host (kHost) is refused with FRUSTA_ERROR_WRONG_STATE while a device
+  // drives the hand.
+  frusta_result set_input(const HandState& state, Driver from, uint32_t generation);
   // One device thread: the newest feed, unchanged until its next call.
   const DeviceFeed& read_feed() { return feed_.read(); }
   double rate_hz() const { return rate_hz_; }
@@ -71,9 +87,17 @@ class HandPort {
   void publish_feed(const DeviceFeed& feed);
 
  private:
+  // set_input once the driver is counted in and the hand is the port's
+  frusta_result write_input(const HandState& state, Driver from);
+
   TripleBuffer<TimedInput> input_;
   TripleBuffer<DeviceFeed> feed_;
   std::atomic<bool> device_{false};
+  // a driver counts itself in, then checks the generation; the host closes, then checks
+  // the count (both sequentially consistent): either the driver sees the port closed,
+  // or the host sees the driver in, and keeps the port until it has left
+  std::atomic<uint32_t> generation_{0};
+  std::atomic<int32_t> writers_{0};
   int32_t hand_;
   double rate_hz_;
 };

@@ -8,16 +8,22 @@
 namespace frusta {
 
 HandPipeline::HandPipeline(const HandModel& model, const SolverParams& params,
-                           int32_t max_contacts, int32_t max_objects, int32_t index,
-                           double rate_hz)
+                           int32_t max_contacts, int32_t max_objects, int32_t slot,
+                           HandPort& port)
     : solver_(model, params),
-      port_(index, rate_hz),
+      slot_(slot),
+      port_(port),
       forces_(max_contacts),
       reactions_(static_cast<size_t>(max_objects)),
       ignored_(static_cast<size_t>(max_objects), 0) {
   objects_.reserve(static_cast<size_t>(max_objects));
   object_slot_.reserve(static_cast<size_t>(max_objects));
   materials_.reserve(static_cast<size_t>(max_objects));
+  for (HandSnapshot& snap : snapshots_) {
+    snap.model = &solver_.model();
+    snap.contacts.resize(static_cast<size_t>(max_contacts));
+    snap.forces.resize(static_cast<size_t>(max_contacts));
+  }
 }
 
 void HandPipeline::forget(int32_t slot) {
@@ -60,6 +66,7 @@ bool HandPipeline::step(const HandStepContext& context, SceneObjects& scene, Han
   snap.haptic = accepted_;
   snap.graphic = solver_.graphic();
   snap.stats = stats;
+  snap.ignored_objects = ignored_count_;
   snap.solved = solver_.started();
   const std::vector<SolverContact>& contacts = solver_.contacts();
   snap.contact_count = static_cast<int32_t>(contacts.size());
@@ -91,7 +98,7 @@ bool HandPipeline::step(const HandStepContext& context, SceneObjects& scene, Han
   return placed;
 }
 
-void HandPipeline::update_ignored(const SceneObjects& scene) {
+void HandPipeline::update_ignored(SceneObjects& scene) {
   const std::vector<SolverObject>& active = scene.active();
   const std::vector<int32_t>& active_slot = scene.active_slot();
   bool changed = false;
@@ -103,6 +110,7 @@ void HandPipeline::update_ignored(const SceneObjects& scene) {
     if (now == ignored) continue;
     ignored_count_ += now ? 1 : -1;
     ignored = now;
+    scene.set_ignored(slot, slot_, now != 0);
     changed = true;
   }
   if (ignored_count_ == 0 || (!changed && !scene.moved())) return;

@@ -2,11 +2,15 @@
 // One hand of a world, each step: take its driver's input from the port (played one
 // period late and interpolated on the world's own thread), solve the graphic hand,
 // compute the contact forces and device outputs, add the hand's reactions to the
-// objects, fill the hand's snapshot and publish its device feed.
+// objects, fill the hand's snapshot and publish its device feed. Everything it needs,
+// its snapshots included, is allocated when it is built (on the host's thread, when the
+// hand is added).
 //
-// Threads: the stepping thread, but port() (its driver's side) and the constructor.
+// Threads: the stepping thread, but the constructor (the host's); the host reads a
+// snapshot once the step that filled it is published.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -31,10 +35,14 @@ struct HandStepContext {
 
 class HandPipeline {
  public:
+  // slot: the hand's in its world; port: that slot's, which outlives the pipeline
   HandPipeline(const HandModel& model, const SolverParams& params, int32_t max_contacts,
-               int32_t max_objects, int32_t index, double rate_hz);
+               int32_t max_objects, int32_t slot, HandPort& port);
 
-  HandPort& port() { return port_; }
+  // The snapshot the step fills for buffer 0..2 of the world's triple buffer
+  // (TripleBuffer::write_index): a reader holding one buffer reads this hand's part of
+  // it while the step fills another's.
+  HandSnapshot& snapshot(int buffer) { return snapshots_[static_cast<size_t>(buffer)]; }
 
   // One step against the present objects: fills snap, adds the hand's reactions to
   // objects, and returns false when the solver could not place the input (a hand that
@@ -46,12 +54,14 @@ class HandPipeline {
   void forget(int32_t slot);
 
  private:
-  // which placed objects this hand now sinks into, which ignored ones it has left, and
-  // the hand's object list without the ignored ones
-  void update_ignored(const SceneObjects& objects);
+  // which placed objects this hand now sinks into, which ignored ones it has left (each
+  // change told to the objects), and the hand's object list without the ignored ones
+  void update_ignored(SceneObjects& objects);
 
   HandSolver solver_;
-  HandPort port_;
+  int32_t slot_;
+  HandPort& port_;
+  std::array<HandSnapshot, 3> snapshots_;
   bool has_input_ = false;
   TimedInput previous_, newest_;  // the two last inputs taken
   HandState accepted_;            // the last haptic input the solver took

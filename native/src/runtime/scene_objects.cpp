@@ -14,28 +14,43 @@ SceneObjects::SceneObjects(int32_t capacity)
   active_material_.reserve(static_cast<size_t>(capacity));
 }
 
-void SceneObjects::apply(const ObjectCommand& c) {
+void SceneObjects::apply(const WorldCommand& c) {
   Slot& slot = slots_[static_cast<size_t>(c.slot)];
   switch (c.kind) {
-    case ObjectCommandKind::kAdd:
+    case CommandKind::kAddObject:
       placed_[static_cast<size_t>(c.slot)] = 1;
       slot.tree = c.tree;
       slot.generation = c.generation;
       slot.def = c.def;
+      slot.ignored_by = 0;
       break;
-    case ObjectCommandKind::kRemove:
+    case CommandKind::kRemoveObject:
       slot.tree = nullptr;
+      slot.ignored_by = 0;
       break;
-    case ObjectCommandKind::kPose:
+    case CommandKind::kObjectPose:
       placed_[static_cast<size_t>(c.slot)] = 1;
       slot.def.pose = c.def.pose;
       slot.def.linear_velocity = slot.def.angular_velocity = vec3(0.0);
       break;
-    case ObjectCommandKind::kDynamic:
+    case CommandKind::kObjectDynamic:
       slot.def.dynamic = c.def.dynamic;
       slot.def.linear_velocity = slot.def.angular_velocity = vec3(0.0);
       break;
+    case CommandKind::kAddHand:
+    case CommandKind::kRemoveHand:
+      break;  // the world's
   }
+}
+
+void SceneObjects::set_ignored(int32_t slot, int32_t hand, bool ignored) {
+  const uint64_t bit = uint64_t{1} << hand;
+  uint64_t& by = slots_[static_cast<size_t>(slot)].ignored_by;
+  by = ignored ? by | bit : by & ~bit;
+}
+
+void SceneObjects::forget_hand(int32_t hand) {
+  for (Slot& slot : slots_) slot.ignored_by &= ~(uint64_t{1} << hand);
 }
 
 void SceneObjects::rebuild_active() {
@@ -72,6 +87,7 @@ void SceneObjects::publish(std::vector<ObjectSnapshot>& snapshot) const {
     o.linear_velocity = slot.def.linear_velocity;
     o.angular_velocity = slot.def.angular_velocity;
     o.reaction = slot.reaction;
+    o.ignored_by = slot.ignored_by;
   }
 }
 

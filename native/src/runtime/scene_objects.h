@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "forces/device_outputs.h"
-#include "runtime/object_command.h"
+#include "runtime/world_command.h"
 #include "runtime/world_snapshot.h"
 #include "solver/hand_solver.h"
 
@@ -21,8 +21,8 @@ class SceneObjects {
  public:
   explicit SceneObjects(int32_t capacity);
 
-  // One queued command, as the host side made it.
-  void apply(const ObjectCommand& command);
+  // One queued object command, as the host side made it.
+  void apply(const WorldCommand& command);
   // The present objects again, after commands or motion changed them.
   void rebuild_active();
 
@@ -34,6 +34,11 @@ class SceneObjects {
   bool placed(int32_t slot) const { return placed_[static_cast<size_t>(slot)] != 0; }
   // Whether the present list was rebuilt since the last end_step().
   bool moved() const { return moved_; }
+
+  // Which hands ignore the object in `slot` (hand_pipeline.h), as each hand finds it
+  // inside itself or leaves it; a removed hand ignores nothing.
+  void set_ignored(int32_t slot, int32_t hand, bool ignored);
+  void forget_hand(int32_t hand);
 
   // The hands' reactions: cleared at each step's start, summed as hands are solved.
   void clear_reactions();
@@ -50,6 +55,7 @@ class SceneObjects {
     uint32_t generation = 0;
     ObjectDef def;          // pose and velocities as the world moves it
     ObjectWrench reaction;  // this step's, from every hand
+    uint64_t ignored_by = 0;  // bit h: the hand in slot h
   };
 
   std::vector<Slot> slots_;

@@ -18,32 +18,26 @@ constexpr double kStepBudget = 0.7;
 
 World::World(const WorldDef& def)
     : def_(def),
-      host_objects_(def.max_objects, def.command_capacity),
-      scene_objects_(def.max_objects) {
+      commands_(def.command_capacity),
+      host_objects_(def.max_objects, commands_),
+      host_hands_(def, commands_),
+      scene_objects_(def.max_objects),
+      hands_(static_cast<size_t>(def.max_hands), nullptr),
+      hand_generation_(static_cast<size_t>(def.max_hands), 0) {
+  present_hands_.reserve(static_cast<size_t>(def.max_hands));
   WorldSnapshot prototype;
+  prototype.hands.resize(static_cast<size_t>(def.max_hands));
   prototype.objects.resize(static_cast<size_t>(def.max_objects));
   output_.reset(prototype);
 }
 
 World::~World() { stop(); }
 
-frusta_result World::add_hand(const HandModel& model, int32_t* out_hand) {
-  if (running() || step_ > 0)
-    return fail(FRUSTA_ERROR_WRONG_STATE, "hands are added before the world's first step");
-  if (frusta_result r = HandSolver::check_params(def_.solver, model)) return r;
-  hands_.push_back(std::make_unique<HandPipeline>(model, def_.solver, def_.max_contacts_per_hand,
-                                                  def_.max_objects, hand_count(), def_.rate_hz));
-  WorldSnapshot prototype;
-  prototype.hands.resize(hands_.size());
-  for (HandSnapshot& h : prototype.hands) {
-    h.contacts.resize(static_cast<size_t>(def_.max_contacts_per_hand));
-    h.forces.resize(static_cast<size_t>(def_.max_contacts_per_hand));
-  }
-  prototype.objects.resize(static_cast<size_t>(def_.max_objects));
-  output_.reset(prototype);
-  *out_hand = static_cast<int32_t>(hands_.size()) - 1;
-  return FRUSTA_OK;
+frusta_result World::add_hand(const HandModel& model, HandHandle* out) {
+  return host_hands_.add(model, out);
 }
+
+frusta_result World::remove_hand(HandHandle hand) { return host_hands_.remove(hand); }
 
 frusta_result World::add_object(std::shared_ptr<const TreeFile> tree, const ObjectDef& def,
                                 ObjectHandle* out) {
@@ -67,10 +61,11 @@ frusta_result World::set_object_dynamic(ObjectHandle object, bool dynamic) {
   return host_objects_.set_dynamic(object, dynamic);
 }
 
-frusta_result World::set_haptic(int32_t hand, const HandState& haptic) {
-  if (hand < 0 || hand >= hand_count())
-    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "hand is %d, the world has %d", hand, hand_count());
-  return hands_[static_cast<size_t>(hand)]->port().set_input(haptic, HandPort::Driver::kHost);
+frusta_result World::set_haptic(HandHandle hand, const HandState& haptic) {
+  if (hand.slot < 0 || hand.slot >= def_.max_hands)
+    return fail(FRUSTA_ERROR_STALE_ID, "hand {slot=%d} names no hand of this world (it has %d hand slots)",
+                hand.slot, def_.max_hands);
+  return host_hands_.port(hand.slot).set_input(haptic, HandPort::Driver::kHost, hand.generation);
 }
 
 frusta_result World::step() {
@@ -91,22 +86,45 @@ void World::stop() { thread_.stop(); }
 
 const WorldSnapshot& World::read() {
   host_read_ns_.store(steady_ns(), std::memory_order_relaxed);
-  host_objects_.release_retired();
-  return output_.read();
+  const WorldSnapshot& latest = output_.read();
+  // what no step reaches any more, and no snapshot from now on shows
+  host_objects_.release(latest.commands_applied);
+  host_hands_.release(latest.commands_applied);
+  return latest;
 }
 
 void World::apply_commands() {
-  ObjectCommand c;
-  uint64_t applied = 0;
-  while (host_objects_.commands().pop(c)) {
-    scene_objects_.apply(c);
-    if (c.kind == ObjectCommandKind::kRemove)
-      for (auto& hand : hands_) hand->forget(c.slot);
-    ++applied;
+  WorldCommand c;
+  bool objects_changed = false, hands_changed = false;
+  while (commands_.pop(c)) {
+    ++applied_;
+    const size_t slot = static_cast<size_t>(c.slot);
+    switch (c.kind) {
+      case CommandKind::kAddHand:
+        hands_[slot] = c.hand;
+        hand_generation_[slot] = c.generation;
+        hands_changed = true;
+        break;
+      case CommandKind::kRemoveHand:
+        hands_[slot] = nullptr;
+        scene_objects_.forget_hand(c.slot);
+        hands_changed = true;
+        break;
+      case CommandKind::kRemoveObject:
+        for (HandPipeline* hand : hands_)
+          if (hand) hand->forget(c.slot);
+        [[fallthrough]];
+      default:
+        scene_objects_.apply(c);
+        objects_changed = true;
+        break;
+    }
   }
-  if (applied == 0) return;
-  scene_objects_.rebuild_active();
-  host_objects_.mark_applied(applied);
+  if (objects_changed) scene_objects_.rebuild_active();
+  if (!hands_changed) return;
+  present_hands_.clear();  // within the capacity reserved up front
+  for (size_t slot = 0; slot < hands_.size(); ++slot)
+    if (hands_[slot]) present_hands_.push_back(static_cast<int32_t>(slot));
 }
 
 void World::step_once(double dt, bool paced, int64_t tick_ns) {
@@ -121,18 +139,27 @@ void World::step_once(double dt, bool paced, int64_t tick_ns) {
   context.device_limits = def_.device_limits;
   context.max_contacts = def_.max_contacts_per_hand;
   const int64_t host_read_ns = host_read_ns_.load(std::memory_order_relaxed);
-  for (size_t h = 0; h < hands_.size(); ++h) {
+  // each hand fills its own snapshot for this buffer; the slots say which are there
+  const int buffer = output_.write_index();
+  for (HandSlot& slot : out.hands) slot = HandSlot{};
+  const size_t present = present_hands_.size();
+  for (size_t h = 0; h < present; ++h) {
+    const size_t slot = static_cast<size_t>(present_hands_[h]);
+    HandPipeline& hand = *hands_[slot];
+    HandSnapshot& snap = hand.snapshot(buffer);
     // on the own thread each hand may take its share of most of a period, so a hand
     // caught in a tangle of contacts lags for a step instead of stalling the thread
     context.deadline =
         paced ? start + std::chrono::duration_cast<HandSolver::Clock::duration>(std::chrono::duration<double>(
-                            kStepBudget * dt * static_cast<double>(h + 1) / static_cast<double>(hands_.size())))
+                            kStepBudget * dt * static_cast<double>(h + 1) / static_cast<double>(present)))
               : HandSolver::Clock::time_point::max();
-    if (!hands_[h]->step(context, scene_objects_, out.hands[h])) ++rejected_;
-    hands_[h]->publish_feed(out.hands[h], step_ + 1, host_read_ns);
+    if (!hand.step(context, scene_objects_, snap)) ++rejected_;
+    hand.publish_feed(snap, step_ + 1, host_read_ns);
+    out.hands[slot] = HandSlot{true, hand_generation_[slot], &snap};
   }
   scene_objects_.publish(out.objects);
   scene_objects_.end_step(def_.gravity, dt);
+  out.commands_applied = applied_;
   out.step = ++step_;
   out.time = time_ += dt;
   out.rejected_inputs = rejected_;

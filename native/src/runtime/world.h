@@ -2,21 +2,24 @@
 // A world: hands, objects and the step that turns haptic hands into graphic hands,
 // contact forces, what each device receives and what each object receives. World
 // puts its parts together:
-//  - host_objects.h: the host's side of the objects (ids, trees, queued commands),
-//    which take effect at the next step boundary through a lock-free queue;
+//  - host_commands.h: the one lock-free queue of the host's commands, which take
+//    effect at the next step boundary;
+//  - host_objects.h and host_hands.h: the host's side of the objects (ids, trees) and
+//    of the hands (ids, their pipelines, and a port per hand slot);
 //  - scene_objects.h: the stepping side (slots, the present list, reactions) and
 //    object_dynamics.h, how dynamic objects move;
 //  - hand_pipeline.h: per hand, input -> solver -> forces -> device outputs, with its
-//    port (port/hand_port.h) for what drives it;
+//    port (port/hand_port.h) for what drives it; hands come and go while the world
+//    steps, each built and freed on the host's thread;
 //  - world_snapshot.h: what a step publishes, through a triple buffer the host reads
 //    without locks and without ever seeing a torn state;
 //  - step_thread.h: the world's own thread.
 // The host and the stepping thread never wait for each other. A step allocates
 // nothing once the world is built.
 //
-// Threads: the host thread calls add_object / remove_object / set_object_pose / read;
-// one stepping thread (the host's own loop, or the world's 1 kHz thread) calls step();
-// any one thread per hand calls set_haptic.
+// Threads: the host thread calls add_hand / remove_hand / add_object / remove_object /
+// set_object_pose / read; one stepping thread (the host's own loop, or the world's
+// 1 kHz thread) calls step(); any one thread per hand calls set_haptic.
 #pragma once
 
 #include <atomic>
@@ -28,6 +31,8 @@
 #include "core/triple_buffer.h"
 #include "port/hand_port.h"
 #include "runtime/hand_pipeline.h"
+#include "runtime/host_commands.h"
+#include "runtime/host_hands.h"
 #include "runtime/host_objects.h"
 #include "runtime/scene_objects.h"
 #include "runtime/step_histogram.h"
@@ -44,9 +49,21 @@ class World {
   World(const World&) = delete;
   World& operator=(const World&) = delete;
 
-  // Before the first step only (the stepping thread does not expect new hands). The
-  // world's solver settings are checked against the hand here.
-  frusta_result add_hand(const HandModel& model, int32_t* out_hand);
+  // Host thread, at any time. Queued like an object: the hand is solved from the next
+  // step on, and its port takes inputs at once. Everything it needs is allocated here.
+  // The world's solver settings are checked against the hand here.
+  // FRUSTA_ERROR_CAPACITY when max_hands hands are present or still being let go of, or
+  // the queue is full.
+  frusta_result add_hand(const HandModel& model, HandHandle* out);
+  // Host thread. Queued: the handle is refused at once by the calls that change the
+  // world (set_haptic included); read() shows the hand until a step has applied the
+  // removal. FRUSTA_ERROR_WRONG_STATE while a device drives the hand. The hand's memory
+  // is freed on the host's thread once read() has returned a step without it.
+  frusta_result remove_hand(HandHandle hand);
+  // Whether a handle names a hand (any thread) or an object (host thread) added and not
+  // removed.
+  bool hand_is_live(HandHandle hand) const { return host_hands_.is_live(hand); }
+  bool object_is_live(ObjectHandle object) const { return host_objects_.is_live(object); }
 
   // Host thread. Queued; applied at the next step boundary. The tree stays alive as
   // long as the world holds it (and is released on the host thread, never in a step).
@@ -68,7 +85,8 @@ class World {
   // none in the next) moves the hand smoothly instead of in jerks that shake a held
   // object loose. step() from the host takes the newest input as it is (the host
   // paces both).
-  frusta_result set_haptic(int32_t hand, const HandState& haptic);
+  // FRUSTA_ERROR_STALE_ID for a hand removed (even while a removal is under way).
+  frusta_result set_haptic(HandHandle hand, const HandState& haptic);
 
   // The stepping thread: apply queued commands, solve every hand, publish a snapshot.
   // From the host's loop only while the world's own thread is not running.
@@ -83,14 +101,16 @@ class World {
   bool running() const { return thread_.running(); }
   ~World();
 
-  // The host thread: the newest snapshot, unchanged until the next read().
+  // The host thread: the newest snapshot, unchanged until the next read(), which may
+  // free what the previous one showed.
   const WorldSnapshot& read();
 
-  int32_t hand_count() const { return static_cast<int32_t>(hands_.size()); }
+  int32_t max_hands() const { return def_.max_hands; }
   double rate_hz() const { return def_.rate_hz; }
 
-  // The port of `hand` (< hand_count()), for what drives it: the host or a glove.
-  HandPort& port(int32_t hand) { return hands_[static_cast<size_t>(hand)]->port(); }
+  // The port of a hand slot (0..max_hands-1), for what drives its hand: the host or a
+  // glove. It lives as long as the world.
+  HandPort& port(int32_t slot) { return host_hands_.port(slot); }
 
  private:
   // on the own thread `paced`: inputs are played one period before the tick (steady
@@ -100,9 +120,14 @@ class World {
   void apply_commands();
 
   WorldDef def_;
-  std::vector<std::unique_ptr<HandPipeline>> hands_;
-  HostObjects host_objects_;    // the host's side
+  HostCommands commands_;       // the host's side
+  HostObjects host_objects_;
+  HostHands host_hands_;
   SceneObjects scene_objects_;  // the stepping thread's
+  std::vector<HandPipeline*> hands_;          // by slot: the hand's pipeline, or null
+  std::vector<uint32_t> hand_generation_;     // by slot
+  std::vector<int32_t> present_hands_;        // the slots of hands_ that are not null
+  uint64_t applied_ = 0;                      // commands applied
   StepHistogram histogram_;
   uint64_t step_ = 0;
   double time_ = 0.0;

@@ -87,6 +87,8 @@ frusta_result check_world_def(const WorldDef& def) {
   if (frusta_result r = check_bounded(glm::value_ptr(def.gravity), 3, 1e3, "gravity")) return r;
   if (def.max_objects < 1 || def.max_objects > 65535)
     return fail(FRUSTA_ERROR_OUT_OF_RANGE, "max_objects is %d, must be 1..65535", def.max_objects);
+  if (def.max_hands < 1 || def.max_hands > kMaxHands)
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "max_hands is %d, must be 1..%d", def.max_hands, kMaxHands);
   if (def.max_contacts_per_hand < 0 || def.max_contacts_per_hand > 65536)
     return fail(FRUSTA_ERROR_OUT_OF_RANGE, "max_contacts_per_hand is %d, must be 0..65536",
                 def.max_contacts_per_hand);

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// What a world and its objects are made from (WorldDef, ObjectDef), the handle of an
-// object, and the one check of each, used where they enter (the C ABI and World's
+// What a world and its objects are made from (WorldDef, ObjectDef), the handles of an
+// object and a hand, and the one check of each, used where they enter (the C ABI and World's
 // entry points).
 #pragma once
 
@@ -22,6 +22,10 @@ struct WorldDef {
   double rate_hz = 1000.0;  // the own thread's rate, and so dynamic objects' time step
   double spin_us = 200.0;   // the own thread spins this long before each tick
   int32_t max_objects = 64;
+  // hand slots: a hand's ports and slot headers are made with the world, the rest of
+  // it when the hand is added. At most kMaxHands: a snapshot's object keeps which
+  // hands ignore it as bits of one word
+  int32_t max_hands = 8;
   int32_t max_contacts_per_hand = 256;  // reported per snapshot; more are counted, not kept
   int32_t command_capacity = 256;
 };
@@ -41,8 +45,16 @@ struct ObjectDef {
   double angular_damping = 0.0;  // 1/s
 };
 
+constexpr int32_t kMaxHands = 64;
+
 // Names an object slot; a removed object's handle turns stale through the generation.
 struct ObjectHandle {
+  int32_t slot = -1;
+  uint32_t generation = 0;
+};
+
+// Names a hand slot, the same way.
+struct HandHandle {
   int32_t slot = -1;
   uint32_t generation = 0;
 };

@@ -52,6 +52,26 @@ TEST(IdPool, AnIdOfAFreedSlotStaysStaleThroughEveryReuse) {
   }
 }
 
+// A slot whose old occupant is still being let go of: its ids are stale at once, and
+// the slot is handed out again only once reclaimed.
+TEST(IdPool, ARetiredSlotIsStaleAtOnceAndTakenAgainOnlyOnceReclaimed) {
+  IdPool pool(2);
+  int32_t a, b, c;
+  uint16_t ga, gb, gc;
+  ASSERT_TRUE(pool.acquire(&a, &ga));
+  ASSERT_TRUE(pool.acquire(&b, &gb));
+  pool.retire(a);
+  EXPECT_FALSE(pool.is_live(a, ga));
+  EXPECT_FALSE(pool.is_live(a, pool.generation(a))) << "not taken";
+  EXPECT_FALSE(pool.acquire(&c, &gc)) << "the retired slot is not free yet";
+  pool.reclaim(a);
+  ASSERT_TRUE(pool.acquire(&c, &gc));
+  EXPECT_EQ(c, a);
+  EXPECT_NE(gc, ga);
+  EXPECT_TRUE(pool.is_live(c, gc));
+  EXPECT_FALSE(pool.is_live(a, ga));
+}
+
 TEST(IdPool, NothingOutsideTheSlotsIsLive) {
   IdPool pool(2);
   int32_t slot;

@@ -60,7 +60,6 @@ struct Scene {
     const double half = 0.5 * scenes::test_box_spec("press_box").size.x;
     ObjectDef box;
     box.pose.position = scenes::index_press_box_centre(model, half, 0.002);
-    int32_t hand = -1;
     EXPECT_EQ(world.add_hand(model, &hand), FRUSTA_OK);
     ObjectHandle handle;
     EXPECT_EQ(world.add_object(scenes::test_box("press_box"), box, &handle), FRUSTA_OK);
@@ -68,6 +67,7 @@ struct Scene {
   }
   ~Scene() { world.stop(); }
   World world;
+  HandHandle hand;
 };
 
 // LucidGloves firmware: five curls a line; the index's is what the test sets.
@@ -137,10 +137,16 @@ std::array<int32_t, 5> last_brakes(const SimulatedGlove& glove) {
   return units;
 }
 
-// The index's first flexion as the host sees the glove's input.
-double index_flexion(World& world) {
-  return world.read().hands[0].haptic.angles[kIndexFlexion1];
+// The world's first hand as the host sees it; an unsolved one before a step applied
+// its addition.
+const HandSnapshot& first_hand(World& world) {
+  static const HandSnapshot none;
+  const HandSlot& slot = world.read().hands[0];
+  return slot.present ? *slot.hand : none;
 }
+
+// The index's first flexion as the host sees the glove's input.
+double index_flexion(World& world) { return first_hand(world).haptic.angles[kIndexFlexion1]; }
 
 // The index's first flexion for an OpenGloves curl reading.
 double curl_flexion(int64_t curl) {
@@ -161,7 +167,7 @@ bool braking(const DeviceLinkStatus& s) {
 
 // The hand as the host sees it, for a failure's message.
 std::string describe_hand(World& world) {
-  const HandSnapshot& h = world.read().hands[0];
+  const HandSnapshot& h = first_hand(world);
   std::ostringstream out;
   out << "the hand: solved " << h.solved << ", index flexion haptic " << h.haptic.angles[kIndexFlexion1]
       << ", graphic " << h.graphic.angles[kIndexFlexion1] << ", contacts " << h.contact_count
@@ -174,7 +180,7 @@ std::string describe_hand(World& world) {
 // into it, so this comes before any curl.
 testing::AssertionResult solved_open(World& world) {
   if (wait_until(world, [&] {
-        const HandSnapshot& hand = world.read().hands[0];
+        const HandSnapshot& hand = first_hand(world);
         return hand.solved && hand.haptic.angles[kIndexFlexion1] == 0.0;
       }))
     return testing::AssertionSuccess();
@@ -189,7 +195,7 @@ testing::AssertionResult solved_open(World& world) {
 // press is steady only once the hand has caught up.
 testing::AssertionResult curled_in(World& world, double flexion, double tolerance) {
   if (wait_until(world, [&] {
-        const HandSnapshot& hand = world.read().hands[0];
+        const HandSnapshot& hand = first_hand(world);
         return std::fabs(hand.haptic.angles[kIndexFlexion1] - flexion) <= tolerance && !hand.stats.lagging &&
                hand.contact_count > 0;
       }))
@@ -606,7 +612,7 @@ TEST(deviceLink, FrozenGloveStoppedEngineAndAbsentHostReleaseTheGlove) {
 TEST(deviceLink, NoDeviceNoThread) {
   const int base = thread_count();
   World world(WorldDef{});
-  int32_t hand = -1;
+  HandHandle hand;
   ASSERT_EQ(world.add_hand(make_hand_model(default_hand_def()), &hand), FRUSTA_OK);
   world.step();
   EXPECT_EQ(thread_count(), base) << "a world without its own thread or a glove runs none";

@@ -123,12 +123,12 @@ TEST(hidStream, AVirtualHidGloveHandshakesAndReadsCommandsBack) {
   ASSERT_TRUE(uhid.created()) << std::strerror(errno);
 
   World world{WorldDef{}};
-  int32_t hand = -1;
+  HandHandle hand;
   ASSERT_EQ(world.add_hand(make_hand_model(default_hand_def()), &hand), FRUSTA_OK);
   ASSERT_EQ(world.start(), FRUSTA_OK);
   DeviceLinkDef def;
   def.host_timeout_s = 0.0;
-  DeviceLink link(world.port(hand), def, std::make_unique<HidStream>(kVendor, kProduct, "FR-0042"),
+  DeviceLink link(world.port(hand.slot), def, std::make_unique<HidStream>(kVendor, kProduct, "FR-0042"),
                   std::make_unique<FrustaProtocol>());
   // the kernel adds the hidraw node in its own time: open once it is there (the
   // deadline only turns a hang into a failure)

@@ -79,7 +79,7 @@ TEST(Soak, TwoHandsAtOneKilohertzWhileObjectsComeAndGo) {
   World world(def);
   HandDef left_def = default_hand_def();
   left_def.side = FRUSTA_HAND_LEFT;
-  int32_t hands[2];
+  HandHandle hands[2];
   ASSERT_EQ(world.add_hand(make_hand_model(default_hand_def()), &hands[0]), FRUSTA_OK);
   ASSERT_EQ(world.add_hand(make_hand_model(left_def), &hands[1]), FRUSTA_OK);
 
@@ -212,8 +212,10 @@ TEST(Soak, TwoHandsAtOneKilohertzWhileObjectsComeAndGo) {
     longest_stall_ms = std::max(
         longest_stall_ms, std::chrono::duration<double, std::milli>(now - last_advance).count());
     last_step = s.step;
-    check(s.hands.size() == 2, "two hands in the snapshot");
-    for (const HandSnapshot& hand : s.hands) {
+    check(s.step == 0 || (s.hand(hands[0]) && s.hand(hands[1])), "two hands in the snapshot");
+    for (const HandSlot& slot : s.hands) {
+      if (!slot.present) continue;
+      const HandSnapshot& hand = *slot.hand;
       check(finite(hand.graphic) && finite(hand.haptic), "a finite hand");
       check(hand.contact_count >= 0, "a contact count");
       most_contacts = std::max(most_contacts, hand.contact_count);

@@ -31,8 +31,8 @@ HandPose pose_of(const HandModel& model, const HandState& state) {
   return pose;
 }
 
-int32_t add_hand(World& world, const HandModel& model) {
-  int32_t hand = -1;
+HandHandle add_hand(World& world, const HandModel& model) {
+  HandHandle hand;
   EXPECT_EQ(world.add_hand(model, &hand), FRUSTA_OK);
   return hand;
 }
@@ -58,7 +58,7 @@ TEST(WorldForces, FingertipPressedIntoABakedBoxFeelsStiffnessTimesDepth) {
   box.pose.position = centre;
   box.material.normal_stiffness = vec3(600.0);
   World world(WorldDef{});
-  const int32_t hand = add_hand(world, model);
+  const HandHandle hand = add_hand(world, model);
   ObjectHandle handle;
   ASSERT_EQ(world.add_object(scenes::test_box("fingertip_box"), box, &handle), FRUSTA_OK);
 
@@ -70,7 +70,7 @@ TEST(WorldForces, FingertipPressedIntoABakedBoxFeelsStiffnessTimesDepth) {
       world.step();
     }
     const WorldSnapshot& snap = world.read();
-    const HandSnapshot& h = snap.hands[static_cast<size_t>(hand)];
+    const HandSnapshot& h = *snap.hand(hand);
     ASSERT_GT(h.contact_count, 2) << "the tip rests on several leaves";
     vec3 on_tip(0.0), friction(0.0);
     double gap = 0.0;
@@ -97,7 +97,7 @@ TEST(WorldForces, WhatTheHandsFeelBalancesWhatTheObjectsReceive) {
   const scenes::HandScenario grasp = scenes::ball_grasp(ball);
   World world(WorldDef{});
   const HandModel right = right_hand();
-  const int32_t first = add_hand(world, right), second = add_hand(world, right);
+  const HandHandle first = add_hand(world, right), second = add_hand(world, right);
   ObjectHandle a, b;
   ASSERT_EQ(world.add_object(ball, grasp.objects[0].pose, &a), FRUSTA_OK);
   RigidPose shifted = grasp.objects[0].pose;
@@ -112,7 +112,8 @@ TEST(WorldForces, WhatTheHandsFeelBalancesWhatTheObjectsReceive) {
   }
   const WorldSnapshot& snap = world.read();
   vec3 force(0.0), torque(0.0);  // on the hands, torque about the origin
-  for (const HandSnapshot& h : snap.hands) {
+  for (HandHandle hand : {first, second}) {
+    const HandSnapshot& h = *snap.hand(hand);
     ASSERT_GT(h.force_stats.pressing, 3);
     for (int32_t i = 0; i < h.contact_count; ++i) {
       const ContactForce& c = h.forces[static_cast<size_t>(i)];
@@ -163,7 +164,7 @@ TEST(WorldForces, ABoxOnAnOpenPalmIsLiftedCarriedAndTippedOff) {
   WorldDef def;
   def.gravity = vec3(0.0, 0.0, -9.81);
   World world(def);
-  const int32_t hand = add_hand(world, model);
+  const HandHandle hand = add_hand(world, model);
   // palm up: the hand turned over about its long axis, fingers curled a little
   const glm::dquat up = scenes::about(vec3(1, 0, 0), glm::pi<double>());
   HandState palm_up = scenes::open_hand(vec3(0.0), up);
@@ -219,7 +220,7 @@ TEST(WorldForces, ABoxOnAnOpenPalmIsLiftedCarriedAndTippedOff) {
   const ObjectSnapshot& dropped = world.read().objects[slot];
   EXPECT_LT(dropped.pose.position.z, held.pose.position.z - 0.05);
   EXPECT_LT(dropped.linear_velocity.z, -1.0);
-  EXPECT_EQ(world.read().hands[0].contact_count, 0);
+  EXPECT_EQ(world.read().hand(hand)->contact_count, 0);
 }
 
 // A ball pinched between thumb and index pads, `pressed` deep each, handed to gravity
@@ -236,7 +237,7 @@ PinchCarry carry_pinched_ball(double mass, double friction, double pressed) {
   WorldDef def;
   def.gravity = vec3(0.0, 0.0, -9.81);
   World world(def);
-  const int32_t hand = add_hand(world, right_hand());
+  const HandHandle hand = add_hand(world, right_hand());
   ObjectDef object;
   object.pose = pinch.objects[0].pose;
   object.mass = mass;

@@ -143,6 +143,19 @@ namespace Frusta.Binding
         Distance = 1,
     }
 
+    /// <summary>Which of a world hand's two hands a geometry call copies.</summary>
+    public enum FrustaHandKind
+    {
+        /// <summary>the displayed hand, outside every object</summary>
+        Graphic = 0,
+        /// <summary>
+        /// the input as the solver aims at it, angles clamped to
+        /// the limits: the glove's "ghost" hand, inside objects
+        /// where the user pushes
+        /// </summary>
+        Haptic = 1,
+    }
+
     /// <summary>What the glove's outputs are: bits of frusta_device_def.outputs and status.</summary>
     [Flags]
     public enum FrustaDeviceOutput
@@ -204,7 +217,7 @@ namespace Frusta.Binding
         /// <summary>major*1000000 + minor*1000 + patch; frusta_version() returns the library's.</summary>
         public const int Version = VersionMajor * 1000000 + VersionMinor * 1000 + VersionPatch;
         /// <summary>Bumped whenever a struct layout or a signature changes; see frusta_check_abi().</summary>
-        public const int AbiVersion = 3;
+        public const int AbiVersion = 4;
         /// <summary>Fingers per hand, thumb first (frusta_finger).</summary>
         public const int FingerCount = 5;
         /// <summary>Segments per finger, proximal to distal.</summary>

@@ -13,14 +13,14 @@ namespace Frusta.Binding
     [StructLayout(LayoutKind.Sequential)]
     public partial struct FrustaHandId : IEquatable<FrustaHandId>
     {
-        /// <summary>slot + 1 (a world's hand: its index in the world + 1); 0 is null</summary>
+        /// <summary>slot + 1 (a world's hand: its hand slot in the world + 1); 0 is null</summary>
         public int Index1;
         /// <summary>
         /// 0: standalone; else the owning world: slot + 1, and its
         /// generation's low byte
         /// </summary>
         public ushort World0;
-        /// <summary>bumped when the slot is reused (a world's hand: its world's)</summary>
+        /// <summary>bumped when the slot is reused</summary>
         public ushort Generation;
 
         /// <summary>The null handle (all zero).</summary>
@@ -261,7 +261,7 @@ namespace Frusta.Binding
     [StructLayout(LayoutKind.Sequential)]
     public partial struct FrustaDeviceId : IEquatable<FrustaDeviceId>
     {
-        /// <summary>the hand it drives + 1; 0 is null</summary>
+        /// <summary>the hand slot it drives + 1; 0 is null</summary>
         public int Index1;
         /// <summary>the owning world: slot + 1, and its generation's low byte</summary>
         public ushort World0;

@@ -72,7 +72,8 @@ namespace Frusta.Binding
 
         /// <summary>
         /// Destroy a standalone hand; its id and every copy of it become stale. A world's hand
-        /// is refused (FRUSTA_ERROR_STALE_ID): it lives as long as its world. Thread: host.
+        /// is refused (FRUSTA_ERROR_STALE_ID): frusta_destroy_world_hand destroys it.
+        /// Thread: host.
         /// </summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern FrustaResult frusta_destroy_hand(FrustaHandId hand);
@@ -303,14 +304,34 @@ namespace Frusta.Binding
         internal static extern int frusta_world_is_valid(FrustaWorldId world);
 
         /// <summary>
-        /// Create a hand in the world, built from def; *out_hand names it in every call on
-        /// the world's hands (frusta_world_set_haptic, frusta_world_get_hand, ...,
-        /// frusta_device_def.hand). It lives as long as the world. Only before the first
-        /// step: FRUSTA_ERROR_WRONG_STATE afterwards. The world's solver settings are checked
-        /// against the hand here. Thread: host.
+        /// Create a hand in the world, built from def, at any time (the world's own thread may
+        /// be running); *out_hand names it in every call on the world's hands
+        /// (frusta_world_set_haptic, frusta_world_get_hand, ..., frusta_device_def.hand).
+        /// Queued like an object: it takes haptic inputs at once and is solved from the next
+        /// step on; the frusta_world_get_* calls refuse it (FRUSTA_ERROR_STALE_ID) until
+        /// frusta_world_read has latched such a step. All the memory it needs is allocated
+        /// here, on the host thread. Its first input is placed outside every object (or, with
+        /// no free placement near, counted in rejected_inputs). The world's solver settings
+        /// are checked against the hand here. FRUSTA_ERROR_CAPACITY when max_hands hands are
+        /// present or still being let go of (see frusta_destroy_world_hand), or the command
+        /// queue is full (step the world). Thread: host.
         /// </summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern FrustaResult frusta_create_world_hand(FrustaWorldId world, FrustaHandDef* def, FrustaHandId* outHand);
+
+        /// <summary>
+        /// Destroy a hand of a world (queued; the id names its world). Its id turns stale at
+        /// once for the calls that change the world: frusta_world_set_haptic from an input
+        /// thread still feeding it gets FRUSTA_ERROR_STALE_ID. The frusta_world_get_* calls
+        /// report the latched step, in which the hand is present until a step has applied the
+        /// removal. A hand a glove drives is refused (FRUSTA_ERROR_WRONG_STATE) until
+        /// frusta_destroy_device closes the glove. The hand's memory is freed on the host
+        /// thread, never in a step, by the first frusta_world_read that latches a step which
+        /// applied the removal; its slot takes a new hand from then on. Thread: host (of the
+        /// hand's world).
+        /// </summary>
+        [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern FrustaResult frusta_destroy_world_hand(FrustaHandId hand);
 
         /// <summary>
         /// Set a world hand's haptic input (the glove): palm pose (metres, world frame) and
@@ -320,8 +341,9 @@ namespace Frusta.Binding
         /// quaternion norm in [0.5, 2] (normalised), |angle| &lt;= FRUSTA_MAX_JOINT_ANGLE
         /// (clamped into the hand's limits). What this call accepts the next step uses; what
         /// breaks the rule is refused here. Lock-free and allocation-free.
-        /// FRUSTA_ERROR_WRONG_STATE on a hand a glove drives (frusta_create_device).
-        /// Thread: input.
+        /// FRUSTA_ERROR_WRONG_STATE on a hand a glove drives (frusta_create_device);
+        /// FRUSTA_ERROR_STALE_ID from the moment the host destroys the hand, even while this
+        /// call runs on another thread. Thread: input.
         /// </summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern FrustaResult frusta_world_set_haptic(FrustaWorldId world, FrustaHandId hand, FrustaPose* palm, double* angles, int count);
@@ -329,8 +351,13 @@ namespace Frusta.Binding
         /// <summary>
         /// Create an object in the world with the tree's shape; queued, present from the next
         /// step. The world keeps the tree alive while it uses it, even if the tree's id is
-        /// destroyed. FRUSTA_ERROR_CAPACITY when max_objects are present or the command queue
-        /// is full (step the world). Thread: host.
+        /// destroyed. An object created where a graphic hand already is, overlapping it, is
+        /// ignored by that hand until they part: the hand passes through it, touches it
+        /// nowhere and pushes it with no force, rather than being trapped in it or flung out
+        /// of it (frusta_object_state.ignoring_hands, frusta_world_get_object_ignored_by and
+        /// frusta_world_hand.ignored_objects show it; move the hand out, or the object away,
+        /// to make it solid to the hand). FRUSTA_ERROR_CAPACITY when max_objects are present
+        /// or the command queue is full (step the world). Thread: host.
         /// </summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern FrustaResult frusta_create_object(FrustaWorldId world, FrustaTreeId tree, FrustaObjectDef* def, FrustaObjectId* outObject);
@@ -344,7 +371,11 @@ namespace Frusta.Binding
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern FrustaResult frusta_destroy_object(FrustaObjectId @object);
 
-        /// <summary>Put an object at a pose (metres, world frame), at rest (queued). Thread: host.</summary>
+        /// <summary>
+        /// Put an object at a pose (metres, world frame), at rest (queued). A hand it is put
+        /// into ignores it until they part, as for frusta_create_object; an object the
+        /// world's dynamics move into a hand is pushed by it as usual. Thread: host.
+        /// </summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern FrustaResult frusta_world_set_object_pose(FrustaWorldId world, FrustaObjectId @object, FrustaPose* pose);
 
@@ -385,13 +416,17 @@ namespace Frusta.Binding
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern FrustaResult frusta_world_read(FrustaWorldId world, FrustaWorldState* state);
 
-        /// <summary>One hand of the latched step (set out-&gt;struct_size first). Thread: host.</summary>
+        /// <summary>
+        /// One hand of the latched step (set out-&gt;struct_size first). FRUSTA_ERROR_STALE_ID
+        /// for a hand destroyed, or created after the latched step. Thread: host.
+        /// </summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern FrustaResult frusta_world_get_hand(FrustaWorldId world, FrustaHandId hand, FrustaWorldHand* @out);
 
         /// <summary>
         /// The contacts of one hand in the latched step (at most max_contacts_per_hand), by
-        /// the output-array rule (capacity 0 and out null ask for the count). Thread: host.
+        /// the output-array rule (capacity 0 and out null ask for the count); refused as
+        /// frusta_world_get_hand. Thread: host.
         /// </summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern FrustaResult frusta_world_get_contacts(FrustaWorldId world, FrustaHandId hand, FrustaWorldContact* @out, int capacity, int* outCount);
@@ -403,6 +438,36 @@ namespace Frusta.Binding
         /// </summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern FrustaResult frusta_world_get_object(FrustaWorldId world, FrustaObjectId @object, FrustaObjectState* @out);
+
+        /// <summary>
+        /// out_ignored = 1 if, in the latched step, the hand ignores the object (it was
+        /// created or moved into the hand and they have not parted since; see
+        /// frusta_create_object), else 0. Both must be in the latched step
+        /// (FRUSTA_ERROR_STALE_ID otherwise). Thread: host.
+        /// </summary>
+        [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern FrustaResult frusta_world_get_object_ignored_by(FrustaWorldId world, FrustaObjectId @object, FrustaHandId hand, int* outIgnored);
+
+        /// <summary>
+        /// The world geometry of one hand of the latched step (which: frusta_hand_kind), as
+        /// frusta_hand_get_segments gives a standalone hand's: FRUSTA_HAND_SEGMENT_COUNT
+        /// segments, finger-major (thumb first), proximal to distal, metres, by the
+        /// output-array rule; the last segment of each finger has its tip hemisphere at the
+        /// distal end. Worked out from the latched hand's pose and joint angles, exactly as a
+        /// standalone hand given them. FRUSTA_ERROR_WRONG_STATE while the hand has had no
+        /// input (frusta_world_hand.solved 0). Thread: host.
+        /// </summary>
+        [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern FrustaResult frusta_world_get_hand_segments(FrustaWorldId world, FrustaHandId hand, int which, FrustaSegment* @out, int capacity, int* outCount);
+
+        /// <summary>
+        /// The palm spheres of one hand of the latched step in world coordinates, as
+        /// frusta_hand_get_palm_spheres gives a standalone hand's, by the output-array rule
+        /// (capacity 0 and out null ask for the count); otherwise as
+        /// frusta_world_get_hand_segments. Thread: host.
+        /// </summary>
+        [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern FrustaResult frusta_world_get_hand_palm_spheres(FrustaWorldId world, FrustaHandId hand, int which, FrustaSphere* @out, int capacity, int* outCount);
 
         /// <summary>Defaults for frusta_create_device. Thread: any.</summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
@@ -419,8 +484,8 @@ namespace Frusta.Binding
         /// <summary>
         /// Open the glove at uri (UTF-8) to drive the world's hand def-&gt;hand, and start its
         /// thread. A glove absent at open is an error (FRUSTA_ERROR_IO, naming it), not a
-        /// retry; one glove per hand (FRUSTA_ERROR_WRONG_STATE); gloves drive the first 16
-        /// hands of a world. While open, frusta_world_set_haptic on that hand is refused: its
+        /// retry; one glove per hand (FRUSTA_ERROR_WRONG_STATE). While open,
+        /// frusta_world_set_haptic on that hand is refused, and so is destroying the hand: its
         /// palm comes from frusta_device_set_palm_pose unless the glove reports one.
         /// Thread: host.
         /// </summary>

@@ -362,10 +362,17 @@ namespace Frusta.Binding
         /// <summary>kept per hand per step, 0..65536; default 256</summary>
         public int MaxContactsPerHand;
         /// <summary>
-        /// queued object commands between steps, 1..2^20
-        /// (rounded up to a power of two); default 256
+        /// queued object and hand commands between steps,
+        /// 1..2^20 (rounded up to a power of two); default 256
         /// </summary>
         public int CommandCapacity;
+        /// <summary>
+        /// hand slots, 1..64; default 8. An empty slot costs a
+        /// few kilobytes and no step time
+        /// </summary>
+        public int MaxHands;
+        /// <summary>explicit padding</summary>
+        internal int reserved1;
         /// <summary>
         /// newtons, per finger; default 10
         /// </summary>
@@ -453,7 +460,7 @@ namespace Frusta.Binding
     {
         /// <summary>sizeof(frusta_world_state); set it before the call</summary>
         internal int struct_size;
-        /// <summary>hands in the world</summary>
+        /// <summary>hands present at the step</summary>
         public int HandCount;
         /// <summary>steps so far; 0 before the first</summary>
         public ulong Step;
@@ -523,6 +530,13 @@ namespace Frusta.Binding
         /// </summary>
         internal int infeasible;
         /// <summary>
+        /// objects put inside the hand that it passes through
+        /// until they part (see frusta_create_object)
+        /// </summary>
+        public int IgnoredObjects;
+        /// <summary>explicit padding</summary>
+        internal int reserved0;
+        /// <summary>
         /// on each distal segment, newtons
         /// </summary>
         /// <remarks>
@@ -585,6 +599,14 @@ namespace Frusta.Binding
         public Vector3d ReactionForce;
         /// <summary>about the pose position, newton-metres</summary>
         public Vector3d ReactionTorque;
+        /// <summary>
+        /// hands the object was put inside, which pass through
+        /// it until they part (frusta_world_get_object_ignored_by
+        /// names them)
+        /// </summary>
+        public int IgnoringHands;
+        /// <summary>explicit padding</summary>
+        internal int reserved0;
     }
 
     /// <summary>How a glove is opened; from frusta_default_device_def().</summary>
