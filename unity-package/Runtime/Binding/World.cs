@@ -11,6 +11,8 @@ namespace Frusta.Binding
     /// (<see cref="Start"/>) or step it yourself (<see cref="Step()"/>); the host never waits for
     /// the stepping thread: object commands are queued for the next step and results are
     /// published as snapshots that <see cref="Read"/> latches.
+    /// <para>Hands, like objects, come and go at any time: <see cref="CreateHand"/> and
+    /// <see cref="DestroyHand"/> are queued for the next step, while the own thread runs.</para>
     /// <para>Threads: the creating thread is the host (Unity's main thread) for every member
     /// unless its documentation says otherwise; <see cref="SetHaptic(FrustaHandId, in FrustaPose, ReadOnlySpan{double})"/> may come from one input
     /// thread per hand; <see cref="ReadSnapshot"/> from any thread. Dispose is safe twice and
@@ -21,7 +23,9 @@ namespace Frusta.Binding
     public sealed unsafe class World : IDisposable
     {
         readonly WorldHandle handle;
-        // frusta_world_read latches one step per world: reads from several threads take turns
+        // frusta_world_read latches one step per world: reads from several threads take turns,
+        // and with the calls that add and remove hands and objects (a read frees what the
+        // latched step no longer shows, on the native host's side)
         readonly object readGate = new object();
         readonly int maxContactsPerHand;
         volatile bool running;
@@ -42,6 +46,7 @@ namespace Frusta.Binding
             handle = new WorldHandle();
             handle.Create(def, Native.frusta_create_world, "frusta_create_world");
             maxContactsPerHand = def.MaxContactsPerHand;
+            MaxHands = def.MaxHands;
             RateHz = def.RateHz;
         }
 
@@ -59,34 +64,71 @@ namespace Frusta.Binding
         /// <summary>The stepping rate from the def, Hz; a step advances time by 1/RateHz seconds.</summary>
         public double RateHz { get; }
 
-        /// <summary>Hands created so far.</summary>
+        /// <summary>Hands created and not destroyed.</summary>
         public int HandCount => hands.Length;
 
-        /// <summary>The world's hands, in creation order (the order of <see cref="WorldSnapshot"/>'s hands).</summary>
+        /// <summary>Hand slots, from the def: at most this many hands at once.</summary>
+        public int MaxHands { get; }
+
+        /// <summary>The world's hands, created and not destroyed, in creation order (the order of
+        /// <see cref="WorldSnapshot"/>'s hands).</summary>
         public IReadOnlyList<FrustaHandId> Hands => hands;
 
         /// <summary>The most contacts a hand reports per step (the def's MaxContactsPerHand): a
         /// contact buffer this long is never too small.</summary>
         public int MaxContactsPerHand => maxContactsPerHand;
 
-        /// <summary>Create a hand in this world built from <paramref name="def"/>
-        /// (<c>frusta_create_world_hand</c>). Only before the first step; the hand lives as long as
-        /// the world.</summary>
+        /// <summary>Create a hand in this world built from <paramref name="def"/>, at any time, the own
+        /// thread running or not (<c>frusta_create_world_hand</c>): it takes <see cref="SetHaptic"/> at
+        /// once and is in the steps from the next one on (<see cref="GetHand"/> refuses it until a
+        /// <see cref="Read"/> latched such a step). Allocates (the hand's native memory, on this
+        /// thread): not a per-frame call.</summary>
         /// <param name="def">From <see cref="FrustaHandDef.Default"/>, then edited.</param>
         /// <returns>The hand's id, which every call on the world's hands takes.</returns>
-        /// <exception cref="FrustaException"><see cref="FrustaResult.WrongState"/> after the first step;
-        /// a def value out of range.</exception>
+        /// <exception cref="FrustaException"><see cref="FrustaResult.Capacity"/> when <see cref="MaxHands"/>
+        /// hands are present or still being let go of (see <see cref="DestroyHand"/>), or the command
+        /// queue is full; a def value out of range.</exception>
         public FrustaHandId CreateHand(in FrustaHandDef def)
         {
             FrustaHandId hand;
             using (new HandleUse(handle))
-            fixed (FrustaHandDef* d = &def)
-                Errors.Check(Native.frusta_create_world_hand(handle.Id, d, &hand), "frusta_create_world_hand");
-            var grown = new FrustaHandId[hands.Length + 1];
-            Array.Copy(hands, grown, hands.Length);
-            grown[hands.Length] = hand;
-            hands = grown;
+            lock (readGate)
+            {
+                fixed (FrustaHandDef* d = &def)
+                    Errors.Check(Native.frusta_create_world_hand(handle.Id, d, &hand), "frusta_create_world_hand");
+                var grown = new FrustaHandId[hands.Length + 1];
+                Array.Copy(hands, grown, hands.Length);
+                grown[hands.Length] = hand;
+                hands = grown;
+            }
             return hand;
+        }
+
+        /// <summary>Destroy a hand of this world (queued; <c>frusta_destroy_world_hand</c>). Its id is
+        /// refused at once by the calls that change the world (<see cref="SetHaptic"/> from an input
+        /// thread included); <see cref="GetHand"/> still reports it until a step has applied the
+        /// removal. Its slot takes a new hand once a <see cref="Read"/> latched that step.</summary>
+        /// <param name="hand">The id from <see cref="CreateHand"/>.</param>
+        /// <exception cref="FrustaException"><see cref="FrustaResult.StaleId"/> for a hand already destroyed
+        /// or of another world; <see cref="FrustaResult.WrongState"/> while a glove drives it (dispose the
+        /// <see cref="Device"/> first).</exception>
+        public void DestroyHand(FrustaHandId hand)
+        {
+            using (new HandleUse(handle))
+            lock (readGate)
+            {
+                // the id names its world: refuse another world's here, as every other call does
+                if (hand.World0 != 0 && !BelongsHere(hand.World0))
+                    throw new FrustaException(FrustaResult.StaleId,
+                        $"hand id {hand} belongs to another world, or to a destroyed one", "frusta_destroy_world_hand");
+                Errors.Check(Native.frusta_destroy_world_hand(hand), "frusta_destroy_world_hand");
+                int at = Array.IndexOf(hands, hand);
+                if (at < 0) return;
+                var shrunk = new FrustaHandId[hands.Length - 1];
+                Array.Copy(hands, shrunk, at);
+                Array.Copy(hands, at + 1, shrunk, at, hands.Length - at - 1);
+                hands = shrunk;
+            }
         }
 
         /// <summary>
@@ -135,6 +177,7 @@ namespace Frusta.Binding
             FrustaObjectId id;
             using (new HandleUse(handle))
             using (new HandleUse(tree.Handle))
+            lock (readGate)
             fixed (FrustaObjectDef* d = &def)
                 Errors.Check(Native.frusta_create_object(handle.Id, tree.Id, d, &id), "frusta_create_object");
             return id;
@@ -149,9 +192,10 @@ namespace Frusta.Binding
         public void DestroyObject(FrustaObjectId id)
         {
             using (new HandleUse(handle))
+            lock (readGate)
             {
                 // the id names its world: refuse another world's here, as every other call does
-                if (id.World0 != 0 && !BelongsHere(id))
+                if (id.World0 != 0 && !BelongsHere(id.World0))
                     throw new FrustaException(FrustaResult.StaleId,
                         $"object id {id} belongs to another world, or to a destroyed one", "frusta_destroy_object");
                 Errors.Check(Native.frusta_destroy_object(id), "frusta_destroy_object");
@@ -290,6 +334,66 @@ namespace Frusta.Binding
             ReadLatched(id, ref output, (world, i, o) => Native.frusta_world_get_object(world, i, o), "frusta_world_get_object");
         }
 
+        /// <summary>Whether, in the latched step, <paramref name="hand"/> ignores <paramref name="id"/>: the
+        /// object was created or moved into the hand and they have not parted since; the hand passes
+        /// through it and pushes it with no force until then
+        /// (<c>frusta_world_get_object_ignored_by</c>). Allocation-free.</summary>
+        /// <param name="id">The object.</param>
+        /// <param name="hand">The hand.</param>
+        /// <returns>true while the hand ignores the object.</returns>
+        /// <exception cref="FrustaException"><see cref="FrustaResult.StaleId"/> for an object or hand not in the
+        /// latched step.</exception>
+        public bool IsObjectIgnoredBy(FrustaObjectId id, FrustaHandId hand)
+        {
+            int ignored;
+            using (new HandleUse(handle))
+            lock (readGate)
+                Errors.Check(Native.frusta_world_get_object_ignored_by(handle.Id, id, hand, &ignored),
+                             "frusta_world_get_object_ignored_by");
+            return ignored != 0;
+        }
+
+        /// <summary>Copy every segment of one hand of the latched step, world coordinates, finger-major
+        /// (thumb first), proximal to distal (<c>frusta_world_get_hand_segments</c>): the first
+        /// min(destination.Length, 15) of them. Allocation-free: reuse a buffer of
+        /// <see cref="FrustaConstants.HandSegmentCount"/>.</summary>
+        /// <param name="hand">The hand.</param>
+        /// <param name="which">The graphic (displayed) hand or the haptic (input) one.</param>
+        /// <param name="destination">Receives the segments, Frusta's frame.</param>
+        /// <returns>How many segments the hand has (15).</returns>
+        /// <exception cref="FrustaException"><see cref="FrustaResult.WrongState"/> while the hand has had no
+        /// input (<see cref="FrustaWorldHand.Solved"/> false); <see cref="FrustaResult.StaleId"/> for a hand
+        /// not in the latched step.</exception>
+        public int GetHandSegments(FrustaHandId hand, FrustaHandKind which, Span<FrustaSegment> destination)
+        {
+            int count;
+            using (new HandleUse(handle))
+            lock (readGate)
+            fixed (FrustaSegment* s = destination)
+                Errors.Check(Native.frusta_world_get_hand_segments(handle.Id, hand, (int)which, s, destination.Length, &count),
+                             "frusta_world_get_hand_segments");
+            return count;
+        }
+
+        /// <summary>Copy the palm spheres of one hand of the latched step, world coordinates
+        /// (<c>frusta_world_get_hand_palm_spheres</c>): the first min(destination.Length, count) of
+        /// them. An empty destination asks for the count alone. Allocation-free.</summary>
+        /// <param name="hand">The hand.</param>
+        /// <param name="which">The graphic (displayed) hand or the haptic (input) one.</param>
+        /// <param name="destination">Receives the spheres, Frusta's frame.</param>
+        /// <returns>How many palm spheres the hand has (more than copied when destination was short).</returns>
+        /// <exception cref="FrustaException">As <see cref="GetHandSegments"/>.</exception>
+        public int GetHandPalmSpheres(FrustaHandId hand, FrustaHandKind which, Span<FrustaSphere> destination)
+        {
+            int count;
+            using (new HandleUse(handle))
+            lock (readGate)
+            fixed (FrustaSphere* s = destination)
+                Errors.Check(Native.frusta_world_get_hand_palm_spheres(handle.Id, hand, (int)which, s, destination.Length, &count),
+                             "frusta_world_get_hand_palm_spheres");
+            return count;
+        }
+
         /// <summary>A snapshot buffer sized for this world's hands and contacts, for
         /// <see cref="ReadSnapshot"/>. Allocates: make one per reader and reuse it.</summary>
         /// <returns>An empty snapshot.</returns>
@@ -312,23 +416,29 @@ namespace Frusta.Binding
                 snapshot.state.struct_size = sizeof(FrustaWorldState);
                 fixed (FrustaWorldState* s = &snapshot.state)
                     Errors.Check(Native.frusta_world_read(id, s), "frusta_world_read");
-                // the step has every hand created so far: creating one unlatches
+                // the world's hands the step shows: one created since is not in it yet
                 FrustaHandId[] ids = hands;
-                int count = Math.Min(snapshot.state.HandCount, ids.Length);
-                snapshot.EnsureHands(count);
-                for (int h = 0; h < count; ++h)
+                snapshot.EnsureHands(ids.Length);
+                int count = 0;
+                foreach (FrustaHandId hand in ids)
                 {
-                    snapshot.hands[h].struct_size = sizeof(FrustaWorldHand);
-                    fixed (FrustaWorldHand* p = &snapshot.hands[h])
-                        Errors.Check(Native.frusta_world_get_hand(id, ids[h], p), "frusta_world_get_hand");
+                    snapshot.hands[count].struct_size = sizeof(FrustaWorldHand);
+                    FrustaResult r;
+                    fixed (FrustaWorldHand* p = &snapshot.hands[count])
+                        r = Native.frusta_world_get_hand(id, hand, p);
+                    if (r == FrustaResult.StaleId) continue;
+                    Errors.Check(r, "frusta_world_get_hand");
                     int contacts;
-                    Errors.Check(Native.frusta_world_get_contacts(id, ids[h], null, 0, &contacts), "frusta_world_get_contacts");
-                    snapshot.EnsureContacts(h, contacts);
-                    fixed (FrustaWorldContact* c = snapshot.contacts[h])
-                        Errors.Check(Native.frusta_world_get_contacts(id, ids[h], c, snapshot.contacts[h].Length, &contacts),
+                    Errors.Check(Native.frusta_world_get_contacts(id, hand, null, 0, &contacts), "frusta_world_get_contacts");
+                    snapshot.EnsureContacts(count, contacts);
+                    fixed (FrustaWorldContact* c = snapshot.contacts[count])
+                        Errors.Check(Native.frusta_world_get_contacts(id, hand, c, snapshot.contacts[count].Length, &contacts),
                                      "frusta_world_get_contacts");
-                    snapshot.contactCounts[h] = contacts;
+                    snapshot.contactCounts[count] = contacts;
+                    snapshot.ids[count] = hand;
+                    ++count;
                 }
+                snapshot.handCount = count;
             }
         }
 
@@ -397,8 +507,8 @@ namespace Frusta.Binding
         }
 
         // whether an id's world0 names this world (its slot + 1 and its generation's low byte)
-        bool BelongsHere(FrustaObjectId id) =>
-            id.World0 == (ushort)((handle.Id.Index1 & 0xff) | ((handle.Id.Generation & 0xff) << 8));
+        bool BelongsHere(ushort world0) =>
+            world0 == (ushort)((handle.Id.Index1 & 0xff) | ((handle.Id.Generation & 0xff) << 8));
 
         /// <summary>Stop the own thread and destroy the world with its objects
         /// (<c>frusta_destroy_world</c>); waits for calls in flight on other threads. Safe to call twice.</summary>
@@ -411,14 +521,17 @@ namespace Frusta.Binding
 
     /// <summary>
     /// One step of a world copied out by <see cref="World.ReadSnapshot"/>: its state, every hand
-    /// and every hand's contacts. Caller-owned and reused; not thread-safe itself (one per reader).
+    /// of the world it shows and every such hand's contacts. Caller-owned and reused; not
+    /// thread-safe itself (one per reader).
     /// </summary>
     public sealed class WorldSnapshot
     {
         internal FrustaWorldState state;
         internal FrustaWorldHand[] hands;
+        internal FrustaHandId[] ids;
         internal FrustaWorldContact[][] contacts;
         internal int[] contactCounts;
+        internal int handCount;
 
         /// <summary>An empty snapshot with room for <paramref name="handCapacity"/> hands of
         /// <paramref name="contactCapacity"/> contacts each; it grows if a step needs more.</summary>
@@ -429,6 +542,7 @@ namespace Frusta.Binding
             if (handCapacity < 0) throw new ArgumentOutOfRangeException(nameof(handCapacity));
             if (contactCapacity < 0) throw new ArgumentOutOfRangeException(nameof(contactCapacity));
             hands = new FrustaWorldHand[handCapacity];
+            ids = new FrustaHandId[handCapacity];
             contacts = new FrustaWorldContact[handCapacity][];
             contactCounts = new int[handCapacity];
             for (int h = 0; h < handCapacity; ++h) contacts[h] = new FrustaWorldContact[contactCapacity];
@@ -437,24 +551,34 @@ namespace Frusta.Binding
         /// <summary>The step's state (step count, time, timings).</summary>
         public ref readonly FrustaWorldState State => ref state;
 
-        /// <summary>Hands in the step.</summary>
-        public int HandCount => state.HandCount;
+        /// <summary>The world's hands the step shows (<see cref="World.Hands"/> at the read, but a hand
+        /// created after the step).</summary>
+        public int HandCount => handCount;
+
+        /// <summary>The id of one hand of the step.</summary>
+        /// <param name="hand">0..HandCount-1, in the world's creation order.</param>
+        /// <returns>The hand's id.</returns>
+        public FrustaHandId GetHandId(int hand)
+        {
+            if ((uint)hand >= (uint)handCount) throw new ArgumentOutOfRangeException(nameof(hand));
+            return ids[hand];
+        }
 
         /// <summary>One hand of the step.</summary>
-        /// <param name="hand">0..HandCount-1, in the world's creation order (<see cref="World.Hands"/>).</param>
+        /// <param name="hand">0..HandCount-1, in the world's creation order (<see cref="GetHandId"/>).</param>
         /// <returns>A read-only reference into the snapshot, valid until the next ReadSnapshot into it.</returns>
         public ref readonly FrustaWorldHand GetHand(int hand)
         {
-            if ((uint)hand >= (uint)state.HandCount) throw new ArgumentOutOfRangeException(nameof(hand));
+            if ((uint)hand >= (uint)handCount) throw new ArgumentOutOfRangeException(nameof(hand));
             return ref hands[hand];
         }
 
         /// <summary>One hand's contacts in the step.</summary>
-        /// <param name="hand">0..HandCount-1, in the world's creation order (<see cref="World.Hands"/>).</param>
+        /// <param name="hand">0..HandCount-1, in the world's creation order (<see cref="GetHandId"/>).</param>
         /// <returns>A read-only view into the snapshot, valid until the next ReadSnapshot into it.</returns>
         public ReadOnlySpan<FrustaWorldContact> GetContacts(int hand)
         {
-            if ((uint)hand >= (uint)state.HandCount) throw new ArgumentOutOfRangeException(nameof(hand));
+            if ((uint)hand >= (uint)handCount) throw new ArgumentOutOfRangeException(nameof(hand));
             return new ReadOnlySpan<FrustaWorldContact>(contacts[hand], 0, contactCounts[hand]);
         }
 
@@ -464,6 +588,7 @@ namespace Frusta.Binding
             int old = hands.Length;
             int capacity = old > 0 ? contacts[0].Length : 0;
             Array.Resize(ref hands, count);
+            Array.Resize(ref ids, count);
             Array.Resize(ref contacts, count);
             Array.Resize(ref contactCounts, count);
             for (int h = old; h < count; ++h) contacts[h] = new FrustaWorldContact[capacity];
