@@ -107,7 +107,7 @@ namespace Frusta.Unity
             if (hand == null) hand = GetComponent<FrustaHand>();
         }
 
-        // every hand has registered with its world in Awake: the glove may open now
+        // every hand of the scene has joined its world in its OnEnable: the glove may open now
         void Start()
         {
             started = true;
@@ -116,10 +116,16 @@ namespace Frusta.Unity
 
         void OnEnable()
         {
+            // a hand that leaves its world closes the glove first; back, it may open it again
+            if (hand != null) hand.Registered += Open;
             if (started) Open();
         }
 
-        void OnDisable() => Close();
+        void OnDisable()
+        {
+            if (hand != null) hand.Registered -= Open;
+            Close();
+        }
 
         void OnDestroy() => Close();
 
@@ -165,6 +171,7 @@ namespace Frusta.Unity
             device.StateChanged += OnStateChanged;
             device.WatchdogChanged += OnWatchdogChanged;
             hand.DrivenByDevice = true;
+            hand.Releasing += Close;
             stateChanged.Invoke(FrustaDeviceState.Closed, FrustaDeviceState.Connected);
         }
 
@@ -176,7 +183,11 @@ namespace Frusta.Unity
             device.WatchdogChanged -= OnWatchdogChanged;
             device.Dispose(); // zeroes the glove's output; stale (and fine) if the world went first
             device = null;
-            if (hand != null) hand.DrivenByDevice = false;
+            if (hand != null)
+            {
+                hand.DrivenByDevice = false;
+                hand.Releasing -= Close;
+            }
             if (last != FrustaDeviceState.Closed) stateChanged.Invoke(last, FrustaDeviceState.Closed);
         }
 

@@ -11,6 +11,8 @@ namespace Frusta.Unity
     /// or, while a <see cref="FrustaGloveDevice"/> drives the hand, comes from the glove itself;
     /// the graphic hand (the one that never sinks into objects) comes out each frame and drives the
     /// mapped bones of a skinned rig. Scene-view gizmos show its segments, joint balls and contacts.
+    /// The hand joins its world when enabled and leaves it when disabled or destroyed, so a rig
+    /// spawned (or removed) at run time, while the world runs, works as one in the scene.
     /// </summary>
     [AddComponentMenu("Frusta/Frusta Hand")]
     public sealed class FrustaHand : MonoBehaviour
@@ -61,15 +63,16 @@ namespace Frusta.Unity
         [SerializeField] bool drawContacts = true;
 
         FrustaHandDef def;
-        FrustaHandId id;                    // null until the hand is created in the world
-        Hand preview;                       // the graphic hand's geometry, for gizmos
+        FrustaHandId id;                    // null while the hand is not in the world
+        bool shown;                         // the latched step shows the hand (latest is its)
         readonly double[] angles = new double[FrustaConstants.HandJointCount];
         FrustaWorldHand latest;
         FrustaWorldContact[] contacts = Array.Empty<FrustaWorldContact>();
         int contactCount;
         readonly FrustaSegment[] segments = new FrustaSegment[FrustaConstants.HandSegmentCount];
 
-        /// <summary>The hand's id in the world; null (<see cref="FrustaHandId.IsNull"/>) before it registered.</summary>
+        /// <summary>The hand's id in the world; null (<see cref="FrustaHandId.IsNull"/>) while it is not in
+        /// the world (before it was enabled, once disabled).</summary>
         public FrustaHandId Id => id;
 
         /// <summary>The world component the hand belongs to (null if it found none).</summary>
@@ -84,7 +87,8 @@ namespace Frusta.Unity
         /// haptic source are not used.</summary>
         public bool DrivenByDevice { get; internal set; }
 
-        /// <summary>The latest graphic and haptic state (valid once <see cref="FrustaWorldHand.Solved"/>).</summary>
+        /// <summary>The latest graphic and haptic state (valid once <see cref="FrustaWorldHand.Solved"/>;
+        /// unsolved until a step has taken in a hand added at run time).</summary>
         public ref readonly FrustaWorldHand State => ref latest;
 
         /// <summary>The latest contacts of this hand (world frame, Frusta's axes).</summary>
@@ -107,31 +111,66 @@ namespace Frusta.Unity
             return d;
         }
 
+        // a glove driving this hand closes before the hand leaves its world (the world refuses
+        // to destroy a hand a glove drives), and may open again once the hand is back
+        internal event Action Registered, Releasing;
+
         void Awake()
         {
-            if (world == null) world = GetComponentInParent<FrustaWorldBehaviour>();
-            if (world == null || world.World == null)
-            {
-                Debug.LogError("FrustaHand needs a FrustaWorldBehaviour (set one or put the hand under it).", this);
-                enabled = false;
-                return;
-            }
             def = BuildDef();
-            id = world.World.CreateHand(def); // before the world's first step
-            preview = new Hand(def);
-            contacts = new FrustaWorldContact[world.World.MaxContactsPerHand];
             for (int i = 0; i < bones.Length; ++i)
                 if (bones[i].bone != null) bones[i].rest = bones[i].bone.localRotation;
         }
 
-        void OnEnable()
+        // in the world while enabled; Start retries for a world that woke after this hand
+        void OnEnable() => Register();
+
+        void Start()
         {
-            if (world != null) world.Latched += OnLatched;
+            Register();
+            if (world == null || world.World == null)
+                Debug.LogError("FrustaHand needs a FrustaWorldBehaviour (set one or put the hand under it).", this);
         }
 
-        void OnDisable()
+        void OnDisable() => Release();
+
+        void OnDestroy() => Release();
+
+        void Register()
         {
-            if (world != null) world.Latched -= OnLatched;
+            if (!id.IsNull) return;
+            if (world == null) world = GetComponentInParent<FrustaWorldBehaviour>();
+            if (world == null || world.World == null) return;
+            try
+            {
+                id = world.World.CreateHand(def);
+            }
+            catch (FrustaException e)
+            {
+                Debug.LogError($"FrustaHand did not join its world ({e.Result}): {e.NativeMessage}", this);
+                return;
+            }
+            if (contacts.Length != world.World.MaxContactsPerHand)
+                contacts = new FrustaWorldContact[world.World.MaxContactsPerHand];
+            world.Latched += OnLatched;
+            Registered?.Invoke();
+        }
+
+        void Release()
+        {
+            if (id.IsNull) return;
+            Releasing?.Invoke();
+            world.Latched -= OnLatched;
+            World w = world.World;
+            // a world destroyed first took its hands with it
+            if (w != null && w.IsValid)
+            {
+                try { w.DestroyHand(id); }
+                catch (FrustaException e) { Debug.LogError($"FrustaHand did not leave its world ({e.Result}): {e.NativeMessage}", this); }
+            }
+            id = default;
+            shown = false;
+            contactCount = 0;
         }
 
         void Update()
@@ -144,9 +183,10 @@ namespace Frusta.Unity
         void OnLatched(FrustaWorldBehaviour source)
         {
             World w = source.World;
-            w.GetHand(id, ref latest);
-            contactCount = w.GetContacts(id, contacts);
-            if (!latest.Solved) return;
+            // a hand added since the latched step is not in it yet
+            shown = w.TryGetHand(id, ref latest);
+            contactCount = shown ? w.GetContacts(id, contacts) : 0;
+            if (!shown || !latest.Solved) return;
             if (graphicWrist != null) graphicWrist.SetFrustaPose(latest.GraphicPalm);
             for (int i = 0; i < bones.Length; ++i)
             {
@@ -160,21 +200,12 @@ namespace Frusta.Unity
             }
         }
 
-        void OnDestroy()
-        {
-            preview?.Dispose();
-            preview = null;
-        }
-
         void OnDrawGizmos()
         {
-            if (preview == null || !preview.IsValid || !latest.Solved) return;
-            // the graphic hand's geometry through the standalone preview hand
-            Span<double> a = stackalloc double[FrustaConstants.HandJointCount];
-            latest.CopyGraphicAngles(a);
-            preview.SetPalmPose(latest.GraphicPalm);
-            preview.SetJointAngles(a);
-            int n = preview.GetSegments(segments);
+            World w = world != null ? world.World : null;
+            if (w == null || !shown || !latest.Solved) return;
+            // the graphic hand's geometry, from the latched step
+            int n = w.GetHandSegments(id, FrustaHandKind.Graphic, segments);
             Gizmos.color = new Color(0.9f, 0.75f, 0.6f);
             for (int s = 0; s < n; ++s)
             {

@@ -7,7 +7,8 @@ namespace Frusta.Unity
 {
     /// <summary>
     /// Owns a Frusta <see cref="World"/>. It is created in Awake (before any hand or object of the
-    /// scene registers: this component runs early), runs on its own 1 kHz thread while enabled
+    /// scene registers: this component runs early; hands and objects may also come and go later,
+    /// while it runs), runs on its own 1 kHz thread while enabled
     /// (or is stepped from Update when <see cref="runOnOwnThread"/> is off), latches the newest
     /// step once per frame for the other components, and is disposed on destroy, on quit and
     /// before an editor domain reload.
@@ -23,6 +24,8 @@ namespace Frusta.Unity
         [SerializeField] bool runOnOwnThread = true;
         [Tooltip("Object slots.")]
         [SerializeField] int maxObjects = 64;
+        [Tooltip("Hand slots (1..64): hands at once, a user's two, another user's, rigs spawned at run time.")]
+        [SerializeField] int maxHands = 8;
         [Tooltip("Gravity on dynamic objects, m/s², Unity frame.")]
         [SerializeField] Vector3 gravity = Vector3.zero;
 
@@ -45,6 +48,7 @@ namespace Frusta.Unity
             FrustaWorldDef def = FrustaWorldDef.Default;
             def.RateHz = rateHz;
             def.MaxObjects = maxObjects;
+            def.MaxHands = maxHands;
             def.Gravity = gravity.ToFrustaVector();
             world = new World(def);
 #if UNITY_EDITOR

@@ -22,7 +22,7 @@ namespace Frusta.Binding.Tests
 
         public DeviceTests(ITestOutputHelper output) => this.output = output;
 
-        static string Recording => Path.Combine(TestEnv.Root, "samples", "data", "demo_glove.frrec");
+        static string Recording => TestEnv.Recording;
         static string ReplayAsFastAsRead => $"replay:{Recording}?speed=max";
 
         /// <summary>The CSV written with the recording by the same generator: one frame line per sample.</summary>

@@ -27,7 +27,7 @@ namespace Frusta.Binding.Tests
         [Fact]
         public void ADefNotFromTheDefaultsIsRefused()
         {
-            var def = new FrustaWorldDef { struct_size = 128 }; // built by hand: no cookie
+            var def = new FrustaWorldDef { struct_size = System.Runtime.InteropServices.Marshal.SizeOf<FrustaWorldDef>() }; // built by hand: no cookie
             Fails(FrustaResult.DefNotDefaulted, () => new World(def), "frusta_default_world_def");
             FrustaObjectDef objectDef = FrustaObjectDef.Default;
             objectDef.internal_value = 0;
@@ -81,7 +81,7 @@ namespace Frusta.Binding.Tests
             Fails(FrustaResult.OutOfRange, () => world.SetHaptic(hand, palm, new double[19]), "count", "19");
             var second = hand;
             second.Index1 = 2;
-            Fails(FrustaResult.StaleId, () => world.SetHaptic(second, palm, angles), "hand id", "no hand of this world");
+            Fails(FrustaResult.StaleId, () => world.SetHaptic(second, palm, angles), "no hand of this world");
             using (var standalone = new Hand())
                 Fails(FrustaResult.StaleId, () => world.SetHaptic(standalone.Id, palm, angles), "standalone");
             angles[7] = double.PositiveInfinity;

@@ -129,7 +129,7 @@ namespace Frusta.Binding.Tests
         {
             Assert.Equal(896, FrustaHandDef.Default.struct_size);
             Assert.Equal(56, FrustaBakeDef.Default.struct_size);
-            Assert.Equal(128, FrustaWorldDef.Default.struct_size);
+            Assert.Equal(136, FrustaWorldDef.Default.struct_size);
             Assert.Equal(224, FrustaObjectDef.Default.struct_size);
             Assert.Equal(728, FrustaDeviceDef.Default.struct_size);
             Assert.Equal(32, FrustaHandFitDef.Default.struct_size);
@@ -154,6 +154,8 @@ namespace Frusta.Binding.Tests
             Assert.Equal(64, w.MaxSubsteps);
             Assert.Equal(256, w.MaxContactsPerHand);
             Assert.Equal(256, w.CommandCapacity);
+            Assert.Equal(8, w.MaxHands);
+            Assert.Equal(0, w.reserved1);
             Assert.Equal((10.0, 10.0, 0.5, 20.0, 1.0),
                 (w.MaxFingertipForce, w.MaxFingerResistance, w.MaxJointTorque, w.MaxPalmForce, w.MaxPalmTorque));
             Assert.Equal(0, w.reserved0);

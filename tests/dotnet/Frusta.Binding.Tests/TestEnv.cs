@@ -18,6 +18,9 @@ namespace Frusta.Binding.Tests
         public static string SampleObjects => Metadata("FrustaSampleObjectsDir");
         public static string Package => Path.Combine(Root, "unity-package");
 
+        /// <summary>The bundled glove recording, for replayed gloves.</summary>
+        public static string Recording => Path.Combine(Root, "samples", "data", "demo_glove.frrec");
+
         /// <summary>A sample object baked by the samples/objects target; fails (not skips) when missing.</summary>
         public static string SampleObject(string name)
         {

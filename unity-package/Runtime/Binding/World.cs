@@ -79,7 +79,7 @@ namespace Frusta.Binding
         public int MaxContactsPerHand => maxContactsPerHand;
 
         /// <summary>Create a hand in this world built from <paramref name="def"/>, at any time, the own
-        /// thread running or not (<c>frusta_create_world_hand</c>): it takes <see cref="SetHaptic"/> at
+        /// thread running or not (<c>frusta_create_world_hand</c>): it takes <see cref="SetHaptic(FrustaHandId, in FrustaPose, ReadOnlySpan{double})"/> at
         /// once and is in the steps from the next one on (<see cref="GetHand"/> refuses it until a
         /// <see cref="Read"/> latched such a step). Allocates (the hand's native memory, on this
         /// thread): not a per-frame call.</summary>
@@ -105,7 +105,7 @@ namespace Frusta.Binding
         }
 
         /// <summary>Destroy a hand of this world (queued; <c>frusta_destroy_world_hand</c>). Its id is
-        /// refused at once by the calls that change the world (<see cref="SetHaptic"/> from an input
+        /// refused at once by the calls that change the world (<see cref="SetHaptic(FrustaHandId, in FrustaPose, ReadOnlySpan{double})"/> from an input
         /// thread included); <see cref="GetHand"/> still reports it until a step has applied the
         /// removal. Its slot takes a new hand once a <see cref="Read"/> latched that step.</summary>
         /// <param name="hand">The id from <see cref="CreateHand"/>.</param>
@@ -286,6 +286,26 @@ namespace Frusta.Binding
         {
             output.struct_size = sizeof(FrustaWorldHand);
             ReadLatched(hand, ref output, (world, h, o) => Native.frusta_world_get_hand(world, h, o), "frusta_world_get_hand");
+        }
+
+        /// <summary>One hand of the latched step, as <see cref="GetHand"/>, or false when the step does
+        /// not show it: created after the latched step, destroyed before it, or another world's. What a component
+        /// reading a hand created at run time calls each frame: no exception, no allocation.</summary>
+        /// <param name="hand">The id from <see cref="CreateHand"/>.</param>
+        /// <param name="output">Filled when the step shows the hand.</param>
+        /// <returns>true when filled.</returns>
+        /// <exception cref="FrustaException">As <see cref="GetHand"/>, but for a hand the step does not show.</exception>
+        public bool TryGetHand(FrustaHandId hand, ref FrustaWorldHand output)
+        {
+            output.struct_size = sizeof(FrustaWorldHand);
+            FrustaResult r;
+            using (new HandleUse(handle))
+            lock (readGate)
+            fixed (FrustaWorldHand* o = &output)
+                r = Native.frusta_world_get_hand(handle.Id, hand, o);
+            if (r == FrustaResult.StaleId) return false;
+            Errors.Check(r, "frusta_world_get_hand");
+            return true;
         }
 
         /// <summary>How many contacts one hand has in the latched step (at most <see cref="MaxContactsPerHand"/>).</summary>

@@ -27,6 +27,31 @@ namespace Frusta.Unity.Tests
         }
 
         [UnityTest]
+        public IEnumerator AHandSpawnedWhileTheWorldRunsJoinsItAndLeavesItWhenDestroyed()
+        {
+            var go = new GameObject("world");
+            var behaviour = go.AddComponent<FrustaWorldBehaviour>();
+            yield return null; // Start: the own thread runs
+            var handObject = new GameObject("spawned hand");
+            handObject.transform.SetParent(go.transform, false);
+            var hand = handObject.AddComponent<FrustaHand>();
+            FrustaHandId id = hand.Id;
+            Assert.IsFalse(id.IsNull);
+            CollectionAssert.AreEqual(new[] { id }, behaviour.World.Hands);
+            float until = Time.realtimeSinceStartup + 5f;
+            while (!hand.State.Solved && Time.realtimeSinceStartup < until) yield return null;
+            Assert.IsTrue(hand.State.Solved);
+            Object.Destroy(handObject);
+            yield return null;
+            CollectionAssert.IsEmpty(behaviour.World.Hands);
+            var stale = Assert.Throws<FrustaException>(
+                () => behaviour.World.SetHaptic(id, FrustaPose.Identity, new double[FrustaConstants.HandJointCount]));
+            Assert.AreEqual(FrustaResult.StaleId, stale.Result);
+            Object.Destroy(go);
+            yield return null;
+        }
+
+        [UnityTest]
         public IEnumerator AGloveThatDoesNotOpenLeavesTheHandToTheHost()
         {
             var go = new GameObject("world");
