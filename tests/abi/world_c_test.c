@@ -1772,7 +1772,7 @@ static void expect_world_geometry(frusta_world_id world, frusta_hand_id hand, in
   frusta_hand_set_joint_angles(alone, angles, FRUSTA_HAND_JOINT_COUNT);
   frusta_segment got[FRUSTA_HAND_SEGMENT_COUNT], want[FRUSTA_HAND_SEGMENT_COUNT];
   int32_t n = 0, m = 0;
-  double worst;
+  double worst = 0.0;
   expect_ok(label, frusta_world_get_hand_segments(world, hand, which, got, FRUSTA_HAND_SEGMENT_COUNT, &n));
   frusta_hand_get_segments(alone, want, FRUSTA_HAND_SEGMENT_COUNT, &m);
   check(n == FRUSTA_HAND_SEGMENT_COUNT && m == n && same_segments(got, want, n, &worst),
@@ -1941,22 +1941,29 @@ static void test_ignored_objects(void) {
   const frusta_object_id stale_object = {box.index1, box.world0, (uint16_t)(box.generation + 1)};
   frusta_hand_id stale_hand = hand;
   stale_hand.generation = (uint16_t)(hand.generation + 1);
+  const struct {
+    const char* what;
+    frusta_object_id object;
+    frusta_hand_id hand;
+    int null_out;
+    frusta_result want;
+    const char* field;
+  } refused[] = {
+      {"null object", kNullObject, hand, 0, FRUSTA_ERROR_NULL_ID, "object"},
+      {"null hand", box, kNullHand, 0, FRUSTA_ERROR_NULL_ID, "hand"},
+      {"stale object", stale_object, hand, 0, FRUSTA_ERROR_STALE_ID, "object"},
+      {"stale hand", box, stale_hand, 0, FRUSTA_ERROR_STALE_ID, "hand"},
+      {"out_ignored null", box, hand, 1, FRUSTA_ERROR_NULL_POINTER, "out_ignored"},
+  };
   fill(&ignored, sizeof ignored);
-  expect_error("get_object_ignored_by(null object)",
-               frusta_world_get_object_ignored_by(world, kNullObject, hand, &ignored),
-               FRUSTA_ERROR_NULL_ID, "object", NULL);
-  expect_error("get_object_ignored_by(null hand)",
-               frusta_world_get_object_ignored_by(world, box, kNullHand, &ignored),
-               FRUSTA_ERROR_NULL_ID, "hand", NULL);
-  expect_error("get_object_ignored_by(stale object)",
-               frusta_world_get_object_ignored_by(world, stale_object, hand, &ignored),
-               FRUSTA_ERROR_STALE_ID, "object", NULL);
-  expect_error("get_object_ignored_by(stale hand)",
-               frusta_world_get_object_ignored_by(world, box, stale_hand, &ignored),
-               FRUSTA_ERROR_STALE_ID, "hand", NULL);
-  expect_error("get_object_ignored_by(out_ignored null)",
-               frusta_world_get_object_ignored_by(world, box, hand, NULL),
-               FRUSTA_ERROR_NULL_POINTER, "out_ignored", NULL);
+  for (size_t i = 0; i < sizeof refused / sizeof refused[0]; ++i) {
+    char what[96];
+    snprintf(what, sizeof what, "get_object_ignored_by(%s)", refused[i].what);
+    expect_error(what,
+                 frusta_world_get_object_ignored_by(world, refused[i].object, refused[i].hand,
+                                                    refused[i].null_out ? NULL : &ignored),
+                 refused[i].want, refused[i].field, NULL);
+  }
   check(is_sentinel(&ignored, sizeof ignored), "the refused calls write nothing");
   frusta_destroy_world(world);
 }

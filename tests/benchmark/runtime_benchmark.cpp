@@ -5,7 +5,12 @@
 //  - the cost of reading the output snapshot (a triple buffer) in nanoseconds, with the
 //    writer idle and with it publishing flat out.
 //  - the world's step time with 1 and 2 hands (each grasping its own ball) among 1, 5
-//    and 20 objects, on the host's loop.
+//    and 20 objects, on the host's loop;
+//  - what hand slots cost: the step time with one hand present in worlds of 1, 8 and 64
+//    hand slots (a free hand, where the step's own plumbing shows, and a grasping one),
+//    and the bytes an empty slot holds;
+//  - what a hand that comes and goes costs the host: add_hand (its whole pipeline is
+//    allocated here), remove_hand, and the read that frees it.
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -113,6 +118,63 @@ void world_steps(int hands, int objects, bool last) {
               s.hand(handles[0])->contact_count, last ? "" : ",");
 }
 
+// One hand present, free or grasping a ball, in a world of `slots` hand slots.
+void hand_slots(int slots, bool grasping, bool last) {
+  WorldDef def;
+  def.max_hands = slots;
+  World world(def);
+  const std::shared_ptr<const TreeFile> ball = scenes::ball_shell(2000, 0.04);
+  HandHandle hand;
+  world.add_hand(make_hand_model(default_hand_def()), &hand);
+  ObjectHandle handle;
+  world.add_object(ball, RigidPose{vec3(0.10, 0.0, -0.058), glm::dmat3(1.0)}, &handle);
+  const scenes::HandScenario grasp = scenes::ball_grasp(ball);
+  const HandState free_hand = scenes::open_hand(vec3(0.0, 0.5, 0.0));
+  StepHistogram steps;
+  constexpr int kWarm = 300, kMeasured = 5000;
+  for (int t = 0; t < kWarm + kMeasured; ++t) {
+    world.set_haptic(hand, grasping ? grasp.haptic(std::min(t, grasp.steps - 1)) : free_hand);
+    const Clock::time_point start = Clock::now();
+    world.step();
+    if (t >= kWarm) steps.record(std::chrono::duration<double, std::micro>(Clock::now() - start).count());
+  }
+  std::printf("  {\"max_hands\": %d, \"present\": 1, \"hand\": \"%s\", \"steps\": %d, \"p50_us\": %.3f, "
+              "\"p99_us\": %.3f, \"contacts\": %d}%s\n",
+              slots, grasping ? "grasping" : "free", kMeasured, steps.percentile(0.5),
+              steps.percentile(0.99), world.read().hand(hand)->contact_count, last ? "" : ",");
+}
+
+// The host's time to add a hand (allocating its pipeline), to remove it, and for the read
+// that frees it once a step applied the removal; one other hand steps throughout.
+void hand_add_remove() {
+  World world(WorldDef{});
+  const HandModel model = make_hand_model(default_hand_def());
+  HandHandle resident;
+  world.add_hand(model, &resident);
+  StepHistogram add_us, remove_us, read_us;
+  constexpr int kCycles = 500;
+  for (int i = 0; i < kCycles; ++i) {
+    HandHandle hand;
+    Clock::time_point start = Clock::now();
+    world.add_hand(model, &hand);
+    add_us.record(std::chrono::duration<double, std::micro>(Clock::now() - start).count());
+    world.set_haptic(hand, scenes::open_hand());
+    world.step();
+    start = Clock::now();
+    world.remove_hand(hand);
+    remove_us.record(std::chrono::duration<double, std::micro>(Clock::now() - start).count());
+    world.step();
+    start = Clock::now();
+    world.read();  // frees the hand
+    read_us.record(std::chrono::duration<double, std::micro>(Clock::now() - start).count());
+  }
+  std::printf("\"hand_add_remove\": {\"cycles\": %d, \"add_p50_us\": %.2f, \"add_p99_us\": %.2f, "
+              "\"remove_p50_us\": %.2f, \"remove_p99_us\": %.2f, \"freeing_read_p50_us\": %.2f, "
+              "\"freeing_read_p99_us\": %.2f},\n",
+              kCycles, add_us.percentile(0.5), add_us.percentile(0.99), remove_us.percentile(0.5),
+              remove_us.percentile(0.99), read_us.percentile(0.5), read_us.percentile(0.99));
+}
+
 }  // namespace
 }  // namespace frusta
 
@@ -124,6 +186,13 @@ int main() {
   for (size_t i = 0; i < std::size(spins); ++i) wake_up(spins[i], i + 1 == std::size(spins));
   std::printf("],\n\"snapshot_read_ns\": {\"writer_idle\": %.2f, \"writer_publishing\": %.2f, \"snapshot_bytes\": %zu},\n",
               read_ns(false), read_ns(true), sizeof(Snapshot));
+  // an empty hand slot: its port, and a slot header in each of the three snapshots
+  std::printf("\"empty_hand_slot_bytes\": %zu,\n", sizeof(HandPort) + 3 * sizeof(HandSlot));
+  hand_add_remove();
+  std::printf("\"hand_slots\": [\n");
+  for (bool grasping : {false, true})
+    for (int slots : {1, 8, 64}) hand_slots(slots, grasping, grasping && slots == 64);
+  std::printf("],\n");
   std::printf("\"world_step\": [\n");
   for (int hands : {1, 2})
     for (int objects : {hands, 5, 20}) world_steps(hands, objects, hands == 2 && objects == 20);  // each hand holds one

@@ -113,6 +113,24 @@ frusta_result latched_hand_pose(frusta_world_id world, WorldObject* w, frusta_ha
   return FRUSTA_OK;
 }
 
+// A latched hand's geometry (which: frusta_hand_kind) by the output-array rule; `copy` is
+// the standalone hand's conversion (copy_segments, copy_palm_spheres).
+template <class Out>
+frusta_result copy_latched_geometry(frusta_world_id world, frusta_hand_id hand, int32_t which,
+                                    Out* out, int32_t capacity, int32_t* out_count,
+                                    frusta_result (*copy)(const HandModel&, const HandPose&, Out*,
+                                                          int32_t, int32_t*)) {
+  WorldObject* w = nullptr;
+  if (frusta_result r = world_registry().find(world, &w)) return r;
+  HandHandle handle;
+  if (frusta_result r = hand_handle(world, hand, &handle)) return r;
+  if (frusta_result r = check_output_array(out, "out", capacity, out_count)) return r;
+  const HandSnapshot* h = nullptr;
+  HandPose pose;
+  if (frusta_result r = latched_hand_pose(world, w, hand, which, &h, &pose)) return r;
+  return copy(*h->model, pose, out, capacity, out_count);
+}
+
 void store_state(const HandState& state, frusta_pose* palm, double* angles) {
   store(Pose{state.palm_position, state.palm_rotation}, palm);
   std::memcpy(angles, state.angles.data(), sizeof(double) * FRUSTA_HAND_JOINT_COUNT);
@@ -429,28 +447,12 @@ FRUSTA_API frusta_result frusta_world_get_hand_segments(frusta_world_id world,
                                                         frusta_hand_id hand, int32_t which,
                                                         frusta_segment* out, int32_t capacity,
                                                         int32_t* out_count) {
-  WorldObject* w = nullptr;
-  if (frusta_result r = world_registry().find(world, &w)) return r;
-  HandHandle handle;
-  if (frusta_result r = hand_handle(world, hand, &handle)) return r;
-  if (frusta_result r = check_output_array(out, "out", capacity, out_count)) return r;
-  const HandSnapshot* h = nullptr;
-  HandPose pose;
-  if (frusta_result r = latched_hand_pose(world, w, hand, which, &h, &pose)) return r;
-  return copy_segments(*h->model, pose, out, capacity, out_count);
+  return copy_latched_geometry(world, hand, which, out, capacity, out_count, copy_segments);
 }
 
 FRUSTA_API frusta_result frusta_world_get_hand_palm_spheres(frusta_world_id world,
                                                             frusta_hand_id hand, int32_t which,
                                                             frusta_sphere* out, int32_t capacity,
                                                             int32_t* out_count) {
-  WorldObject* w = nullptr;
-  if (frusta_result r = world_registry().find(world, &w)) return r;
-  HandHandle handle;
-  if (frusta_result r = hand_handle(world, hand, &handle)) return r;
-  if (frusta_result r = check_output_array(out, "out", capacity, out_count)) return r;
-  const HandSnapshot* h = nullptr;
-  HandPose pose;
-  if (frusta_result r = latched_hand_pose(world, w, hand, which, &h, &pose)) return r;
-  return copy_palm_spheres(*h->model, pose, out, capacity, out_count);
+  return copy_latched_geometry(world, hand, which, out, capacity, out_count, copy_palm_spheres);
 }

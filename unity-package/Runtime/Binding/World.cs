@@ -117,10 +117,7 @@ namespace Frusta.Binding
             using (new HandleUse(handle))
             lock (readGate)
             {
-                // the id names its world: refuse another world's here, as every other call does
-                if (hand.World0 != 0 && !BelongsHere(hand.World0))
-                    throw new FrustaException(FrustaResult.StaleId,
-                        $"hand id {hand} belongs to another world, or to a destroyed one", "frusta_destroy_world_hand");
+                CheckBelongsHere(hand.World0, $"hand id {hand}", "frusta_destroy_world_hand");
                 Errors.Check(Native.frusta_destroy_world_hand(hand), "frusta_destroy_world_hand");
                 int at = Array.IndexOf(hands, hand);
                 if (at < 0) return;
@@ -194,10 +191,7 @@ namespace Frusta.Binding
             using (new HandleUse(handle))
             lock (readGate)
             {
-                // the id names its world: refuse another world's here, as every other call does
-                if (id.World0 != 0 && !BelongsHere(id.World0))
-                    throw new FrustaException(FrustaResult.StaleId,
-                        $"object id {id} belongs to another world, or to a destroyed one", "frusta_destroy_object");
+                CheckBelongsHere(id.World0, $"object id {id}", "frusta_destroy_object");
                 Errors.Check(Native.frusta_destroy_object(id), "frusta_destroy_object");
             }
         }
@@ -526,9 +520,13 @@ namespace Frusta.Binding
                 Errors.Check(read(handle.Id, key, o), call);
         }
 
-        // whether an id's world0 names this world (its slot + 1 and its generation's low byte)
-        bool BelongsHere(ushort world0) =>
-            world0 == (ushort)((handle.Id.Index1 & 0xff) | ((handle.Id.Generation & 0xff) << 8));
+        // a destroy call takes the id alone, which names its world: refuse another world's here, as
+        // every other call of this world does (world0: slot + 1 and the generation's low byte)
+        void CheckBelongsHere(ushort world0, string what, string call)
+        {
+            if (world0 != 0 && world0 != (ushort)((handle.Id.Index1 & 0xff) | ((handle.Id.Generation & 0xff) << 8)))
+                throw new FrustaException(FrustaResult.StaleId, $"{what} belongs to another world, or to a destroyed one", call);
+        }
 
         /// <summary>Stop the own thread and destroy the world with its objects
         /// (<c>frusta_destroy_world</c>); waits for calls in flight on other threads. Safe to call twice.</summary>
