@@ -4463,7 +4463,7 @@ static void t_calibrate_hand_def(void) {
   for (int i = 0; i < CALIBRATION_FRAMES * FRUSTA_XR_JOINT_COUNT; ++i)
     memset(frames[i].position, 0, sizeof frames[i].position);
   what("frusta_calibrate_hand_def: every joint at the origin");
-  refused(calibrate(frames, CALIBRATION_FRAMES, 0, &def, &untouched), FRUSTA_ERROR_OUT_OF_RANGE, "hand_length");
+  refused(calibrate(frames, CALIBRATION_FRAMES, 0, &def, &untouched), FRUSTA_ERROR_OUT_OF_RANGE, "frames");
   verify(untouched, "a refused call changed the def");
   /* one frame, and keypoints */
   what("frusta_calibrate_hand_def: one frame");

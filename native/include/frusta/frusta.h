@@ -469,14 +469,19 @@ FRUSTA_API frusta_result frusta_hand_joints_from_pose(const frusta_hand_def* def
                                                       frusta_tracked_joint* out, int32_t capacity,
                                                       int32_t* out_count);
 /** Size def from frame_count frames (1..65536; a few seconds of tracking, any poses)
- *  of the layout's joints each, frame after frame: hand_length (wrist to the middle
- *  fingertip, straight) and hand_breadth (the anthropometric breadth whose MCP joints
- *  lie as measured) as frusta_hand_def_set_size refills the def with, then each segment
- *  length measured (the median over the frames, less the noise's bias). A joint counts
- *  when its flags have FRUSTA_JOINT_POSITION_VALID and FRUSTA_JOINT_POSITION_TRACKED.
- *  Side and joint limits are kept; a segment no frame measures keeps its proportional
- *  length. Refused (def unchanged, the message naming the joints) when no frame has
- *  the wrist, the middle finger or the index and little MCP joints. Thread: any. */
+ *  of the layout's joints each, frame after frame. The palm's joints both layouts have
+ *  (wrist, thumb CMC, MCP joints) keep their distances whatever the pose: the palm's
+ *  length and hand_breadth are the anthropometric ones (frusta_hand_def_set_size's
+ *  proportions) that fit those distances best; hand_length is the middle MCP joint's
+ *  distance along the palm plus the middle finger's bones (wrist to the straight
+ *  fingertip). The def is refilled from them, its first joints placed along the hand at
+ *  the palm's measured length, then each segment length is measured (over the frames:
+ *  the mean of the middle half, less the noise's bias). A joint counts when its flags
+ *  have FRUSTA_JOINT_POSITION_VALID and FRUSTA_JOINT_POSITION_TRACKED. Side and joint
+ *  limits are kept; a segment no frame measures keeps its proportional length. Refused
+ *  (def unchanged, the message naming the joints) when the frames never have the middle
+ *  finger's joints, or pairs of palm joints that give both its length and breadth.
+ *  Thread: any. */
 FRUSTA_API frusta_result frusta_calibrate_hand_def(const frusta_tracked_joint* frames,
                                                    int32_t frame_count, int32_t layout,
                                                    frusta_hand_def* def);

@@ -18,8 +18,6 @@ namespace {
 
 constexpr int32_t kCounted = FRUSTA_JOINT_POSITION_VALID | FRUSTA_JOINT_POSITION_TRACKED;
 constexpr int kMiddle = FRUSTA_FINGER_MIDDLE;
-constexpr int kIndex = FRUSTA_FINGER_INDEX;
-constexpr int kLittle = FRUSTA_FINGER_LITTLE;
 // the normal distribution's standard deviation over its median absolute deviation
 constexpr double kMadToSigma = 1.4826;
 
@@ -36,11 +34,18 @@ double median(double* values, int count) {
 }  // namespace
 
 double bone_length(double* samples, int count) {
+  // the mean of the middle half: robust to a quarter of bad frames either way (and to
+  // one of three), and nearer the mean's efficiency on Gaussian noise than the median
+  std::sort(samples, samples + count);
+  const int low = count >= 3 ? std::max(count / 4, 1) : 0, high = count - low;
+  double sum = 0.0;
+  for (int i = low; i < high; ++i) sum += samples[i];
+  const double centre = sum / (high - low);
   const double m = median(samples, count);
   for (int i = 0; i < count; ++i) samples[i] = std::fabs(samples[i] - m);
   const double sigma = kMadToSigma * median(samples, count);
-  // m = d + sigma^2 / d to first order; beyond a noise of half the length, keep half
-  return m > 0.0 ? std::max(m - sigma * sigma / m, 0.5 * m) : m;
+  // centre = d + sigma^2 / d to first order; beyond a noise of half the length, keep half
+  return centre > 0.0 ? std::max(centre - sigma * sigma / centre, 0.5 * centre) : centre;
 }
 
 void HandCalibration::Distances::add(const TrackedJoint& a, const TrackedJoint& b) {
@@ -54,58 +59,75 @@ double HandCalibration::Distances::length() {
 HandCalibration::HandCalibration(int32_t layout, int frames) : layout_(layout) {
   for (auto& finger : bones_)
     for (Distances& bone : finger) bone.reserve(frames);
-  wrist_to_middle_.reserve(frames);
-  index_to_little_.reserve(frames);
+  for (Distances& pair : palm_) pair.reserve(frames);
+}
+
+int HandCalibration::palm_joint(int point) const {
+  return point == 0 ? wrist_joint(layout_) : chain_joint(layout_, point - 1, 0);
 }
 
 void HandCalibration::add_frame(const TrackedJoint* joints) {
   auto chain = [&](int f, int k) -> const TrackedJoint& { return joints[chain_joint(layout_, f, k)]; };
   for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f)
     for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s) bones_[f][s].add(chain(f, s), chain(f, s + 1));
-  wrist_to_middle_.add(joints[wrist_joint(layout_)], chain(kMiddle, 0));
-  index_to_little_.add(chain(kIndex, 0), chain(kLittle, 0));
+  int pair = 0;
+  for (int i = 0; i < kPalmPoints; ++i)
+    for (int j = i + 1; j < kPalmPoints; ++j) palm_[pair++].add(joints[palm_joint(i)], joints[palm_joint(j)]);
   ++frames_;
 }
 
 frusta_result HandCalibration::size(HandDef* def) {
-  const char* missing = wrist_to_middle_.empty() ? "the wrist and the middle finger's MCP joint"
-                        : index_to_little_.empty() ? "the index and the little finger's MCP joints"
-                        : bones_[kMiddle][0].empty() ? "the middle finger's MCP and PIP joints"
-                        : bones_[kMiddle][1].empty() ? "the middle finger's PIP and DIP joints"
-                        : bones_[kMiddle][2].empty() ? "the middle finger's DIP joint and tip"
-                                                     : nullptr;
-  if (missing)
-    return fail(FRUSTA_ERROR_OUT_OF_RANGE,
-                "frames: %s are never tracked together in the %d frames (both need "
-                "FRUSTA_JOINT_POSITION_VALID and FRUSTA_JOINT_POSITION_TRACKED): the hand's "
-                "size cannot be measured", missing, frames_);
-
+  for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s)
+    if (bones_[kMiddle][s].empty())
+      return fail(FRUSTA_ERROR_OUT_OF_RANGE,
+                  "frames: the middle finger's %s are never tracked together in the %d frames "
+                  "(both need FRUSTA_JOINT_POSITION_VALID and FRUSTA_JOINT_POSITION_TRACKED): the "
+                  "hand's length cannot be measured",
+                  s == 0 ? "MCP and PIP joints" : s == 1 ? "PIP and DIP joints" : "DIP joint and tip",
+                  frames_);
   double bone_lengths[FRUSTA_FINGER_COUNT][FRUSTA_SEGMENTS_PER_FINGER] = {};
   for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f)
     for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s)
       if (!bones_[f][s].empty()) bone_lengths[f][s] = bones_[f][s].length();
 
-  // the anthropometry's geometry is linear in length and breadth: its parts per metre
+  // The anthropometry puts the palm's joints at (a L, b B, 0) for hand length L and
+  // breadth B (its geometry is linear in both): a squared distance between two is
+  // da^2 L^2 + db^2 B^2, linear in L^2 and B^2. Least squares over every pair measured,
+  // each weighed by the inverse of its noise's variance (noise on d^2 grows with d).
   HandDef per_length, per_breadth;
   fill_hand_geometry(per_length, 1.0, 0.0);
   fill_hand_geometry(per_breadth, 0.0, 1.0);
-  const double middle_across = per_breadth.base_position[kMiddle][1];
-  const double spread_along = per_length.base_position[kIndex][0] - per_length.base_position[kLittle][0];
-  const double spread_across = per_breadth.base_position[kIndex][1] - per_breadth.base_position[kLittle][1];
-
-  // hand length: the middle MCP joint's distance along the hand plus the finger's bones
-  // (the last to the fingertip's end); breadth: whatever puts the index and little MCP
-  // joints as far apart as measured. Each needs the other a little: iterate.
-  const double wrist_middle = wrist_to_middle_.length();
-  const double index_little = index_to_little_.length();
-  const double finger = bone_lengths[kMiddle][0] + bone_lengths[kMiddle][1] + bone_lengths[kMiddle][2];
-  double breadth = index_little / std::fabs(spread_across), length = 0.0;
-  for (int iteration = 0; iteration < 16; ++iteration) {
-    const double across = middle_across * breadth;
-    length = std::sqrt(std::max(wrist_middle * wrist_middle - across * across, 0.0)) + finger;
-    const double along = spread_along * length;
-    breadth = std::sqrt(std::max(index_little * index_little - along * along, 0.0)) / std::fabs(spread_across);
-  }
+  auto along = [&](int point) { return point == 0 ? 0.0 : per_length.base_position[point - 1][0]; };
+  auto across = [&](int point) { return point == 0 ? 0.0 : per_breadth.base_position[point - 1][1]; };
+  double m[2][2] = {}, rhs[2] = {};
+  int pair = 0;
+  for (int i = 0; i < kPalmPoints; ++i)
+    for (int j = i + 1; j < kPalmPoints; ++j, ++pair) {
+      if (palm_[pair].empty()) continue;
+      const double d = palm_[pair].length();
+      if (!(d > 0.0)) continue;
+      const double a = (along(i) - along(j)) * (along(i) - along(j));
+      const double b = (across(i) - across(j)) * (across(i) - across(j));
+      const double w = 1.0 / (d * d);
+      m[0][0] += w * a * a;
+      m[0][1] += w * a * b;
+      m[1][1] += w * b * b;
+      rhs[0] += w * a * d * d;
+      rhs[1] += w * b * d * d;
+    }
+  const double det = m[0][0] * m[1][1] - m[0][1] * m[0][1];
+  if (!(det > 1e-9 * m[0][0] * m[1][1]))
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE,
+                "frames: the palm's joints (the wrist, the thumb's CMC and the MCP joints) are "
+                "not tracked in pairs that give both the palm's length and its breadth in the %d "
+                "frames (both joints of a pair need FRUSTA_JOINT_POSITION_VALID and "
+                "FRUSTA_JOINT_POSITION_TRACKED)", frames_);
+  const double palm_scale = std::sqrt(std::max((rhs[0] * m[1][1] - rhs[1] * m[0][1]) / det, 0.0));
+  const double breadth = std::sqrt(std::max((rhs[1] * m[0][0] - rhs[0] * m[0][1]) / det, 0.0));
+  // hand length: wrist crease to the straight middle fingertip, its MCP joint where the
+  // palm's scale puts it plus the finger's bones (the last to the fingertip's end)
+  const double length = along(1 + kMiddle) * palm_scale + bone_lengths[kMiddle][0] +
+                        bone_lengths[kMiddle][1] + bone_lengths[kMiddle][2];
   if (!(length >= kMinHandSize && length <= kMaxHandSize && breadth >= kMinHandSize &&
         breadth <= kMaxHandSize))
     return fail(FRUSTA_ERROR_OUT_OF_RANGE,
@@ -114,6 +136,9 @@ frusta_result HandCalibration::size(HandDef* def) {
 
   HandDef sized = *def;
   fill_hand_geometry(sized, length, breadth);
+  // the palm as measured: its joints along the hand at the palm's own scale
+  for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) sized.base_position[f][0] = along(1 + f) * palm_scale;
+  sized.palm_length = sized.base_position[kMiddle][0];
   for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f)
     for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s) {
       if (bones_[f][s].empty()) continue;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// A hand def sized from a few seconds of tracked joints: hand length and breadth
-// inverted through the anthropometry's proportions from distances the palm keeps
-// whatever the pose, and each bone's measured length.
+// A hand def sized from a few seconds of tracked joints: the palm's length and breadth
+// fitted through the anthropometry's proportions to the distances between its joints
+// (they do not change with the pose), and each bone's measured length.
 #pragma once
 
 #include <vector>
@@ -11,7 +11,7 @@
 
 namespace frusta {
 
-// 65536 frames: twelve minutes at 90 Hz, 9 MB of distances.
+// 65536 frames: twelve minutes at 90 Hz, 16 MB of distances.
 constexpr int kMaxCalibrationFrames = 65536;
 
 // Sizes a hand def from frames of tracked joints, given one at a time (they need not
@@ -44,15 +44,21 @@ class HandCalibration {
     std::vector<double> samples_;
   };
 
+  // the wrist and each finger's first joint (the thumb's CMC, the MCPs): the palm's
+  // joints both layouts have, where the anthropometry puts them
+  static constexpr int kPalmPoints = 1 + FRUSTA_FINGER_COUNT;
+  static constexpr int kPalmPairs = kPalmPoints * (kPalmPoints - 1) / 2;
+  int palm_joint(int point) const;
+
   int32_t layout_;
   int frames_ = 0;
   Distances bones_[FRUSTA_FINGER_COUNT][FRUSTA_SEGMENTS_PER_FINGER];
-  Distances wrist_to_middle_, index_to_little_;  // the palm keeps both whatever the pose
+  Distances palm_[kPalmPairs];  // point pairs in order (0, 1), (0, 2), ..., (4, 5)
 };
 
-// The length a bone has when its measured lengths are samples: their median, less the
-// bias noise perpendicular to the bone adds (sigma^2 / length, sigma from the samples'
-// spread along it). Reorders samples.
+// The length a bone has when its measured lengths are samples: their interquartile
+// mean, less the bias noise perpendicular to the bone adds (sigma^2 / length, sigma from
+// the samples' spread along it). Reorders and overwrites samples.
 double bone_length(double* samples, int count);
 
 }  // namespace frusta

@@ -94,7 +94,7 @@ void RigidFit::solve(glm::dquat* rotation, vec3* translation) const {
   *translation = measured_centre - glm::mat3_cast(*rotation) * model_centre;
 }
 
-void symmetric_eigen4(const double matrix[4][4], double eigenvalues[4], double top_vector[4]) {
+int symmetric_eigen4(const double matrix[4][4], double eigenvalues[4], double top_vector[4]) {
   double a[4][4], v[4][4];
   for (int r = 0; r < 4; ++r)
     for (int c = 0; c < 4; ++c) {
@@ -102,15 +102,19 @@ void symmetric_eigen4(const double matrix[4][4], double eigenvalues[4], double t
       v[r][c] = r == c ? 1.0 : 0.0;
     }
   // cyclic Jacobi: rotate away each off-diagonal entry until none is left; quadratic
-  // convergence, a handful of sweeps
-  for (int sweep = 0; sweep < 50; ++sweep) {
-    double off = 0.0, scale = 0.0;
-    for (int r = 0; r < 4; ++r)
-      for (int c = 0; c < 4; ++c) (r == c ? scale : off) += a[r][c] * a[r][c];
-    if (off <= 1e-36 * scale || off == 0.0) break;
+  // convergence, a handful of sweeps. An entry rounding cannot tell from zero beside
+  // its diagonal is zero (Numerical Recipes' test), so the sweeps end.
+  int sweep = 0;
+  while (sweep < 50) {
+    ++sweep;
+    bool rotated = false;
     for (int p = 0; p < 3; ++p) {
       for (int q = p + 1; q < 4; ++q) {
-        if (a[p][q] == 0.0) continue;
+        if (std::fabs(a[p][q]) <= 1e-17 * (std::fabs(a[p][p]) + std::fabs(a[q][q]))) {
+          a[p][q] = a[q][p] = 0.0;
+          continue;
+        }
+        rotated = true;
         const double theta = (a[q][q] - a[p][p]) / (2.0 * a[p][q]);
         const double t = (theta >= 0.0 ? 1.0 : -1.0) / (std::fabs(theta) + std::sqrt(theta * theta + 1.0));
         const double c = 1.0 / std::sqrt(t * t + 1.0), s = t * c;
@@ -131,11 +135,13 @@ void symmetric_eigen4(const double matrix[4][4], double eigenvalues[4], double t
         }
       }
     }
+    if (!rotated) break;
   }
   int order[4] = {0, 1, 2, 3};
   std::sort(order, order + 4, [&](int i, int j) { return a[i][i] > a[j][j]; });
   for (int k = 0; k < 4; ++k) eigenvalues[k] = a[order[k]][order[k]];
   for (int k = 0; k < 4; ++k) top_vector[k] = v[k][order[0]];
+  return sweep;
 }
 
 }  // namespace frusta

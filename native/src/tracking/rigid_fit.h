@@ -43,7 +43,7 @@ class RigidFit {
 };
 
 // Eigenvalues (descending) and the unit eigenvector of the largest of a symmetric 4x4
-// matrix (cyclic Jacobi).
-void symmetric_eigen4(const double matrix[4][4], double eigenvalues[4], double top_vector[4]);
+// matrix (cyclic Jacobi); returns the sweeps it took.
+int symmetric_eigen4(const double matrix[4][4], double eigenvalues[4], double top_vector[4]);
 
 }  // namespace frusta

@@ -333,7 +333,12 @@ TEST_F(capiTracking, CalibrationRefusesByNameAndLeavesTheDefAsItWas) {
   bad = joints;
   for (int i : {1, 12}) bad[static_cast<size_t>(i)].flags = 0;  // the wrist and the middle MCP
   ExpectError(frusta_calibrate_hand_def(bad.data(), 1, 0, &def), FRUSTA_ERROR_OUT_OF_RANGE,
-              "the wrist and the middle finger's MCP joint");
+              "the middle finger's MCP and PIP joints");
+  // the palm's joints (wrist, thumb CMC, MCPs) all missing: neither its length nor breadth
+  bad = joints;
+  for (int i : {1, 2, 7, 17, 22}) bad[static_cast<size_t>(i)].flags = 0;
+  ExpectError(frusta_calibrate_hand_def(bad.data(), 1, 0, &def), FRUSTA_ERROR_OUT_OF_RANGE,
+              "the palm's joints");
   frusta_hand_def hand_built = def;
   hand_built.internal_value = 0;
   ExpectError(frusta_calibrate_hand_def(joints.data(), 1, 0, &hand_built), FRUSTA_ERROR_DEF_NOT_DEFAULTED,

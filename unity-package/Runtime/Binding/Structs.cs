@@ -62,10 +62,10 @@ namespace Frusta.Binding
                 Errors.Check(Native.frusta_hand_def_set_size(self, handLength, handBreadth), "frusta_hand_def_set_size");
         }
 
-        /// <summary>Size this def from tracked joints: hand length and breadth, then each segment
-        /// length measured (the median over the frames, less the noise's bias); side and joint
-        /// limits are kept (<c>frusta_calibrate_hand_def</c>). A few seconds of tracking in any
-        /// poses will do. A joint counts when its flags have
+        /// <summary>Size this def from tracked joints: hand length and breadth fitted to the distances
+        /// between the palm's joints and the middle finger's bones, then each segment length measured
+        /// (over the frames, less the noise's bias); side and joint limits are kept
+        /// (<c>frusta_calibrate_hand_def</c>). A few seconds of tracking in any poses will do. A joint counts when its flags have
         /// <see cref="FrustaJointFlag.PositionValid"/> and <see cref="FrustaJointFlag.PositionTracked"/>.
         /// On error this def is unchanged. Thread: any.</summary>
         /// <param name="frames">Frame after frame, each the layout's joints
