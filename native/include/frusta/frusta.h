@@ -331,7 +331,7 @@ FRUSTA_API frusta_result frusta_hand_point_jacobian(frusta_hand_id hand, int32_t
  * a tip is the fingertip's end: the tip hemisphere's centre plus its radius along the
  * last segment. Palm-rigid joints: the wrist at the hand frame's origin with the hand
  * frame's axes (-Z = +x, +Y = +z); a finger's metacarpal joint (its carpometacarpal
- * joint) on the line from the wrist to its MCP joint, 0.16 of the way, oriented along
+ * joint) on the line from the wrist to its MCP joint, 0.4 of the way, oriented along
  * that line with +Y nearest +z; the palm at the middle of the middle finger's
  * metacarpal, oriented as it. A joint's radius: its ball's (metacarpal: the MCP
  * ball's; palm and wrist: half the palm's thickness). frusta_hand_joints_from_pose

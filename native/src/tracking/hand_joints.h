@@ -33,10 +33,11 @@ constexpr int kChainPoints = 4;
 // Palm-rigid joints of the XR layout: palm, wrist, the thumb's metacarpal joint, four
 // metacarpal and four proximal joints (the keypoints have six of them).
 constexpr int kMaxPalmJoints = 11;
-// A finger's carpometacarpal joint lies on the line from the wrist to its MCP joint,
-// this far along: the anthropometry's wrist-to-CMC over wrist-to-MCP distance of the
-// middle finger (0.072 / 0.445 of hand length).
-constexpr double kCarpometacarpalFraction = 0.16;
+// A finger's metacarpal joint (the base of its metacarpal) lies on the line from the
+// wrist centre to its MCP joint, this far along: where a Meta Quest 3 puts them (0.37 to
+// 0.48; tests/data/tracked_hands). Placing them where the anthropometry's wrist crease
+// would (0.16) left real hands' fingers clamped in half the fits.
+constexpr double kCarpometacarpalFraction = 0.4;
 
 // Joints in a layout (FRUSTA_XR_JOINT_COUNT or FRUSTA_KEYPOINT_COUNT); the layout must
 // be one of frusta_joint_layout (checked at the boundary).
