@@ -63,12 +63,14 @@ bool HandFitter::fit_palm(const TrackedJoint* joints, glm::dquat* rotation, vec3
   if (rigid.point_count() == 0) return false;
   *from_orientation = !rigid.points_fix_rotation();
   const double w = *from_orientation ? kFallbackOrientationWeight : options_.orientation_weight;
-  if (w > 0.0) {
+  // squared: a weight of 1e-300 m is none (its square is 0)
+  const double weight = w * w;
+  if (weight > 0.0) {
     for (int i = 0; i < palm_.count; ++i) {
       const PalmJoint& p = palm_.joints[static_cast<size_t>(i)];
       const TrackedJoint& j = joints[p.index];
       if (p.has_orientation && oriented(j))
-        rigid.add_axes(p.axes, glm::mat3_cast(glm::normalize(j.rotation)), w * w);
+        rigid.add_axes(p.axes, glm::mat3_cast(glm::normalize(j.rotation)), weight);
     }
   }
   if (*from_orientation && rigid.axes_count() == 0) return false;

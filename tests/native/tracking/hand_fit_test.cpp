@@ -253,6 +253,22 @@ TEST(HandFit, TooFewPalmPointsFallBackOnTheWristsOrientation) {
   EXPECT_EQ(fit_once(fitter, joints).palm_flags, FRUSTA_FIT_HELD);
 }
 
+// Orientations weighed in, from a weight too small to square (the hostile test's 1e-300
+// once tripped a debug assertion) to a metre: the exact pose still.
+TEST(HandFit, AnyOrientationWeightFitsExactJointsExactly) {
+  std::mt19937_64 rng(kSeed + 6);
+  const HandModel model = make_hand_model(default_hand_def());
+  const HandState truth = scenes::random_hand_state(model, rng);
+  for (double weight : {1e-300, 1e-160, 0.05, 1.0}) {
+    HandFitOptions options = options_for(kXr);
+    options.orientation_weight = weight;
+    HandFitter fitter(model, options);
+    const HandFit fit = fit_once(fitter, scenes::tracked_joints(model, truth, kXr));
+    EXPECT_LT(glm::length(fit.palm_position - truth.palm_position), 1e-9) << weight;
+    EXPECT_LT(scenes::rotation_angle(fit.palm_rotation, truth.palm_rotation), 1e-9) << weight;
+  }
+}
+
 TEST(HandFit, RequireTrackedTreatsInferredJointsAsMissing) {
   std::mt19937_64 rng(kSeed + 4);
   const HandModel model = make_hand_model(default_hand_def());
