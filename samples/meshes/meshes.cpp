@@ -157,4 +157,21 @@ TriangleMesh make_octahedron(double radius) {
   return outward(m);
 }
 
+TriangleMesh make_prism(const std::vector<std::pair<double, double>>& section, double length) {
+  TriangleMesh m;
+  const uint32_t n = static_cast<uint32_t>(section.size());
+  for (double y : {-0.5 * length, 0.5 * length})
+    for (const auto& [x, z] : section) m.vertices.emplace_back(x, y, z);
+  for (uint32_t i = 0; i < n; ++i) {  // the sides, a quad each
+    const uint32_t j = (i + 1) % n;
+    m.triangles.push_back({i, j, n + j});
+    m.triangles.push_back({i, n + j, n + i});
+  }
+  for (uint32_t i = 1; i + 1 < n; ++i) {  // the two caps, fans (the polygon is convex)
+    m.triangles.push_back({0, i + 1, i});
+    m.triangles.push_back({n, n + i, n + i + 1});
+  }
+  return outward(m);
+}
+
 }  // namespace frusta::scenes

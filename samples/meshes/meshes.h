@@ -4,6 +4,9 @@
 // bake them too.
 #pragma once
 
+#include <utility>
+#include <vector>
+
 #include "bake/triangle_mesh.h"
 
 namespace frusta::scenes {
@@ -22,6 +25,10 @@ TriangleMesh make_bowl(double radius, double thickness, int rings);
 TriangleMesh make_mug(double radius, double height, double wall, int segments);
 // An octahedron: sharp convex edges and vertices.
 TriangleMesh make_octahedron(double radius);
+// A straight prism: a convex polygon (x, z) in the x-z plane, either winding, extruded
+// `length` along y and centred on y = 0. Its side edges are as sharp as the polygon's
+// corners.
+TriangleMesh make_prism(const std::vector<std::pair<double, double>>& section, double length);
 
 // Append b to a (no welding): overlapping parts make a non-manifold union, as in
 // real assets.

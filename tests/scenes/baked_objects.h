@@ -12,6 +12,7 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "spheretree/tree_file.h"
@@ -42,5 +43,25 @@ std::shared_ptr<const TreeFile> test_box(const std::string& name);
 // A box baked now, by the baker (builds without one throw): for what sweeps the bake's
 // own parameters, as the forces benchmark does, and for making the test boxes.
 std::shared_ptr<const TreeFile> baked_box(const vec3& size, double target_error);
+
+// Straight prisms whose side edges are the sharp edges a fingertip slides over
+// (scenes/edge_slides.h), baked at build time like the test boxes.
+struct TestPrism {
+  const char* name;
+  // a convex polygon (x, z), metres, extruded along y (meshes/meshes.h make_prism);
+  // its vertex 0 is the edge the slides are about
+  std::vector<std::pair<double, double>> section;
+  double length;        // along y, metres
+  double target_error;  // metres, the bake's bound
+};
+
+// hex_prism: a regular hexagon 2 cm to its corners, 6 cm long: 120-degree edges
+// edge_box: a 3 x 3 cm square, 6 cm long: 90-degree edges
+// wedge: a right triangle with a 30-degree corner, legs 4 and 2.3 cm, 6 cm long
+const std::vector<TestPrism>& test_prisms();
+const TestPrism& test_prism_spec(const std::string& name);
+std::shared_ptr<const TreeFile> test_prism(const std::string& name);
+// A prism baked now (builds without the baker throw): for making the test prisms.
+std::shared_ptr<const TreeFile> baked_prism(const TestPrism& prism);
 
 }  // namespace frusta::scenes

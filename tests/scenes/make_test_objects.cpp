@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// frusta-make-test-objects OUTDIR: bakes the test boxes (scenes/baked_objects.h) into
-// OUTDIR/<name>.frtree, writes OUTDIR/million_leaves.frtree (a generated plate, not
+// frusta-make-test-objects OUTDIR: bakes the test boxes and prisms (scenes/baked_objects.h)
+// into OUTDIR/<name>.frtree, writes OUTDIR/million_leaves.frtree (a generated plate, not
 // baked) and then OUTDIR/test_objects.json, each object's figures, last: the build's
 // mark that every file is there.
 #include <cstdio>
@@ -45,22 +45,35 @@ int main(int argc, char** argv) {
   }
   const std::string dir = argv[1];
   std::string json = "[\n";
-  for (const frusta::scenes::TestBox& box : frusta::scenes::test_boxes()) {
-    const auto file = frusta::scenes::baked_box(box.size, box.target_error);
-    const std::string path = dir + "/" + box.name + ".frtree";
-    if (frusta::save_tree_file(path, *file) != FRUSTA_OK) {
+  // saves one baked object and adds its figures (after `shape`, its own fields) to json
+  auto save = [&](const char* name, const frusta::TreeFile& file, const std::string& shape,
+                  double target_error) {
+    const std::string path = dir + "/" + name + ".frtree";
+    if (frusta::save_tree_file(path, file) != FRUSTA_OK) {
       std::fprintf(stderr, "frusta-make-test-objects: %s\n", frusta::last_error_message());
-      return 1;
+      return false;
     }
     char line[512];
     std::snprintf(line, sizeof line,
-                  "  {\"name\": \"%s\", \"size_m\": [%g, %g, %g], \"target_error_m\": %g, "
+                  "  {\"name\": \"%s\", %s\"target_error_m\": %g, "
                   "\"uncovered_error_m\": %.3g, \"protruding_error_m\": %.3g, \"leaves\": %zu, "
                   "\"bake_seconds\": %.3f}",
-                  box.name, box.size.x, box.size.y, box.size.z, box.target_error,
-                  file->bake.uncovered_error, file->bake.protruding_error,
-                  file->tree.leaves.size(), file->bake.bake_seconds);
+                  name, shape.c_str(), target_error, file.bake.uncovered_error,
+                  file.bake.protruding_error, file.tree.leaves.size(), file.bake.bake_seconds);
     json += std::string(json.size() > 2 ? ",\n" : "") + line;
+    return true;
+  };
+  for (const frusta::scenes::TestBox& box : frusta::scenes::test_boxes()) {
+    char size[128];
+    std::snprintf(size, sizeof size, "\"size_m\": [%g, %g, %g], ", box.size.x, box.size.y, box.size.z);
+    if (!save(box.name, *frusta::scenes::baked_box(box.size, box.target_error), size, box.target_error))
+      return 1;
+  }
+  for (const frusta::scenes::TestPrism& prism : frusta::scenes::test_prisms()) {
+    char shape[128];
+    std::snprintf(shape, sizeof shape, "\"prism_corners\": %zu, \"length_m\": %g, ",
+                  prism.section.size(), prism.length);
+    if (!save(prism.name, *frusta::scenes::baked_prism(prism), shape, prism.target_error)) return 1;
   }
   if (!write_million_leaves(dir + "/million_leaves.frtree")) {
     std::fprintf(stderr, "frusta-make-test-objects: million_leaves: %s\n", frusta::last_error_message());
