@@ -21,13 +21,14 @@ double finger_motion(const HandReach& reach, int finger, const FingerAngles& fro
 }
 
 FingerStage::FingerStage(const StageInputs& inputs, int finger, const FingerAngles& target,
-                         double motion_cap, HandState& state, HandPose& pose)
+                         double motion_cap, bool slide, HandState& state, HandPose& pose)
     : StageEstimate(state, pose),
       inputs_(inputs),
       finger_(finger),
       target_(target),
       start_(angles(state)),
-      motion_cap_(motion_cap) {
+      motion_cap_(motion_cap),
+      slide_(slide) {
   // never worse than the start, which a rounding or a curvature may have left a hair deep
   floor_ = std::min(-inputs.params.penetration_tolerance, clearance(pose));
 }
@@ -87,6 +88,30 @@ int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights) con
   return count;
 }
 
+int32_t FingerStage::bound_rows(QpRow* rows) const {
+  if (!slide_) return 0;
+  // finger_motion(start, now + d) <= bound exactly: sum_j lever_j s_j (now_j + d_j -
+  // start_j) <= bound for every choice of signs s. The bound takes half the cap's rest,
+  // the rest left for the next linearisations to press back onto a surface this one
+  // stepped off.
+  const FingerAngles now = angles(state_);
+  const double moved = finger_motion(inputs_.reach, finger_, start_, now);
+  const double bound = moved + 0.5 * std::max(0.0, motion_cap_ - moved);
+  int32_t count = 0;
+  for (int signs = 0; signs < (1 << FRUSTA_JOINTS_PER_FINGER); ++signs) {
+    QpRow& row = rows[count++];
+    row.a = {};
+    row.b = -bound;
+    for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j) {
+      const double s = (signs >> j) & 1 ? -1.0 : 1.0;
+      const double lever = inputs_.reach.lever[finger_][j];
+      row.a[static_cast<size_t>(j)] = -s * lever;
+      row.b += s * lever * (now[j] - start_[j]);
+    }
+  }
+  return count;
+}
+
 double FingerStage::clearance(const HandPose& pose) const {
   double gap = 0.0;
   for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s)
@@ -106,6 +131,15 @@ double FingerStage::try_step(const double* d, double s) {
   }
   trial_state_ = state_;
   std::copy(next.begin(), next.end(), trial_state_.angles.begin() + finger_ * FRUSTA_JOINTS_PER_FINGER);
+  return trial_clearance();
+}
+
+double FingerStage::try_between(double s) {
+  blend_trial(s);
+  return trial_clearance();
+}
+
+double FingerStage::trial_clearance() {
   trial_pose_ = pose_;
   finger_kinematics(inputs_.model, trial_state_, finger_, trial_pose_);
   return clearance(trial_pose_);

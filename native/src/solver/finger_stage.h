@@ -23,18 +23,22 @@ class FingerStage : public StageEstimate {
  public:
   // state/pose: the graphic hand, updated in place; target: this stage's goal angles;
   // motion_cap: how far (m) any point may move from where the stage starts.
+  // slide: step within trust_box, the hand held back by its continuity budget
   FingerStage(const StageInputs& inputs, int finger, const FingerAngles& target, double motion_cap,
-              HandState& state, HandPose& pose);
+              bool slide, HandState& state, HandPose& pose);
 
   int dofs() const { return FRUSTA_JOINTS_PER_FINGER; }
   int32_t row_capacity() const;
   int32_t linearise(QpRow* rows, double* target, double* weights) const;
   double try_step(const double* d, double s);
+  double try_between(double s);
+  int32_t bound_rows(QpRow* rows) const;
 
   // The smallest exact gap between this finger and its candidates.
   double clearance(const HandPose& pose) const;
 
  private:
+  double trial_clearance();  // of the trial state, posed
   FingerAngles angles(const HandState& state) const;
 
   const StageInputs inputs_;
@@ -42,6 +46,7 @@ class FingerStage : public StageEstimate {
   FingerAngles target_;
   FingerAngles start_;
   double motion_cap_;
+  bool slide_;
 };
 
 }  // namespace frusta

@@ -19,8 +19,10 @@
 #include <vector>
 
 #include "solver/detection.h"
+#include "solver/palm_stage.h"
 #include "solver/solver_params.h"
 #include "solver/qp.h"
+#include "solver/stage.h"
 
 namespace frusta {
 
@@ -45,6 +47,7 @@ struct StepStats {
   int32_t palm_solves = 0;
   bool depenetrated = false;     // this step placed a hand that started inside
   bool lagging = false;          // the sub-step cap or the deadline stopped the hand short
+  bool rate_limited = false;     // the continuity bound (follow_factor) stopped it short
   bool infeasible = false;       // some QP could not meet every row; the hand stayed safe
 };
 
@@ -90,10 +93,15 @@ class HandSolver {
   const SolverParams& params() const { return params_; }
 
  private:
-  // One sub-step; true when every part reached its own target (or stopped against
-  // objects) without hitting the motion cap.
+  // One sub-step, moving no point further than `budget` (metres, less what it moved);
+  // true when every part reached its own target (or stopped against objects) without
+  // hitting a motion cap.
   bool substep(const HandState& target, const SolverObject* objects, int32_t object_count,
-               StepStats& stats, bool& moved);
+               StepStats& stats, double& budget, bool& moved);
+  // A stage built by make(slide) solved on the graphic hand; where `budget_binds` and the
+  // stage was cut short, solved again sliding from where it started (slid is set).
+  template <class MakeStage>
+  StageStats solve_within_budget(MakeStage make, bool budget_binds, bool& slid);
   void report_contacts();
 
   HandModel model_;
@@ -103,6 +111,10 @@ class HandSolver {
   HandState graphic_;
   HandPose pose_;
   HandPose target_pose_;
+  HandState last_target_;      // the last step's target: how far the haptic hand moves
+  double unfinished_ = 0.0;    // motion allowed but not made for the deadline, metres
+  double recent_move_ = 0.0;   // how far the haptic hand moves a step, lately (follow_decay)
+  PalmHeading heading_;        // this step's: the graphic palm does not go back against it
   CandidateSet candidates_;
   std::array<bool, FRUSTA_FINGER_COUNT> settled_{};  // per sub-step: reached or stopped
   std::vector<QpRow> rows_;

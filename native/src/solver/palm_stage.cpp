@@ -47,12 +47,14 @@ void set_row(QpRow& row, const vec3& grad_translation, const vec3& grad_rotation
 }  // namespace
 
 PalmStage::PalmStage(const StageInputs& inputs, const PalmPlacement& target, double motion_cap,
-                     HandState& state, HandPose& pose)
+                     const PalmHeading& heading, bool slide, HandState& state, HandPose& pose)
     : StageEstimate(state, pose),
       inputs_(inputs),
       target_(target),
       start_(placement(state)),
-      motion_cap_(motion_cap) {
+      motion_cap_(motion_cap),
+      heading_(heading),
+      slide_(slide) {
   const double start_gap = clearance(pose);
   floor_ = std::min(-inputs.params.penetration_tolerance, start_gap);
   recovering_ = start_gap < -kRecoveryTolerances * inputs.params.penetration_tolerance;
@@ -103,6 +105,27 @@ int32_t PalmStage::linearise(QpRow* rows, double* target, double* weights) const
     set_row(rows[count++], g.grad_hand, glm::cross(hand.center - palm, g.grad_hand),
             row_bound(inputs_.params, g.value, hand.radius + c[i].world.radius));
   }
+  if (heading_.way != vec3(0.0))
+    set_row(rows[count++], heading_.way, vec3(0.0),
+            -heading_.slack - glm::dot(heading_.way, state_.palm_position - heading_.from));
+  return count;
+}
+
+int32_t PalmStage::bound_rows(QpRow* rows) const {
+  if (!slide_) return 0;
+  // the step moves no point further than |dt| + |dw| reach <= |dt|_1 + |dw|_1 reach: that
+  // kept within half the bound's rest (the rest left for the next linearisations to
+  // press back onto a surface this one stepped off), for every choice of signs
+  const double rest =
+      0.5 * std::max(0.0, motion_cap_ - palm_motion(inputs_.reach, start_, placement(state_)));
+  int32_t count = 0;
+  for (int signs = 0; signs < (1 << 6); ++signs) {
+    QpRow& row = rows[count++];
+    for (int k = 0; k < 6; ++k)
+      row.a[static_cast<size_t>(k)] =
+          ((signs >> k) & 1 ? 1.0 : -1.0) * (k < 3 ? 1.0 : inputs_.reach.hand);
+    row.b = -rest;
+  }
   return count;
 }
 
@@ -121,6 +144,15 @@ double PalmStage::try_step(const double* d, double s) {
     capped_ = true;
     return -INFINITY;
   }
+  return trial_clearance();
+}
+
+double PalmStage::try_between(double s) {
+  blend_trial(s);
+  return trial_clearance();
+}
+
+double PalmStage::trial_clearance() {
   forward_kinematics(inputs_.model, trial_state_, trial_pose_);
   return clearance(trial_pose_);
 }

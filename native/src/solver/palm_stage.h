@@ -22,30 +22,48 @@ double palm_motion(const HandReach& reach, const PalmPlacement& from, const Palm
 // The rotation vector taking `from` to `to` (world frame), the short way round.
 vec3 rotation_between(const glm::dquat& from, const glm::dquat& to);
 
+// The way the haptic palm moved this step (unit, or 0 where it did not): the graphic palm
+// goes no further back against it than `slack` (metres) from where it was, `from`. A
+// palm trailing the haptic one then closes the gap, and with it the force (seed eq. 12),
+// no faster than the haptic palm moves, even where the haptic hand turns back.
+struct PalmHeading {
+  vec3 from{0.0};
+  vec3 way{0.0};
+  double slack = 0.0;
+};
+
 // A hand that starts a sub-step deeper than this many penetration tolerances (an object
 // moved into it) is lifted out by the palm, fingers and all.
 constexpr double kRecoveryTolerances = 10.0;
 
 class PalmStage : public StageEstimate {
  public:
+  // motion_cap: how far (m) any point may move from where the stage starts; heading: the
+  // way it may not go back; slide: step within bound_rows (the hand held back by its
+  // continuity budget)
   PalmStage(const StageInputs& inputs, const PalmPlacement& target, double motion_cap,
-            HandState& state, HandPose& pose);
+            const PalmHeading& heading, bool slide, HandState& state, HandPose& pose);
 
   int dofs() const { return 6; }
   int32_t row_capacity() const {
-    return static_cast<int32_t>(inputs_.candidates.candidates.size());
+    return static_cast<int32_t>(inputs_.candidates.candidates.size()) + 1;
   }
   int32_t linearise(QpRow* rows, double* target, double* weights) const;
   double try_step(const double* d, double s);
+  double try_between(double s);
+  int32_t bound_rows(QpRow* rows) const;
 
   // The smallest exact gap between the whole hand and every candidate.
   double clearance(const HandPose& pose) const;
 
  private:
+  double trial_clearance();  // of the trial state, posed
   const StageInputs inputs_;
   PalmPlacement target_;
   PalmPlacement start_;
   double motion_cap_;
+  PalmHeading heading_;
+  bool slide_;
   bool recovering_ = false;  // started deep: finger rows push out too
 };
 

@@ -30,6 +30,19 @@ struct SolverParams {
   int32_t max_iterations = 2;
   int32_t qp_iteration_cap = 64;        // active-set changes per QP
   int32_t max_substeps = 64;            // per step; beyond, the graphic hand lags behind
+  // Continuity (a proxy's bound): in a step, no point of the graphic hand moves further
+  // than follow_factor times the most any point of the haptic hand moved, plus
+  // follow_slack (metres). Where the nearest free hand jumps (a fingertip rolling round
+  // a sharp edge pressed deep, or stuck and let go) the graphic hand follows over a few
+  // steps instead, and the forces with it. Moves the solver did not finish because its
+  // deadline or sub-step cap stopped it are made up on later steps.
+  double follow_factor = 2.0;
+  double follow_slack = 5e-5;
+  // ... where "moved" is the haptic hand's move this step or, when it slows, the last
+  // steps' fading by this factor a step: a graphic hand held back while the haptic hand
+  // closed fast round a ball catches up as the haptic hand stops, in a few steps rather
+  // than at follow_slack a step (a second). At a steady speed it is this step's move.
+  double follow_decay = 0.9;
   // -1: contact spheres are the leaves. A level >= 0 uses the tree's nodes there (and
   // leaves above it) instead: fewer, larger spheres, a hand stopping short of the
   // leaves by up to their excess. A time-against-error knob.

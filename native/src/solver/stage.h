@@ -53,6 +53,8 @@ class StageEstimate {
     state_ = saved_state_;
     pose_ = saved_pose_;
   }
+  // the trial a fraction s of the way from the last saved estimate to the current one
+  void blend_trial(double s) { trial_state_ = interpolate(saved_state_, state_, s); }
 
  protected:
   HandState& state_;
@@ -77,6 +79,10 @@ inline double row_bound(const SolverParams& params, double value, double reach) 
 //     weights for the step d from the current estimate;
 //   double try_step(const double* d, double s): the smallest gap at current + s d, or
 //     -infinity when that moves the hand further than the stage allows;
+//   double try_between(double s): the same for the trial a fraction s of the way from
+//     the last estimate save() kept to the current one;
+//   int32_t bound_rows(QpRow* rows): when sliding, rows (at most kMaxBoundRows) that keep
+//     the next step within the stage's motion bound; else none;
 //   bool capped(): whether some trial was refused for moving too far;
 //   void commit(): make the last trial the current estimate;
 //   void save() / restore(): keep / return to an estimate that meets floor().
@@ -84,22 +90,33 @@ inline double row_bound(const SolverParams& params, double value, double reach) 
 // Steps are taken whole (SQP converges fast that way) even when the curvature the
 // linearisation missed leaves a trial a hair inside an object: the next linearisation
 // pulls it back out. Only a trial deeper than kWorkingDepth is halved. If the last
-// estimate still sinks below floor(), the stage ends at the last one that did not.
+// estimate still sinks below floor(), the stage ends at the furthest point that does
+// not on the way to it from the last estimate that did (bisected): ending at that last
+// estimate itself dropped the whole move whenever the rows' linearisation missed, for
+// instance where a small leaf on a sharp edge crosses the crease between a segment's
+// side and its end ball; the hand then stood still while the haptic hand moved on, and
+// jumped when a step at last landed clear (8 mm in a step on a 30-degree wedge).
 constexpr int kMaxHalvings = 16;  // 2^-16 of a step is not worth re-linearising for
+constexpr int kBisections = 8;  // 1/256 of the last step: less is not worth its cost
+constexpr int32_t kMaxBoundRows = 64;  // the palm's 2^6 faces of its motion bound
 constexpr double kWorkingDepth = 2.5e-4;  // metres
 
 template <class Problem>
 StageStats solve_stage(Problem& problem, const SolverParams& params, std::vector<QpRow>& rows) {
   StageStats stats;
   const int n = problem.dofs();
-  if (rows.size() < static_cast<size_t>(problem.row_capacity()))
-    rows.resize(static_cast<size_t>(problem.row_capacity()));
+  const size_t capacity = static_cast<size_t>(problem.row_capacity() + kMaxBoundRows);
+  if (rows.size() < capacity) rows.resize(capacity);
   const double working_floor = std::min(problem.floor(), -kWorkingDepth);
   bool safe = true;
   problem.save();
   for (int32_t it = 0; it < params.max_iterations; ++it) {
     double target[kMaxQpVariables] = {}, weights[kMaxQpVariables] = {}, d[kMaxQpVariables] = {};
-    const int32_t count = problem.linearise(rows.data(), target, weights);
+    int32_t count = problem.linearise(rows.data(), target, weights);
+    // A hand held back by its budget steps within rows that keep it inside its bound
+    // (sliding as far as they allow, pressed on the surface by the target behind it),
+    // rather than towards its target cut short (off the surface, in the air)
+    count += problem.bound_rows(rows.data() + count);
     const QpResult qp =
         solve_projection_qp(n, weights, target, rows.data(), count, params.qp_iteration_cap, d);
     stats.qp_iterations += qp.iterations;
@@ -120,7 +137,17 @@ StageStats solve_stage(Problem& problem, const SolverParams& params, std::vector
     if (safe) problem.save();
     if (!(largest * s > params.convergence)) break;
   }
-  if (!safe) problem.restore();
+  if (!safe) {
+    double reached = 0.0, beyond = 1.0;  // fractions of the way: clear, and not
+    for (int halving = 0; halving < kBisections; ++halving) {
+      const double s = 0.5 * (reached + beyond);
+      (problem.try_between(s) >= problem.floor() ? reached : beyond) = s;
+    }
+    if (reached > 0.0 && problem.try_between(reached) >= problem.floor())
+      problem.commit();
+    else
+      problem.restore();
+  }
   stats.capped = problem.capped();
   return stats;
 }
