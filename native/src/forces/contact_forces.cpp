@@ -16,8 +16,8 @@ const ForceMaterial kDefaultMaterial{};
 
 }  // namespace
 
-ContactForces::ContactForces(int32_t capacity)
-    : capacity_(std::max(capacity, 0)), grouping_(capacity_) {
+ContactForces::ContactForces(int32_t capacity, double contact_distance)
+    : capacity_(std::max(capacity, 0)), grouping_(capacity_, contact_distance) {
   patches_.reserve(static_cast<size_t>(capacity_));
   next_patches_.reserve(static_cast<size_t>(capacity_));
   forces_.reserve(static_cast<size_t>(capacity_));
@@ -59,7 +59,16 @@ void ContactForces::update(const HandPose& graphic, const HandPose& haptic,
         old < patches_.size() && !precedes(patch.key, patches_[old].key) ? &patches_[old] : nullptr;
 
     const PatchPress press = patch_press(patch, before ? &before->depth : nullptr, time_step_);
-    vec3 patch_force(0.0);
+    const vec3 patch_force = normal_force(material, object.rotation, press);
+    const bool pressing = press.engaged > 0.0 && press.depth > 0.0;
+    PatchFriction friction;
+    if (pressing) {
+      friction = patch_friction(material, object, haptic_body_frame(haptic, patch.key.body),
+                                press.normal, patch.haptic_sum / patch.weight_sum, patch_force,
+                                before ? &before->friction : nullptr, time_step_);
+      // nothing pressed, nothing held: a patch that lets go starts afresh
+      next_patches_.push_back({patch.key, friction.anchor, press.depth});
+    }
     for (int32_t k = patch.begin; k < patch.end; ++k) {
       const PatchContact& p = grouped[static_cast<size_t>(k)];
       const SolverContact& c = contacts[p.index];
@@ -71,29 +80,13 @@ void ContactForces::update(const HandPose& graphic, const HandPose& haptic,
       out.graphic_point = c.hand_point;
       out.haptic_point = p.haptic_point;
       out.normal = c.normal;
-      out.normal_force = vec3(0.0);
-      out.friction = vec3(0.0);
-      out.slipping = false;
-      if (p.depth <= 0.0) continue;
-      out.normal_force = normal_force(material, object.rotation, c.normal,
-                                      glm::length(c.hand_point - p.haptic_point), press);
-      patch_force += out.normal_force;
-    }
-    counts.pressing += patch.pressing;
-    if (patch.pressing == 0) continue;  // nothing pressed, nothing held: the patch starts afresh
-
-    const PatchFriction friction =
-        patch_friction(material, object, haptic_body_frame(haptic, patch.key.body),
-                       glm::normalize(patch.normal_sum), patch.haptic_sum * press.share,
-                       patch_force, before ? &before->friction : nullptr, time_step_);
-    next_patches_.push_back({patch.key, friction.anchor, press.depth});
-    for (int32_t k = patch.begin; k < patch.end; ++k) {
-      const PatchContact& p = grouped[static_cast<size_t>(k)];
-      if (p.depth <= 0.0) continue;
-      ContactForce& out = forces_[static_cast<size_t>(p.index)];
-      out.friction = press.share * friction.force;
-      out.slipping = friction.slipping;
-      counts.slipping += friction.slipping ? 1 : 0;
+      const bool shares = pressing && p.weight > 0.0;
+      const double share = shares ? p.weight / patch.weight_sum : 0.0;
+      out.normal_force = share * patch_force;
+      out.friction = share * friction.force;
+      out.slipping = shares && friction.slipping;
+      counts.pressing += shares ? 1 : 0;
+      counts.slipping += out.slipping ? 1 : 0;
     }
   }
   // patches absent this step are not carried over: their stretch goes

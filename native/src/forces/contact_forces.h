@@ -2,10 +2,10 @@
 // The force at each contact between the graphic hand and an object (seed [0160]-[0165]).
 // P_ig is the touching point on the graphic hand, P_ih the same material point on the
 // haptic hand (the glove), n the unit normal from the object towards the hand. A step
-// groups the contacts into patches (forces/contact_patches.h), gives each pressing
-// contact its normal force (forces/normal_force.h) and each pressing patch its friction
-// (forces/friction.h). Patches keep their friction from step to step in a table sized
-// once; a step allocates nothing.
+// groups the contacts into patches (forces/contact_patches.h), gives each pressing patch
+// its normal force (forces/normal_force.h) and its friction (forces/friction.h), shared
+// among its contacts by weight. Patches keep their friction from step to step in a
+// table sized once; a step allocates nothing.
 #pragma once
 
 #include <cstdint>
@@ -38,7 +38,7 @@ struct ContactForce {
 };
 
 struct ContactForceStats {
-  int32_t pressing = 0;  // contacts whose haptic point lies inside: (P_ig - P_ih) . n > 0
+  int32_t pressing = 0;  // contacts sharing a patch's push: its gap points out of the object
   int32_t slipping = 0;
   int32_t dropped = 0;  // contacts beyond the table's capacity, left out this step
 };
@@ -46,8 +46,10 @@ struct ContactForceStats {
 class ContactForces {
  public:
   // Reserves room for `capacity` contacts (a negative count is 0); nothing is allocated
-  // afterwards.
-  explicit ContactForces(int32_t capacity = kDefaultForceContactCapacity);
+  // afterwards. `contact_distance` (>= 0): the solver's (SolverParams), over which a
+  // contact's share fades out.
+  explicit ContactForces(int32_t capacity = kDefaultForceContactCapacity,
+                         double contact_distance = SolverParams{}.contact_distance);
 
   // One step: the forces at `contacts` (a HandSolver's contacts() after its step), the
   // graphic hand at `graphic` (its graphic_pose()) and the haptic hand at `haptic` (its

@@ -29,9 +29,22 @@ vec3 same_point_on_haptic(const HandPose& graphic, const HandPose& haptic, int32
   return segment_point(haptic, finger, segment, local);
 }
 
+// How near a contact is: 1 touching (or a hair inside), 0 at `fade` and beyond,
+// straight in between.
+double nearness(double distance, double fade) {
+  return !(distance > 0.0) ? 1.0 : distance < fade ? 1.0 - distance / fade : 0.0;
+}
+
+// How a contact presses, from its depth (P_ig - P_ih) . n: 0 not pressing, 1 from `ramp`
+// on, straight in between.
+double pressing(double depth, double ramp) {
+  return !(depth > 0.0) ? 0.0 : depth < ramp ? depth / ramp : 1.0;
+}
+
 }  // namespace
 
-ContactPatches::ContactPatches(int32_t capacity) {
+ContactPatches::ContactPatches(int32_t capacity, double contact_distance)
+    : contact_distance_(contact_distance) {
   const size_t n = static_cast<size_t>(std::max(capacity, 0));
   order_.reserve(n);
   contacts_.reserve(n);
@@ -57,7 +70,8 @@ void ContactPatches::group(const HandPose& graphic, const HandPose& haptic,
     PatchContact& p = contacts_[k];
     p.index = order_[k];
     p.haptic_point = same_point_on_haptic(graphic, haptic, c.body, c.hand_point);
-    p.depth = glm::dot(c.hand_point - p.haptic_point, c.normal);
+    p.press = pressing(glm::dot(c.hand_point - p.haptic_point, c.normal), 0.5 * contact_distance_);
+    p.weight = nearness(c.distance, contact_distance_) * p.press;
   }
 
   patches_.clear();
@@ -69,11 +83,11 @@ void ContactPatches::group(const HandPose& graphic, const HandPose& haptic,
       const PatchContact& p = contacts_[static_cast<size_t>(end)];
       const SolverContact& c = contacts[p.index];
       if (c.object != patch.key.object || c.body != patch.key.body) break;
-      if (p.depth <= 0.0) continue;
-      ++patch.pressing;
-      patch.haptic_sum += p.haptic_point;
-      patch.normal_sum += c.normal;
-      patch.depth_sum += p.depth;
+      patch.weight_sum += p.weight;
+      if (p.weight > 0.0) patch.press_sum += p.press;
+      patch.gap_sum += p.weight * (c.hand_point - p.haptic_point);
+      patch.normal_sum += p.weight * c.normal;
+      patch.haptic_sum += p.weight * p.haptic_point;
     }
     patch.begin = begin;
     patch.end = end;
