@@ -6,9 +6,13 @@
 //  - the deep grasp against balls of 10^2..10^6 leaves, and the time-against-error
 //    knobs (Delta_r, iteration cap, tree level) at 10^4 leaves;
 //  - the thread question: a finger's solve against a thread hand-off, measured;
+//  - a fingertip slid over sharp edges (scenes/edge_slides.h), per shape and speed over
+//    every path and depth: the force's change per step (max, p99) against the contact
+//    stiffness x the haptic move, its turn, the graphic fingertip's move per step against
+//    twice the haptic one, the step time and the penetration;
 //  - with FRUSTA_WITH_MUJOCO, the same grasp in MuJoCo, side by side.
 // Prints one JSON document. Step times exclude the penetration checks. Arguments name
-// the sections to run (scenarios free forms leaves knobs threads; default all); flags such
+// the sections to run (scenarios free edges forms leaves knobs threads; default all); flags such
 // as tools/bench's --benchmark_format are ignored.
 #include <algorithm>
 #include <atomic>
@@ -26,7 +30,9 @@
 #include "hand/anthropometry.h"
 #include "hand/hand_model.h"
 #include "bench_sections.h"
+#include "forces/force_params.h"
 #include "scenes/baked_objects.h"
+#include "scenes/edge_slides.h"
 #include "scenes/hand_scenarios.h"
 #include "solver/hand_solver.h"
 #ifdef FRUSTA_WITH_MUJOCO
@@ -221,6 +227,47 @@ int main(int argc, char** argv) {
     std::printf("\"free_space_20_objects\": {");
     print_measured(m);
     std::printf("},\n");
+  }
+
+  // a fingertip slid over sharp edges: continuity and its cost, per shape and speed
+  if (wanted("edges")) {
+    std::printf("\"edges\": [\n");
+    const std::vector<std::string> shapes = scenes::edge_shape_names();
+    const double speeds[] = {0.1, 0.5, 1.0};
+    for (size_t i = 0; i < shapes.size(); ++i)
+      for (size_t v = 0; v < std::size(speeds); ++v) {
+        std::vector<double> jumps, turns, step_us;
+        double move = 0.0, move_excess = -INFINITY, force_excess = -INFINITY, deepest = 0.0, most = 0.0;
+        int32_t failed = 0;
+        for (const scenes::EdgePath path : scenes::kEdgePaths)
+          for (int mm = 1; mm <= 5; ++mm) {
+            const scenes::HandScenario s = scenes::edge_slide(shapes[i], path, speeds[v], mm * 1e-3);
+            const std::vector<scenes::EdgeSlideStep> log = scenes::run_edge_slide(s, defaults, true, true);
+            failed += s.steps - static_cast<int32_t>(log.size());
+            for (const scenes::EdgeSlideStep& k : log) {
+              jumps.push_back(k.force_change);
+              turns.push_back(k.force_turn);
+              step_us.push_back(k.step_us);
+              move = std::max(move, k.graphic_move);
+              move_excess = std::max(move_excess, k.graphic_move - 2.0 * k.haptic_move);
+              force_excess = std::max(force_excess, k.force_change - kDefaultContactStiffness * k.haptic_move);
+              deepest = std::max(deepest, k.penetration);
+              most = std::max(most, k.force);
+            }
+          }
+        std::printf("  {\"shape\": \"%s\", \"speed_m_s\": %.1f, \"steps\": %zu, \"failed_steps\": %d, "
+                    "\"force_jump_max_n\": %.4f, \"force_jump_p99_n\": %.4f, "
+                    "\"force_jump_over_stiffness_x_move_max_n\": %.4f, \"force_turn_max_n\": %.4f, "
+                    "\"force_turn_p99_n\": %.4f, \"graphic_move_max_mm\": %.4f, "
+                    "\"graphic_move_over_twice_haptic_max_mm\": %.4f, \"max_force_n\": %.3f, "
+                    "\"p50_us\": %.2f, \"p99_us\": %.2f, \"max_us\": %.2f, \"max_penetration_mm\": %.6f}%s\n",
+                    shapes[i].c_str(), speeds[v], jumps.size(), failed, percentile(jumps, 1.0),
+                    percentile(jumps, 0.99), force_excess, percentile(turns, 1.0), percentile(turns, 0.99),
+                    move * 1e3, move_excess * 1e3, most, percentile(step_us, 0.5), percentile(step_us, 0.99),
+                    percentile(step_us, 1.0), deepest * 1e3,
+                    i + 1 == shapes.size() && v + 1 == std::size(speeds) ? "" : ",");
+      }
+    std::printf("],\n");
   }
 
   // the two constraint forms on the same scripts
