@@ -115,13 +115,21 @@ namespace Frusta.Binding.Tests
                 sum += total;
                 torque += Vector3d.Cross(c.GraphicPoint - boxDef.Pose.Position, total);
             }
-            // each pressing contact carries k |P_g - P_h| shared among its patch's pressing contacts
+            // each patch (one body on the box) pushes once, k times its contacts' weighted
+            // mean gap P_g - P_h along their mean normal, shared by weight: its contacts push
+            // the same way, and in all by no more than k times their largest gap and no less
+            // than k times their smallest gap along that way (3 mm deep, every contact presses
+            // fully)
             foreach (var patch in contacts.Take(n).Where(c => c.NormalForce.Length > 0).GroupBy(c => c.Body))
             {
-                int pressing = patch.Count();
+                Vector3d push = patch.Aggregate(Vector3d.Zero, (a, c) => a + c.NormalForce);
+                Vector3d way = push / push.Length;
                 foreach (var c in patch)
-                    Near(Stiffness * (c.GraphicPoint - c.HapticPoint).Length / pressing, c.NormalForce.Length,
-                         1e-9 * Stiffness, $"normal force of a contact on body {c.Body}");
+                    Near(0.0, Vector3d.Cross(c.NormalForce, way).Length, 1e-9 * push.Length,
+                         $"normal force of a contact on body {c.Body} along its patch's");
+                double largest = patch.Max(c => (c.GraphicPoint - c.HapticPoint).Length);
+                double smallest = patch.Min(c => Vector3d.Dot(c.GraphicPoint - c.HapticPoint, way));
+                Assert.InRange(push.Length, Stiffness * smallest * (1 - 1e-9), Stiffness * largest * (1 + 1e-9));
             }
             Assert.Contains(contacts.Take(n), c => c.Body == (int)FrustaFinger.Index * 3 + 2);
             Assert.True(sum.Z > 0, $"the contacts push the hand up: {sum}");
