@@ -123,7 +123,7 @@ namespace Frusta.Binding.Tests
             foreach (var patch in contacts.Take(n).Where(c => c.NormalForce.Length > 0).GroupBy(c => c.Body))
             {
                 Vector3d push = patch.Aggregate(Vector3d.Zero, (a, c) => a + c.NormalForce);
-                Vector3d way = push / push.Length;
+                Vector3d way = push * (1.0 / push.Length);
                 foreach (var c in patch)
                     Near(0.0, Vector3d.Cross(c.NormalForce, way).Length, 1e-9 * push.Length,
                          $"normal force of a contact on body {c.Body} along its patch's");
