@@ -11,7 +11,7 @@ namespace Frusta.Binding.Tests
 {
     public class HandFitterTests
     {
-        static double[] InteriorAngles(in FrustaHandDef def, Random random)
+        internal static double[] InteriorAngles(in FrustaHandDef def, Random random)
         {
             var angles = new double[FrustaConstants.HandJointCount];
             for (int j = 0; j < angles.Length; ++j)
@@ -23,7 +23,7 @@ namespace Frusta.Binding.Tests
             return angles;
         }
 
-        static FrustaPose RandomPose(Random random)
+        internal static FrustaPose RandomPose(Random random)
         {
             var q = new Quaterniond(random.NextDouble() - 0.5, random.NextDouble() - 0.5, random.NextDouble() - 0.5,
                                     random.NextDouble() + 0.1);
