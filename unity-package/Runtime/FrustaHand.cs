@@ -87,6 +87,27 @@ namespace Frusta.Unity
         /// haptic source are not used.</summary>
         public bool DrivenByDevice { get; internal set; }
 
+        /// <summary>A component that sets this hand's haptic input itself (hand tracking, e.g.
+        /// FrustaXRHandsInput, through <see cref="World.SetHaptic(FrustaHandId, in FrustaHandFit)"/>
+        /// with <see cref="Id"/>); while set, the hand does not send its haptic source and angles.</summary>
+        public UnityEngine.Object InputOwner { get; set; }
+
+        /// <summary>The def the hand is in its world with: the inspector's, or the last given to
+        /// <see cref="Rebuild"/>.</summary>
+        public FrustaHandDef Def => def;
+
+        /// <summary>Put the hand in its world again with another def (a world hand's def is fixed):
+        /// a calibrated size, say. Its <see cref="Id"/> changes; a glove driving it reopens.</summary>
+        /// <param name="newDef">The hand's new def.</param>
+        public void Rebuild(in FrustaHandDef newDef)
+        {
+            Release();
+            def = newDef;
+            handLength = (float)newDef.HandLength;
+            handBreadth = (float)newDef.HandBreadth;
+            if (isActiveAndEnabled) Register();
+        }
+
         /// <summary>The latest graphic and haptic state (valid once <see cref="FrustaWorldHand.Solved"/>;
         /// unsolved until a step has taken in a hand added at run time).</summary>
         public ref readonly FrustaWorldHand State => ref latest;
@@ -176,7 +197,7 @@ namespace Frusta.Unity
         void Update()
         {
             World w = world != null ? world.World : null;
-            if (w == null || id.IsNull || DrivenByDevice) return;
+            if (w == null || id.IsNull || DrivenByDevice || InputOwner != null) return;
             w.SetHaptic(id, HapticSource.ToFrustaPose(), angles);
         }
 

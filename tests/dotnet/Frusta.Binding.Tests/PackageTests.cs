@@ -56,7 +56,8 @@ namespace Frusta.Binding.Tests
         public void AssemblyDefinitionsAreTheOnesTheLayoutNeedsAndTheirReferencesResolve()
         {
             var asmdefs = Asmdefs();
-            Assert.Equal(new[] { "Frusta.Binding", "Frusta.Editor", "Frusta.Editor.Tests", "Frusta.Runtime", "Frusta.Runtime.Tests" },
+            Assert.Equal(new[] { "Frusta.Binding", "Frusta.Editor", "Frusta.Editor.Tests", "Frusta.Runtime", "Frusta.Runtime.Tests",
+                                 "Frusta.XRHands" },
                          asmdefs.Keys.OrderBy(k => k, StringComparer.Ordinal).ToArray());
             var all = asmdefs.Keys.ToHashSet();
             all.Add("Frusta.Samples.HandDemo");
@@ -64,7 +65,8 @@ namespace Frusta.Binding.Tests
             {
                 Assert.Equal(name, Path.GetFileNameWithoutExtension(path));
                 foreach (string r in Strings(json, "references"))
-                    Assert.True(asmdefs.ContainsKey(r) || UnityAssemblies.Contains(r), $"{name} references {r}, which is not in the package");
+                    Assert.True(asmdefs.ContainsKey(r) || UnityAssemblies.Contains(r) || (name, r) == ("Frusta.XRHands", "Unity.XR.Hands"),
+                                $"{name} references {r}, which is not in the package");
             }
 
             JsonElement binding = asmdefs["Frusta.Binding"].Json;
@@ -85,6 +87,17 @@ namespace Frusta.Binding.Tests
                 Assert.Contains("UnityEngine.TestRunner", Strings(t, "references"));
             }
             Assert.Equal(new[] { "Editor" }, Strings(asmdefs["Frusta.Editor.Tests"].Json, "includePlatforms"));
+
+            // the XR Hands input compiles only where com.unity.xr.hands (1.1 on: XRHand.isTracked) is
+            // installed: its define comes from that package's version, and constrains the assembly
+            JsonElement xrHands = asmdefs["Frusta.XRHands"].Json;
+            Assert.Equal(new[] { "FRUSTA_XR_HANDS" }, Strings(xrHands, "defineConstraints"));
+            var defines = xrHands.GetProperty("versionDefines").EnumerateArray()
+                .ToDictionary(d => d.GetProperty("define").GetString(),
+                              d => (d.GetProperty("name").GetString(), d.GetProperty("expression").GetString()));
+            Assert.Equal(("com.unity.xr.hands", "1.1.0"), defines["FRUSTA_XR_HANDS"]);
+            Assert.Equal(("com.unity.xr.hands", "1.5.0"), defines["FRUSTA_XR_HANDS_1_5"]);
+            Assert.Contains("Unity.XR.Hands", Strings(xrHands, "references"));
         }
 
         [Fact]
