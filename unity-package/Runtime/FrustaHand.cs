@@ -22,14 +22,19 @@ namespace Frusta.Unity
         public struct BoneMapping
         {
             /// <summary>The rig's bone.</summary>
+            [Tooltip("The rig's bone.")]
             public Transform bone;
             /// <summary>The finger.</summary>
+            [Tooltip("The finger.")]
             public FrustaFinger finger;
             /// <summary>Segment 0..2, proximal to distal.</summary>
+            [Tooltip("Segment 0..2, proximal to distal.")]
             [Range(0, 2)] public int segment;
             /// <summary>The bone's local axis the flexion turns about (towards the palm positive).</summary>
+            [Tooltip("The bone's local axis the flexion turns about (towards the palm positive).")]
             public Vector3 flexionAxis;
             /// <summary>The bone's local axis the abduction turns about (first segment only).</summary>
+            [Tooltip("The bone's local axis the abduction turns about (first segment only).")]
             public Vector3 abductionAxis;
             [NonSerialized] internal Quaternion rest;
         }
@@ -39,27 +44,36 @@ namespace Frusta.Unity
         public struct SegmentOverride
         {
             /// <summary>The finger.</summary>
+            [Tooltip("The finger.")]
             public FrustaFinger finger;
             /// <summary>Segment 0..2.</summary>
+            [Tooltip("Segment 0..2, proximal to distal.")]
             [Range(0, 2)] public int segment;
             /// <summary>Metres; 0 keeps the proportional length.</summary>
+            [Tooltip("Metres; 0 keeps the proportional length.")]
             public float length;
             /// <summary>Metres, the ball at the segment's distal end; 0 keeps it.</summary>
+            [Tooltip("Metres, the ball at the segment's distal end; 0 keeps it.")]
             public float distalRadius;
         }
 
+        [Tooltip("The world the hand belongs to. Empty: the Frusta World above it.")]
         [SerializeField] FrustaWorldBehaviour world;
+        [Tooltip("Which hand this is.")]
         [SerializeField] FrustaHandSide handedness = FrustaHandSide.Right;
         [Tooltip("Metres, wrist crease to middle fingertip.")]
         [SerializeField, Range(0.12f, 0.26f)] float handLength = 0.19f;
         [Tooltip("Metres, across the metacarpal heads.")]
         [SerializeField, Range(0.06f, 0.12f)] float handBreadth = 0.085f;
+        [Tooltip("Single segments whose length or tip radius differ from the hand's proportions.")]
         [SerializeField] SegmentOverride[] segmentOverrides = Array.Empty<SegmentOverride>();
         [Tooltip("The tracked wrist: its world pose is the haptic palm pose. Empty: this transform.")]
         [SerializeField] Transform hapticSource;
         [Tooltip("Moved to the graphic palm each frame (the rig's wrist bone). Empty: nothing moves.")]
         [SerializeField] Transform graphicWrist;
+        [Tooltip("The rig's finger bones, each driven by one segment's joint angles.")]
         [SerializeField] BoneMapping[] bones = Array.Empty<BoneMapping>();
+        [Tooltip("Draw the contacts and their forces (1 cm per newton) in the scene view.")]
         [SerializeField] bool drawContacts = true;
 
         FrustaHandDef def;

@@ -14,10 +14,15 @@ namespace Frusta.Unity
     public sealed class FrustaSphereTreeAsset : ScriptableObject
     {
         [SerializeField, HideInInspector] byte[] data = Array.Empty<byte>();
+        [Tooltip("Leaf spheres of the tree.")]
         [SerializeField] int leafCount;
+        [Tooltip("Levels below the root.")]
         [SerializeField] int depth;
+        [Tooltip("Largest distance from the mesh surface to the leaves, millimetres (the bake's measure).")]
         [SerializeField] float uncoveredErrorMm;
+        [Tooltip("Largest height of the leaves above the mesh surface, millimetres (the bake's measure).")]
         [SerializeField] float protrudingErrorMm;
+        [Tooltip("Both error figures within the bake's target.")]
         [SerializeField] bool targetMet;
 
         /// <summary>The file's bytes.</summary>

@@ -6,27 +6,37 @@ using UnityEngine;
 namespace Frusta.Unity
 {
     /// <summary>
-    /// An object of a <see cref="FrustaWorldBehaviour"/> with a baked sphere tree as its shape. Kinematic
-    /// objects follow this transform (moved in Unity, moved in Frusta); dynamic ones move this
-    /// transform. With a non-kinematic Rigidbody and a kinematic Frusta object, the hands' reaction
-    /// wrench is applied to the Rigidbody each FixedUpdate (this transform's origin is taken as the
-    /// centre of mass, as Frusta's object frame is).
+    /// An object of a <see cref="FrustaWorldBehaviour"/> with a baked sphere tree as its shape. Its
+    /// colliders stay as they are for everything else (PhysX, raycasts, triggers): Frusta's hands
+    /// touch the tree, the rest of the scene the colliders. One owner moves the object:
+    /// <list type="bullet">
+    /// <item>Kinematic in Frusta (the default): Unity moves it (animation, scripts, or a
+    /// non-kinematic Rigidbody, i.e. PhysX), Frusta follows; with a non-kinematic Rigidbody the
+    /// hands' reaction wrench is applied to it each FixedUpdate, the force at its centre of mass and
+    /// the torque moved there from the object's origin (Frusta's torque is about the origin).</item>
+    /// <item>Dynamic in Frusta: Frusta moves it; a Rigidbody on it is made kinematic (PhysX must not
+    /// move it too; the inspector warns) and is moved with MovePosition/MoveRotation, so what it
+    /// pushes in PhysX is pushed.</item>
+    /// </list>
     /// </summary>
     [AddComponentMenu("Frusta/Frusta Sphere Tree Object")]
     public sealed class FrustaSphereTreeObject : MonoBehaviour
     {
+        [Tooltip("The world the object belongs to. Empty: the Frusta World above it, else the scene's.")]
         [SerializeField] FrustaWorldBehaviour world;
         [Tooltip("An imported .frtree asset.")]
         [SerializeField] FrustaSphereTreeAsset tree;
         [Tooltip("Or a .frtree path: absolute, or relative to StreamingAssets.")]
         [SerializeField] string treePath = "";
-        [Tooltip("Frusta moves the object (its dynamics); off: Unity moves it.")]
+        [Tooltip("Frusta moves the object (its dynamics; a Rigidbody on it is made kinematic); off: Unity moves it.")]
         [SerializeField] bool dynamic;
         [Tooltip("Contact stiffness, N/m, per object axis.")]
         [SerializeField] Vector3 stiffness = new Vector3(400, 400, 400);
+        [Tooltip("Coulomb friction coefficient of the hand on this object.")]
         [SerializeField, Range(0, 2)] float friction = 0.6f;
         [Tooltip("kg; a Rigidbody's mass wins.")]
         [SerializeField] float mass = 0.1f;
+        [Tooltip("Draw the tree's leaf spheres when the object is selected.")]
         [SerializeField] bool drawLeaves;
 
         FrustaObjectId id;
@@ -44,8 +54,14 @@ namespace Frusta.Unity
 
         void Awake()
         {
-            if (world == null) world = FindObjectOfType<FrustaWorldBehaviour>();
+            if (world == null) world = GetComponentInParent<FrustaWorldBehaviour>();
+            if (world == null) world = FindAnyObjectByType<FrustaWorldBehaviour>();
             body = GetComponent<Rigidbody>();
+            if (dynamic && body != null && !body.isKinematic)
+            {
+                Debug.LogWarning($"{name}: Frusta moves this dynamic object, so its Rigidbody is made kinematic.", this);
+                body.isKinematic = true;
+            }
             if (world == null || world.World == null)
             {
                 Debug.LogError("FrustaSphereTreeObject needs a FrustaWorldBehaviour in the scene.", this);
@@ -109,7 +125,8 @@ namespace Frusta.Unity
             }
             if (dynamic)
             {
-                transform.SetFrustaPose(latest.Pose);
+                // a Rigidbody is moved in FixedUpdate, through PhysX
+                if (body == null) transform.SetFrustaPose(latest.Pose);
             }
             else if (transform.position != sentPosition || transform.rotation != sentRotation)
             {
@@ -122,9 +139,21 @@ namespace Frusta.Unity
 
         void FixedUpdate()
         {
-            if (dynamic || body == null || body.isKinematic) return;
-            body.AddForce(latest.ReactionForce.ToUnityVector(), ForceMode.Force);
-            body.AddTorque(latest.ReactionTorque.ToUnityAxial(), ForceMode.Force);
+            if (body == null || id.IsNull) return;
+            if (dynamic)
+            {
+                body.MovePosition(latest.Pose.Position.ToUnityVector());
+                body.MoveRotation(latest.Pose.Rotation.ToUnityRotation());
+                return;
+            }
+            if (body.isKinematic) return;
+            // Frusta's torque is about the object's origin (its pose position); PhysX takes it about
+            // the body's centre of mass
+            Vector3d force = latest.ReactionForce;
+            Vector3d torque = Wrench.TorqueAbout(latest.ReactionTorque, force, latest.Pose.Position,
+                                                 body.worldCenterOfMass.ToFrustaVector());
+            body.AddForce(force.ToUnityVector(), ForceMode.Force);
+            body.AddTorque(torque.ToUnityAxial(), ForceMode.Force);
         }
 
         void OnDestroy()

@@ -39,6 +39,32 @@ namespace Frusta.Binding.Tests
         }
 
         [Fact]
+        public void AReactionTorqueMovedToTheCentreOfMassIsWhatPhysXNeedsInUnitysFrame()
+        {
+            var r = new Random(18);
+            for (int i = 0; i < Cases; ++i)
+            {
+                // forces at points; the world reports their sum and torque about the object's origin
+                Vector3d origin = RandomVector(r, 1), centre = RandomVector(r, 1);
+                Vector3d force = Vector3d.Zero, aboutOrigin = Vector3d.Zero, aboutCentre = Vector3d.Zero;
+                Vector3d unityAboutCentre = Vector3d.Zero;
+                for (int k = 0; k < 3; ++k)
+                {
+                    Vector3d p = RandomVector(r, 1), f = RandomVector(r, 10);
+                    force += f;
+                    aboutOrigin += Vector3d.Cross(p - origin, f);
+                    aboutCentre += Vector3d.Cross(p - centre, f);
+                    // what Unity's Vector3.Cross makes of the same forces in its frame
+                    unityAboutCentre += Vector3d.Cross(CoordinateConversion.VectorToUnity(p) - CoordinateConversion.VectorToUnity(centre),
+                                                       CoordinateConversion.VectorToUnity(f));
+                }
+                Vector3d moved = Wrench.TorqueAbout(aboutOrigin, force, origin, centre);
+                Near(aboutCentre, moved, 1e-12, "torque about the centre of mass");
+                Near(unityAboutCentre, CoordinateConversion.AxialToUnity(moved), 1e-12, "in Unity's frame (Rigidbody.AddTorque)");
+            }
+        }
+
+        [Fact]
         public void PositionsAndRotationsRoundTrip()
         {
             var r = new Random(20261201);

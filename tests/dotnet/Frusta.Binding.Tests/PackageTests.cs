@@ -100,6 +100,49 @@ namespace Frusta.Binding.Tests
             Assert.Contains("Unity.XR.Hands", Strings(xrHands, "references"));
         }
 
+        // the package's Unity scripts (not compiled here: read as text)
+        static IEnumerable<string> UnityScripts() =>
+            Directory.EnumerateFiles(TestEnv.Package, "*.cs", SearchOption.AllDirectories)
+                .Where(p => !p.Contains(Path.Combine("Runtime", "Binding")));
+
+        [Fact]
+        public void EveryInspectorFieldHasATooltip()
+        {
+            var missing = new List<string>();
+            foreach (string file in UnityScripts())
+            {
+                string[] lines = File.ReadAllLines(file);
+                for (int i = 0; i < lines.Length; ++i)
+                {
+                    string line = lines[i].Trim();
+                    // Unity shows [SerializeField] fields and public fields (of components and of
+                    // [Serializable] types)
+                    bool field = line.Contains("[SerializeField") ||
+                                 Regex.IsMatch(line, @"^(\[[^\]]*\]\s*)*public [\w<>\[\]]+ \w+( = [^;]+)?;$");
+                    if (!field || line.Contains("HideInInspector") || line.Contains("NonSerialized")) continue;
+                    // the attributes on this line and the lines just above it
+                    bool tip = line.Contains("Tooltip(");
+                    for (int k = i - 1; k >= 0 && !tip; --k)
+                    {
+                        string above = lines[k].Trim();
+                        if (above.StartsWith("[Tooltip(") || (above.EndsWith("\")]") && above.StartsWith("\""))) { tip = true; break; }
+                        // stop at anything but attributes, their strings and doc comments (another field, say)
+                        if (above.EndsWith(";") || !(above.StartsWith("[") || above.StartsWith("\"") || above.StartsWith("///"))) break;
+                    }
+                    if (!tip) missing.Add($"{Path.GetRelativePath(TestEnv.Package, file)}:{i + 1}: {line}");
+                }
+            }
+            Assert.True(missing.Count == 0, "no tooltip:\n" + string.Join("\n", missing));
+        }
+
+        [Fact]
+        public void NoScriptUsesObsoleteUnityApi()
+        {
+            // obsolete from Unity 2023.1 (FindAnyObjectByType / FindObjectsByType replace them)
+            foreach (string file in UnityScripts())
+                Assert.DoesNotMatch(@"\bFind(Objects?)OfType\b", File.ReadAllText(file));
+        }
+
         [Fact]
         public void TheBindingFolderHoldsNoUnityEngineCode()
         {
