@@ -71,6 +71,8 @@ namespace Frusta.Unity
         [SerializeField] Transform hapticSource;
         [Tooltip("Moved to the graphic palm each frame (the rig's wrist bone). Empty: nothing moves.")]
         [SerializeField] Transform graphicWrist;
+        [Tooltip("The rig's wrist bone's rotation relative to the palm frame (set by mapping a rig).")]
+        [SerializeField] Quaternion graphicWristRotation = Quaternion.identity;
         [Tooltip("The rig's finger bones, each driven by one segment's joint angles.")]
         [SerializeField] BoneMapping[] bones = Array.Empty<BoneMapping>();
         [Tooltip("Draw the contacts and their forces (1 cm per newton) in the scene view.")]
@@ -154,7 +156,15 @@ namespace Frusta.Unity
         {
             def = BuildDef();
             for (int i = 0; i < bones.Length; ++i)
-                if (bones[i].bone != null) bones[i].rest = bones[i].bone.localRotation;
+            {
+                if (bones[i].bone == null) continue;
+                bones[i].rest = bones[i].bone.localRotation;
+                // a bone with no axis would silently never move
+                if (bones[i].flexionAxis == Vector3.zero || (bones[i].segment == 0 && bones[i].abductionAxis == Vector3.zero))
+                    Debug.LogWarning($"FrustaHand: bone {bones[i].bone.name} ({bones[i].finger} {bones[i].segment}) has no " +
+                                     (bones[i].flexionAxis == Vector3.zero ? "flexion" : "abduction") + " axis: it will not turn " +
+                                     "that way. Map the rig (the inspector's buttons) or set the axis.", this);
+            }
         }
 
         // in the world while enabled; Start retries for a world that woke after this hand
@@ -221,8 +231,17 @@ namespace Frusta.Unity
             // a hand added since the latched step is not in it yet
             shown = w.TryGetHand(id, ref latest);
             contactCount = shown ? w.GetContacts(id, contacts) : 0;
+        }
+
+        // after the Animator has written its pose, so that it does not overwrite the hand's
+        void LateUpdate()
+        {
             if (!shown || !latest.Solved) return;
-            if (graphicWrist != null) graphicWrist.SetFrustaPose(latest.GraphicPalm);
+            if (graphicWrist != null)
+            {
+                graphicWrist.SetFrustaPose(latest.GraphicPalm);
+                graphicWrist.rotation *= graphicWristRotation;
+            }
             for (int i = 0; i < bones.Length; ++i)
             {
                 BoneMapping b = bones[i];
@@ -234,6 +253,72 @@ namespace Frusta.Unity
                                        Quaternion.AngleAxis(flexion, b.flexionAxis);
             }
         }
+
+        /// <summary>
+        /// Map a rig's bones to this hand and compute each bone's axes from the hand's own
+        /// kinematics (<see cref="HandRig"/>): the rig must be in its rest pose now (fingers
+        /// straight, as a humanoid's T-pose has them), which becomes the hand's rest pose; the wrist
+        /// bone becomes <see cref="GraphicWrist"/>, turned to the palm frame the rig's knuckles span.
+        /// Bones left null (a rig without them) are left out.
+        /// </summary>
+        /// <param name="wrist">The rig's wrist bone.</param>
+        /// <param name="segmentBones">15 bones, finger-major (thumb first), proximal to distal: the bone
+        /// each segment turns (the thumb's first is its metacarpal).</param>
+        /// <returns>null when mapped; else what is missing (the mapping is then unchanged).</returns>
+        public string MapRig(Transform wrist, Transform[] segmentBones)
+        {
+            if (wrist == null) return "no wrist bone";
+            if (segmentBones == null || segmentBones.Length != FrustaConstants.HandSegmentCount)
+                return $"needs {FrustaConstants.HandSegmentCount} segment bones";
+            foreach (int f in new[] { 1, 2, 4 })
+                if (segmentBones[f * FrustaConstants.SegmentsPerFinger] == null)
+                    return $"no first bone of the {(FrustaFinger)f} finger: the palm frame needs the index, middle and little knuckles";
+            FrustaHandDef d = BuildDef();
+            Span<Vector3d> flexion = stackalloc Vector3d[FrustaConstants.HandSegmentCount];
+            Span<Vector3d> abduction = stackalloc Vector3d[FrustaConstants.FingerCount];
+            HandRig.Axes(d, flexion, abduction);
+            Quaterniond frame;
+            try
+            {
+                frame = HandRig.HandFrame(d, wrist.position.ToFrustaVector(),
+                                          segmentBones[3].position.ToFrustaVector(), segmentBones[6].position.ToFrustaVector(),
+                                          segmentBones[12].position.ToFrustaVector());
+            }
+            catch (ArgumentException e)
+            {
+                return e.Message;
+            }
+            var mapped = new System.Collections.Generic.List<BoneMapping>();
+            for (int k = 0; k < segmentBones.Length; ++k)
+            {
+                Transform bone = segmentBones[k];
+                if (bone == null) continue;
+                int f = k / FrustaConstants.SegmentsPerFinger, s = k % FrustaConstants.SegmentsPerFinger;
+                Quaternion r = bone.rotation;
+                var rest = new Quaterniond(r.x, r.y, r.z, r.w); // its world rotation, Unity's frame
+                mapped.Add(new BoneMapping
+                {
+                    bone = bone,
+                    finger = (FrustaFinger)f,
+                    segment = s,
+                    flexionAxis = ToVector3(HandRig.BoneAxis(rest, frame, flexion[k])),
+                    abductionAxis = s == 0 ? ToVector3(HandRig.BoneAxis(rest, frame, abduction[f])) : Vector3.zero,
+                    rest = bone.localRotation,
+                });
+            }
+            bones = mapped.ToArray();
+            graphicWrist = wrist;
+            graphicWristRotation = Quaternion.Inverse(frame.ToUnityRotation()) * wrist.rotation;
+            return null;
+        }
+
+        static Vector3 ToVector3(Vector3d v) => new Vector3((float)v.X, (float)v.Y, (float)v.Z);
+
+        /// <summary>The rig's wrist bone, moved to the graphic palm each frame.</summary>
+        public Transform GraphicWrist => graphicWrist;
+
+        /// <summary>The mapped bones (read-only view; <see cref="MapRig"/> or the inspector set them).</summary>
+        public ReadOnlySpan<BoneMapping> Bones => bones;
 
         void OnDrawGizmos()
         {

@@ -152,6 +152,40 @@ namespace Frusta.Binding
             return new Quaterniond(axis.X * s, axis.Y * s, axis.Z * s, Math.Cos(0.5 * radians));
         }
 
+        /// <summary>The rotation whose matrix has the columns <paramref name="x"/>, <paramref name="y"/>,
+        /// <paramref name="z"/>: the frame with those axes (orthonormal, right-handed).</summary>
+        /// <param name="x">The frame's x axis.</param>
+        /// <param name="y">The frame's y axis.</param>
+        /// <param name="z">The frame's z axis (x cross y).</param>
+        /// <returns>The unit quaternion.</returns>
+        public static Quaterniond FromAxes(Vector3d x, Vector3d y, Vector3d z)
+        {
+            // Shepperd's method: divide by the largest of the four candidates
+            double trace = x.X + y.Y + z.Z;
+            Quaterniond q;
+            if (trace > 0)
+            {
+                double s = 2 * Math.Sqrt(1 + trace);
+                q = new Quaterniond((y.Z - z.Y) / s, (z.X - x.Z) / s, (x.Y - y.X) / s, 0.25 * s);
+            }
+            else if (x.X > y.Y && x.X > z.Z)
+            {
+                double s = 2 * Math.Sqrt(1 + x.X - y.Y - z.Z);
+                q = new Quaterniond(0.25 * s, (y.X + x.Y) / s, (z.X + x.Z) / s, (y.Z - z.Y) / s);
+            }
+            else if (y.Y > z.Z)
+            {
+                double s = 2 * Math.Sqrt(1 + y.Y - x.X - z.Z);
+                q = new Quaterniond((y.X + x.Y) / s, 0.25 * s, (z.Y + y.Z) / s, (z.X - x.Z) / s);
+            }
+            else
+            {
+                double s = 2 * Math.Sqrt(1 + z.Z - x.X - y.Y);
+                q = new Quaterniond((z.X + x.Z) / s, (z.Y + y.Z) / s, 0.25 * s, (x.Y - y.X) / s);
+            }
+            return q.Normalized;
+        }
+
         /// <summary>The norm sqrt(x² + y² + z² + w²); 1 for a rotation.</summary>
         public double Norm => Math.Sqrt(X * X + Y * Y + Z * Z + W * W);
 
