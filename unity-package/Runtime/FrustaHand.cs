@@ -124,6 +124,11 @@ namespace Frusta.Unity
             if (isActiveAndEnabled) Register();
         }
 
+        /// <summary>true while the latched step shows this hand solved, so that its geometry can be
+        /// read from the world (<see cref="World.GetHandSegments"/>); false before its first solved
+        /// step and once it left the world.</summary>
+        public bool Shown => !id.IsNull && shown && latest.Solved;
+
         /// <summary>The latest graphic and haptic state (valid once <see cref="FrustaWorldHand.Solved"/>;
         /// unsolved until a step has taken in a hand added at run time).</summary>
         public ref readonly FrustaWorldHand State => ref latest;
