@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Hand Demo: a right hand closes over a ball resting on a box. Add this component to an
-// empty GameObject in a new scene and press Play; the scene view shows the hand's
-// segments, joint balls and contacts (select the hand). The objects are Unity primitives
-// baked into sphere trees at start.
+// empty GameObject in a new scene and press Play; a Frusta Hand Mesh draws the graphic
+// hand, and the scene view shows its segments, joint balls and contacts (select the
+// hand). The objects are Unity primitives baked into sphere trees at start.
 //
 // With "Replay Glove Recording" set, a Frusta Glove Device drives the hand instead: it
 // replays demo_glove.frrec (next to this script; the demo hand of frusta_demo as a glove
@@ -42,6 +42,8 @@ namespace Frusta.Samples
             handObject.SetActive(false);
             handObject.transform.SetParent(world.transform, false);
             hand = handObject.AddComponent<FrustaHand>();
+            // the graphic hand drawn as its solids: no rig needed
+            handObject.AddComponent<FrustaHandMesh>();
 
             if (replayGloveRecording)
             {
