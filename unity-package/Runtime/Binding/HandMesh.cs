@@ -25,8 +25,8 @@ namespace Frusta.Binding
     /// (<see cref="WriteTriangles"/>) and calls <see cref="Update"/> each frame, which allocates
     /// nothing.
     /// <para>The segment solid's section at each point of its axis is a disc, so its surface is
-    /// the revolved envelope of the three parts' section radii: the far half of the distal ball,
-    /// the frustum's straight side, and the proximal ball from where it leaves the side (the
+    /// the revolved envelope of the three parts' section radii: the far half of the smaller ball,
+    /// the frustum's straight side, and the larger ball from where it leaves the side (the
     /// side passes through the balls' end circles, as frusta.h defines it, not tangent to them:
     /// the larger ball stands out of it by up to r (1 / cos alpha - 1) near its end, and the
     /// solid has two shallow creases, where the side meets that ball and at the smaller ball's
