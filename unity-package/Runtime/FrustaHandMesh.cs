@@ -29,6 +29,7 @@ namespace Frusta.Unity
         [SerializeField] FrustaHand hand;
         [Tooltip("Empty: a default lit material of the active render pipeline in the colour below.")]
         [SerializeField] Material material;
+        [Tooltip("The default material's colour (unused when a material is set).")]
         [SerializeField] Color color = new Color(0.9f, 0.75f, 0.6f);
         [Tooltip("Show the palm's spheres too.")]
         [SerializeField] bool palm = true;
@@ -36,7 +37,9 @@ namespace Frusta.Unity
         [SerializeField, Range(3, 64)] int slices = HandMesh.DefaultSlices;
         [Tooltip("Rings per ball arc, poles excluded.")]
         [SerializeField, Range(1, 16)] int arcRings = HandMesh.DefaultArcRings;
+        [Tooltip("Whether the hand casts shadows.")]
         [SerializeField] ShadowCastingMode castShadows = ShadowCastingMode.On;
+        [Tooltip("Whether shadows fall on the hand.")]
         [SerializeField] bool receiveShadows = true;
 
         HandMesh layout;                    // null until the hand is first shown, or after a change
