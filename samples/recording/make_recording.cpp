@@ -1,11 +1,16 @@
 // SPDX-License-Identifier: MIT
-// frusta-make-recording OUT.csv [OUT.frrec]: writes the demo's scripted glove
-// recording, built from the same hand scenarios the tests check (the pinch that
-// carries a marble, the fingertip slide, the tile pinch), so the demo plays motions
-// known to work. The recording is bundled (samples/data/demo_glove.csv); a test checks
-// it is what this program writes. With OUT.frrec it also writes the glove part as a
-// device recording (native/src/devices/recording.h): a tracked glove speaking our
-// binary profile at 100 Hz, to open as replay:OUT.frrec (the Unity sample does).
+// frusta-make-recording OUT.csv [OUT.frrec [OUT_TRACKED.csv]]: writes the demo's
+// scripted glove recording, built from the same hand scenarios the tests check (the
+// pinch that carries a marble, the fingertip slide, the tile pinch), so the demo plays
+// motions known to work. The recording is bundled (samples/data/demo_glove.csv); a test
+// checks it is what this program writes. With OUT.frrec it also writes the glove part
+// as a device recording (native/src/devices/recording.h): a tracked glove speaking our
+// binary profile at 100 Hz, to open as replay:OUT.frrec (the Unity sample does). With
+// OUT_TRACKED.csv it writes the marble part of the same script (reach, pinch, lift,
+// carry, release: the first kTrackedSeconds) as a hand tracker would report it: the
+// hand model's forward kinematics -> OpenXR's 26 joints (tracking/joints_from_hand.h)
+// at 90 Hz, a tracked-joint recording (tracking/joint_recording.h) for
+// frusta_tracked_demo.
 //
 // Format, one record per line (# starts a comment):
 //   object,NAME,SAMPLE,x,y,z,qx,qy,qz,qw,DYNAMIC,mass,friction,normal_damping,
@@ -13,6 +18,7 @@
 //   event,TIME,dynamic|remove,NAME,VALUE
 //   frame,TIME,px,py,pz,qx,qy,qz,qw,a0,...,a19   (palm pose, then 20 joint angles)
 // Metres, radians, seconds, kilograms; right-handed, z up.
+#include <array>
 #include <cstdio>
 #include <glm/gtc/quaternion.hpp>
 #include <string>
@@ -21,7 +27,10 @@
 #include "core/error.h"
 #include "devices/frusta_protocol.h"
 #include "devices/recording.h"
+#include "hand/anthropometry.h"
 #include "scenes/hand_scenarios.h"
+#include "tracking/joint_recording.h"
+#include "tracking/joints_from_hand.h"
 
 namespace {
 
@@ -30,6 +39,9 @@ using frusta::vec3;
 namespace scenes = frusta::scenes;
 
 constexpr double kFrameRate = 100.0;  // frames per second, as gloves commonly stream
+constexpr double kTrackedRate = 90.0;  // frames per second, as a Meta Quest tracks hands
+// the marble's part of the script: released at 4.2 s, fallen out of reach by 4.8 s
+constexpr double kTrackedSeconds = 5.0;
 
 struct Key {
   double time;
@@ -61,8 +73,8 @@ void write_pose(FILE* out, const frusta::RigidPose& pose) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 2 && argc != 3) {
-    std::fprintf(stderr, "usage: frusta-make-recording OUT.csv [OUT.frrec]\n");
+  if (argc < 2 || argc > 4) {
+    std::fprintf(stderr, "usage: frusta-make-recording OUT.csv [OUT.frrec [OUT_TRACKED.csv]]\n");
     return 2;
   }
   // three stations, 25 cm apart along y, each a scenario at the palm's origin moved there
@@ -133,7 +145,7 @@ int main(int argc, char** argv) {
 
   frusta::Recorder glove;
   std::vector<uint8_t> bytes;
-  if (argc == 3) {
+  if (argc >= 3) {
     if (glove.open(argv[2], "frusta") != FRUSTA_OK) {
       std::fprintf(stderr, "%s\n", frusta::last_error_message());
       return 1;
@@ -148,7 +160,7 @@ int main(int argc, char** argv) {
   for (int i = 0; i <= static_cast<int>(end * kFrameRate); ++i) {
     const double t = i / kFrameRate;
     const HandState s = at_time(keys, t);
-    if (argc == 3) {
+    if (argc >= 3) {
       frusta::DeviceSample sample;
       sample.angles = s.angles;
       sample.has_palm_pose = true;
@@ -165,5 +177,35 @@ int main(int argc, char** argv) {
     for (double a : s.angles) std::fprintf(out, ",%.6f", a);
     std::fprintf(out, "\n");
   }
-  return std::fclose(out) == 0 && !glove.failed() ? 0 : 1;
+  if (std::fclose(out) != 0 || glove.failed()) return 1;
+  if (argc < 4) return 0;
+
+  // the tracked hand: what a tracker would report for the scenarios' (default) hand
+  const frusta::HandModel model = frusta::make_hand_model(frusta::default_hand_def());
+  frusta::JointRecorder tracked;
+  if (tracked.open(argv[3], FRUSTA_JOINT_LAYOUT_XR, FRUSTA_HAND_RIGHT,
+                   "Frusta demo tracked-hand recording, written by frusta-make-recording: the\n"
+                   "right hand of demo_glove.csv's script (pinch a marble, lift and carry it,\n"
+                   "let it fall) as OpenXR's 26 joints at 90 Hz, from the default hand's forward\n"
+                   "kinematics, in the world frame. Format: native/src/tracking/joint_recording.h.") !=
+      FRUSTA_OK) {
+    std::fprintf(stderr, "%s\n", frusta::last_error_message());
+    return 1;
+  }
+  std::array<frusta::TrackedJoint, frusta::kMaxTrackedJoints> joints;
+  for (int i = 0; i <= static_cast<int>(kTrackedSeconds * kTrackedRate); ++i) {
+    const double t = i / kTrackedRate;
+    frusta::HandPose hand_pose;
+    frusta::forward_kinematics(model, at_time(keys, t), hand_pose);
+    frusta::joints_from_hand(model, hand_pose, FRUSTA_JOINT_LAYOUT_XR, joints.data());
+    if (tracked.add(t, joints.data()) != FRUSTA_OK) {
+      std::fprintf(stderr, "%s\n", frusta::last_error_message());
+      return 1;
+    }
+  }
+  if (tracked.close() != FRUSTA_OK) {
+    std::fprintf(stderr, "%s\n", frusta::last_error_message());
+    return 1;
+  }
+  return 0;
 }
