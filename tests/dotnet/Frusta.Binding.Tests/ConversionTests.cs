@@ -15,7 +15,7 @@ namespace Frusta.Binding.Tests
         static Vector3d RandomVector(Random r, double scale) =>
             new Vector3d(scale * (2 * r.NextDouble() - 1), scale * (2 * r.NextDouble() - 1), scale * (2 * r.NextDouble() - 1));
 
-        static Quaterniond RandomRotation(Random r)
+        internal static Quaterniond RandomRotation(Random r)
         {
             // uniform over rotations (Shoemake)
             double u1 = r.NextDouble(), u2 = 2 * Math.PI * r.NextDouble(), u3 = 2 * Math.PI * r.NextDouble();

@@ -23,6 +23,14 @@ namespace Frusta.Binding.Tests
             return angles;
         }
 
+        /// <summary>The default hand of a side.</summary>
+        internal static FrustaHandDef HandOf(FrustaHandSide side)
+        {
+            FrustaHandDef hand = FrustaHandDef.Default;
+            hand.Side = side;
+            return hand;
+        }
+
         internal static FrustaPose RandomPose(Random random)
         {
             var q = new Quaterniond(random.NextDouble() - 0.5, random.NextDouble() - 0.5, random.NextDouble() - 0.5,
@@ -46,8 +54,7 @@ namespace Frusta.Binding.Tests
         [InlineData(FrustaJointLayout.Keypoints, FrustaHandSide.Left)]
         public void JointsOfAPoseFitBackToThatPose(FrustaJointLayout layout, FrustaHandSide side)
         {
-            FrustaHandDef hand = FrustaHandDef.Default;
-            hand.Side = side;
+            FrustaHandDef hand = HandOf(side);
             hand.SetSize(0.17, 0.078);
             using var fitter = new HandFitter(hand, FitDef(layout));
             Assert.Equal(layout, fitter.Layout);
@@ -184,16 +191,11 @@ namespace Frusta.Binding.Tests
             hand.GetJoints(FrustaJointLayout.Xr, FrustaPose.Identity, new double[20], joints);
             var fit = new FrustaHandFit();
             var origin = FrustaPose.Identity;
-            // warm up (JIT, the first native calls)
-            fitter.Fit(joints, origin, ref fit);
-            world.SetHaptic(id, fit);
-            long before = GC.GetAllocatedBytesForCurrentThread();
-            for (int frame = 0; frame < 100; ++frame)
+            AllocatesNothing(() =>
             {
                 fitter.Fit(joints, origin, ref fit);
                 world.SetHaptic(id, fit);
-            }
-            Assert.Equal(0, GC.GetAllocatedBytesForCurrentThread() - before);
+            });
         }
     }
 }

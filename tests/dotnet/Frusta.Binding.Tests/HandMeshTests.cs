@@ -6,6 +6,7 @@ using System;
 using System.Collections.Generic;
 using Frusta.Binding;
 using Xunit;
+using static Frusta.Binding.Tests.Assertions;
 using Xunit.Abstractions;
 
 namespace Frusta.Binding.Tests
@@ -290,10 +291,7 @@ namespace Frusta.Binding.Tests
                 world.GetHandPalmSpheres(hand, FrustaHandKind.Graphic, spheres);
                 mesh.Update(segments, spheres, positions, normals, out _, out _);
             }
-            Frame();
-            long before = GC.GetAllocatedBytesForCurrentThread();
-            for (int i = 0; i < 100; ++i) Frame();
-            Assert.Equal(0, GC.GetAllocatedBytesForCurrentThread() - before);
+            AllocatesNothing(Frame);
         }
 
         [Fact]

@@ -7,6 +7,7 @@ using System;
 using Frusta.Binding;
 using Xunit;
 using static Frusta.Binding.Tests.Assertions;
+using static Frusta.Binding.Tests.ConversionTests;
 using static Frusta.Binding.Tests.HandFitterTests;
 
 namespace Frusta.Binding.Tests
@@ -33,13 +34,6 @@ namespace Frusta.Binding.Tests
             Assert.True(HandRig.NamesXrHandsJoint("L_Wrist", "Wrist", FrustaHandSide.Left));
         }
 
-        static Quaterniond RandomRotation(Random r)
-        {
-            double u1 = r.NextDouble(), u2 = 2 * Math.PI * r.NextDouble(), u3 = 2 * Math.PI * r.NextDouble();
-            double a = Math.Sqrt(1 - u1), b = Math.Sqrt(u1);
-            return new Quaterniond(a * Math.Sin(u2), a * Math.Cos(u2), b * Math.Sin(u3), b * Math.Cos(u3));
-        }
-
         // Unity's Quaternion.AngleAxis: degrees about an axis, the same formula on Unity's components
         static Quaterniond AngleAxis(double radians, Vector3d axis) => Quaterniond.AxisAngle(axis * (1.0 / axis.Length), radians);
 
@@ -48,8 +42,7 @@ namespace Frusta.Binding.Tests
         [InlineData(FrustaHandSide.Left)]
         public void ARigMappedAtRestPutsEveryJointWhereTheHandsIs(FrustaHandSide side)
         {
-            FrustaHandDef hand = FrustaHandDef.Default;
-            hand.Side = side;
+            FrustaHandDef hand = HandOf(side);
             hand.SetSize(0.2, 0.088);
             var random = new Random(side == FrustaHandSide.Right ? 41 : 42);
             Span<Vector3d> flexion = stackalloc Vector3d[15];

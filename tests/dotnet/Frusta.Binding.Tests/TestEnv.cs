@@ -60,6 +60,17 @@ namespace Frusta.Binding.Tests
 
     static class Assertions
     {
+        /// <summary>A frame of work, warmed up (JIT, first-use paths), then run 100 times with not a
+        /// byte allocated on this thread.</summary>
+        public static void AllocatesNothing(Action frame)
+        {
+            for (int i = 0; i < 20; ++i) frame();
+            long before = GC.GetAllocatedBytesForCurrentThread();
+            for (int i = 0; i < 100; ++i) frame();
+            long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
+            Assert.True(allocated == 0, $"{allocated} bytes allocated over 100 frames");
+        }
+
         public static void Near(double expected, double actual, double tolerance, string what = null) =>
             Assert.True(Math.Abs(expected - actual) <= tolerance,
                 $"{what ?? "value"}: expected {expected:R} within {tolerance:R}, got {actual:R}");

@@ -43,8 +43,7 @@ namespace Frusta.Binding.Tests
         [InlineData(FrustaHandSide.Left)]
         public void InUnitysFrameABoneRunsAlongItsJointsForwardAndTheBackOfTheHandIsUp(FrustaHandSide side)
         {
-            FrustaHandDef hand = FrustaHandDef.Default;
-            hand.Side = side;
+            FrustaHandDef hand = HandOf(side);
             var random = new Random(31);
             FrustaPose palm = RandomPose(random);
             var poses = new FrustaPose[XrHandsJoints.Count];
@@ -74,8 +73,7 @@ namespace Frusta.Binding.Tests
         public void InUnitysFrameThePalmFramesXIsTheFingersZThePalmAndYTheThumbOnARightHand(FrustaHandSide side)
         {
             // what FrustaXRHandsInput's docs promise of a palm transform (Transform.SetFrustaPose)
-            FrustaHandDef hand = FrustaHandDef.Default;
-            hand.Side = side;
+            FrustaHandDef hand = HandOf(side);
             var random = new Random(36);
             FrustaPose palm = RandomPose(random);
             var joints = new FrustaTrackedJoint[XrHandsJoints.Count];
@@ -120,8 +118,7 @@ namespace Frusta.Binding.Tests
         [InlineData(FrustaHandSide.Left)]
         public void XrHandsJointsInAMovedTrackingSpaceDriveTheWorldHandToTheirPose(FrustaHandSide side)
         {
-            FrustaHandDef hand = FrustaHandDef.Default;
-            hand.Side = side;
+            FrustaHandDef hand = HandOf(side);
             hand.SetSize(0.2, 0.09);
             using var world = new World();
             FrustaHandId id = world.CreateHand(hand);
@@ -239,15 +236,11 @@ namespace Frusta.Binding.Tests
             var poses = new FrustaPose[XrHandsJoints.Count];
             var random = new Random(35);
             AsXrHands(hand, RandomPose(random), InteriorAngles(hand, random), poses);
-            Feed(input, poses);
-            input.Drive(world, id, FrustaPose.Identity); // warm up
-            long before = GC.GetAllocatedBytesForCurrentThread();
-            for (int frame = 0; frame < 100; ++frame)
+            AllocatesNothing(() =>
             {
                 Feed(input, poses);
                 input.Drive(world, id, FrustaPose.Identity);
-            }
-            Assert.Equal(0, GC.GetAllocatedBytesForCurrentThread() - before);
+            });
         }
     }
 }

@@ -108,17 +108,13 @@ namespace Frusta.Binding.Tests
             int palmCount = world.GetHandPalmSpheres(hand, FrustaHandKind.Graphic, Span<FrustaSphere>.Empty);
             var spheres = new FrustaSphere[palmCount];
             var hapticSegments = new FrustaSegment[FrustaConstants.HandSegmentCount];
-            // warm up, then count what the reads allocate
-            world.GetHandSegments(hand, FrustaHandKind.Graphic, segments);
-            long before = GC.GetAllocatedBytesForCurrentThread();
             int n = 0;
-            for (int i = 0; i < 100; ++i)
+            AllocatesNothing(() =>
             {
                 n = world.GetHandSegments(hand, FrustaHandKind.Graphic, segments);
                 world.GetHandSegments(hand, FrustaHandKind.Haptic, hapticSegments);
                 world.GetHandPalmSpheres(hand, FrustaHandKind.Graphic, spheres);
-            }
-            Assert.Equal(0, GC.GetAllocatedBytesForCurrentThread() - before);
+            });
             Assert.Equal(FrustaConstants.HandSegmentCount, n);
 
             // the geometry of a standalone hand in the latched state
