@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // frusta_tracked_demo TRACKED.csv SCENE.csv OBJECTS_DIR [--trace TRACE.csv] [--host-steps]
-//                     [--check]
+//                     [--noise MM] [--check]
 //
 // The demo for hand tracking: a tracked-joint recording (samples/data/demo_tracked.csv,
 // OpenXR's 26 joints at 90 Hz, written by frusta-make-recording) fitted frame by frame
@@ -19,6 +19,9 @@
 //
 // --host-steps steps the world from this thread instead, one step per millisecond of
 // recording time, as fast as it goes: deterministic, for tests.
+// --noise MM adds Gaussian noise of MM millimetres (sigma, per axis) to every joint's
+// position before the fit, as a tracker's jitter (seeded: the same on every run); the
+// fit's residuals and the forces then show what an unfiltered real tracker would give.
 // --check exits non-zero unless every frame fitted (finite residuals under 0.1 mm, no
 // frame held), the graphic hand never sank more than 0.1 mm into an object, the marble
 // was carried at least 10 cm up and then fell, and the thumb and index received finite
@@ -29,6 +32,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <random>
 #include <string>
 #include <thread>
 #include <vector>
@@ -253,11 +257,12 @@ bool apply_events(std::vector<SceneEvent>* events, std::vector<SceneObject>* obj
 int main(int argc, char** argv) {
   if (argc < 4) {
     std::fprintf(stderr, "usage: frusta_tracked_demo TRACKED.csv SCENE.csv OBJECTS_DIR "
-                         "[--trace TRACE.csv] [--host-steps] [--check]\n");
+                         "[--trace TRACE.csv] [--host-steps] [--noise MM] [--check]\n");
     return 2;
   }
   const char* trace_path = nullptr;
   bool check_mode = false, host_steps = false;
+  double noise = 0.0;  // metres
   for (int i = 4; i < argc; ++i) {
     if (std::strcmp(argv[i], "--check") == 0) {
       check_mode = true;
@@ -265,6 +270,12 @@ int main(int argc, char** argv) {
       host_steps = true;
     } else if (std::strcmp(argv[i], "--trace") == 0 && i + 1 < argc) {
       trace_path = argv[++i];
+    } else if (std::strcmp(argv[i], "--noise") == 0 && i + 1 < argc) {
+      noise = 1e-3 * std::atof(argv[++i]);
+      if (!(noise >= 0.0 && noise <= 0.05)) {
+        std::fprintf(stderr, "frusta_tracked_demo: --noise takes 0..50 mm\n");
+        return 2;
+      }
     } else {
       std::fprintf(stderr, "frusta_tracked_demo: unknown argument %s\n", argv[i]);
       return 2;
@@ -313,12 +324,15 @@ int main(int argc, char** argv) {
   }
 
   const double start = rec.times.front(), duration = rec.times.back() - start;
+  char noise_text[48] = "";
+  if (noise > 0.0) std::snprintf(noise_text, sizeof noise_text, " with %.1f mm of noise", 1e3 * noise);
   std::printf("Frusta %d.%d.%d tracked-hand demo: %d objects, %.1f s of %s joints of a %s hand "
-              "at %.0f Hz, %s\n",
+              "at %.0f Hz%s, %s\n",
               FRUSTA_VERSION_MAJOR, FRUSTA_VERSION_MINOR, FRUSTA_VERSION_PATCH,
               static_cast<int>(objects.size()), duration,
               rec.layout == FRUSTA_JOINT_LAYOUT_XR ? "OpenXR's 26" : "21 keypoint",
               rec.side == FRUSTA_HAND_LEFT ? "left" : "right", (rec.frame_count() - 1) / duration,
+              noise_text,
               host_steps ? "stepped by the host" : "the world on its own thread");
 
   // the fits of the frames so far (a frame is fitted once, when the replay reaches it)
@@ -326,9 +340,15 @@ int main(int argc, char** argv) {
   std::vector<double> residuals[FRUSTA_FINGER_COUNT], palm_residuals, fit_us;
   long held = 0, clamped = 0;
   frusta_tracked_joint joints[frusta::kMaxTrackedJoints];
+  std::mt19937_64 rng(1);
+  std::normal_distribution<double> jitter(0.0, noise > 0.0 ? noise : 1.0);
   const auto fit_next = [&]() -> bool {
     const int32_t i = static_cast<int32_t>(fits.size());
-    for (int j = 0; j < joint_count; ++j) joints[j] = to_abi(rec.frame(i)[j]);
+    for (int j = 0; j < joint_count; ++j) {
+      joints[j] = to_abi(rec.frame(i)[j]);
+      if (noise > 0.0)
+        for (double& x : joints[j].position) x += jitter(rng);
+    }
     frusta_hand_fit fit{};
     fit.struct_size = sizeof fit;
     const auto before = std::chrono::steady_clock::now();
