@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // frusta_tracked_demo TRACKED.csv SCENE.csv OBJECTS_DIR [--trace TRACE.csv] [--host-steps]
-//                     [--noise MM] [--check]
+//                     [--noise MM] [--smooth HZ] [--check]
 //
 // The demo for hand tracking: a tracked-joint recording (samples/data/demo_tracked.csv,
 // OpenXR's 26 joints at 90 Hz, written by frusta-make-recording) fitted frame by frame
@@ -22,6 +22,9 @@
 // --noise MM adds Gaussian noise of MM millimetres (sigma, per axis) to every joint's
 // position before the fit, as a tracker's jitter (seeded: the same on every run); the
 // fit's residuals and the forces then show what an unfiltered real tracker would give.
+// --smooth HZ passes the fits through a first-order low-pass of that cutoff (palm,
+// rotation and angles alike) before the world sees them, as a host would filter a
+// real tracker's; the residuals are the unfiltered fits'.
 // --check exits non-zero unless every frame fitted (finite residuals under 0.1 mm, no
 // frame held), the graphic hand never sank more than 0.1 mm into an object, the marble
 // was carried at least 10 cm up and then fell, and the thumb and index received finite
@@ -257,12 +260,13 @@ bool apply_events(std::vector<SceneEvent>* events, std::vector<SceneObject>* obj
 int main(int argc, char** argv) {
   if (argc < 4) {
     std::fprintf(stderr, "usage: frusta_tracked_demo TRACKED.csv SCENE.csv OBJECTS_DIR "
-                         "[--trace TRACE.csv] [--host-steps] [--noise MM] [--check]\n");
+                         "[--trace TRACE.csv] [--host-steps] [--noise MM] [--smooth HZ] [--check]\n");
     return 2;
   }
   const char* trace_path = nullptr;
   bool check_mode = false, host_steps = false;
-  double noise = 0.0;  // metres
+  double noise = 0.0;   // metres
+  double smooth = 0.0;  // Hz; 0: none
   for (int i = 4; i < argc; ++i) {
     if (std::strcmp(argv[i], "--check") == 0) {
       check_mode = true;
@@ -274,6 +278,12 @@ int main(int argc, char** argv) {
       noise = 1e-3 * std::atof(argv[++i]);
       if (!(noise >= 0.0 && noise <= 0.05)) {
         std::fprintf(stderr, "frusta_tracked_demo: --noise takes 0..50 mm\n");
+        return 2;
+      }
+    } else if (std::strcmp(argv[i], "--smooth") == 0 && i + 1 < argc) {
+      smooth = std::atof(argv[++i]);
+      if (!(smooth >= 0.0 && smooth <= 1000.0)) {
+        std::fprintf(stderr, "frusta_tracked_demo: --smooth takes 0..1000 Hz\n");
         return 2;
       }
     } else {
@@ -325,7 +335,9 @@ int main(int argc, char** argv) {
 
   const double start = rec.times.front(), duration = rec.times.back() - start;
   char noise_text[48] = "";
-  if (noise > 0.0) std::snprintf(noise_text, sizeof noise_text, " with %.1f mm of noise", 1e3 * noise);
+  if (noise > 0.0)
+    std::snprintf(noise_text, sizeof noise_text, " with %.1f mm of noise%s", 1e3 * noise,
+                  smooth > 0.0 ? ", smoothed" : "");
   std::printf("Frusta %d.%d.%d tracked-hand demo: %d objects, %.1f s of %s joints of a %s hand "
               "at %.0f Hz%s, %s\n",
               FRUSTA_VERSION_MAJOR, FRUSTA_VERSION_MINOR, FRUSTA_VERSION_PATCH,
@@ -363,6 +375,19 @@ int main(int argc, char** argv) {
       residuals[f].push_back(fit.finger_residual[f]);
       if (fit.finger_flags[f] & FRUSTA_FIT_HELD) ++held;
       if (fit.finger_flags[f] & FRUSTA_FIT_CLAMPED) ++clamped;
+    }
+    // a first-order low-pass of the fits, frame by frame (the shorter way round for the
+    // rotation; the world normalises it)
+    if (smooth > 0.0 && !fits.empty()) {
+      const double dt = rec.times[static_cast<size_t>(i)] - rec.times[static_cast<size_t>(i) - 1];
+      const double a = 1.0 - std::exp(-2.0 * 3.141592653589793 * smooth * dt);
+      frusta_hand_fit filtered = fit;
+      mix_fits(fits.back(), fit, a, &filtered.palm, filtered.angles);
+      double norm = 0.0;
+      for (double q : filtered.palm.rotation) norm += q * q;
+      for (double& q : filtered.palm.rotation) q /= std::sqrt(norm);
+      fit.palm = filtered.palm;
+      std::copy(filtered.angles, filtered.angles + FRUSTA_HAND_JOINT_COUNT, fit.angles);
     }
     fits.push_back(fit);
     return true;
