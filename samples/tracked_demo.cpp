@@ -299,11 +299,28 @@ int main(int argc, char** argv) {
   if (!load_scene(argv[2], &objects, &events)) return 1;
   const int joint_count =
       rec.layout == FRUSTA_JOINT_LAYOUT_XR ? FRUSTA_XR_JOINT_COUNT : FRUSTA_KEYPOINT_COUNT;
+  // a tracker's jitter, on every joint the calibration and the fit see
+  if (noise > 0.0) {
+    std::mt19937_64 rng(1);
+    std::normal_distribution<double> jitter(0.0, noise);
+    for (frusta::TrackedJoint& joint : rec.joints)
+      for (int k = 0; k < 3; ++k) joint.position[k] += jitter(rng);
+  }
 
-  // the hand the joints are of, and a fitter for it (a real user's: calibrate the def
-  // first, frusta_calibrate_hand_def; this recording was made from the default hand)
+  // the hand the joints are of, sized from the recording's first second as a game would
+  // size its user's, then a fitter for it
   frusta_hand_def hand_def = frusta_default_hand_def();
   hand_def.side = rec.side;
+  const double default_length = hand_def.hand_length, default_breadth = hand_def.hand_breadth;
+  {
+    const int32_t frames = std::min<int32_t>(rec.frame_count(), 90);
+    std::vector<frusta_tracked_joint> calibration;
+    for (int32_t i = 0; i < frames; ++i)
+      for (int j = 0; j < joint_count; ++j) calibration.push_back(to_abi(rec.frame(i)[j]));
+    if (!check(frusta_calibrate_hand_def(calibration.data(), frames, rec.layout, &hand_def),
+               "frusta_calibrate_hand_def"))
+      return 1;
+  }
   frusta_hand_fit_def fit_def = frusta_default_hand_fit_def();
   fit_def.layout = rec.layout;
   frusta_hand_fitter_id fitter;
@@ -347,20 +364,20 @@ int main(int argc, char** argv) {
               noise_text,
               host_steps ? "stepped by the host" : "the world on its own thread");
 
+  std::printf("  hand calibrated from the first %.1f s: length %.1f mm, breadth %.1f mm (the "
+              "default hand that made it: %.1f, %.1f)\n",
+              rec.times[static_cast<size_t>(std::min<int32_t>(rec.frame_count(), 90) - 1)] - start,
+              1e3 * hand_def.hand_length, 1e3 * hand_def.hand_breadth, 1e3 * default_length,
+              1e3 * default_breadth);
+
   // the fits of the frames so far (a frame is fitted once, when the replay reaches it)
   std::vector<frusta_hand_fit> fits;
   std::vector<double> residuals[FRUSTA_FINGER_COUNT], palm_residuals, fit_us;
   long held = 0, clamped = 0;
   frusta_tracked_joint joints[frusta::kMaxTrackedJoints];
-  std::mt19937_64 rng(1);
-  std::normal_distribution<double> jitter(0.0, noise > 0.0 ? noise : 1.0);
   const auto fit_next = [&]() -> bool {
     const int32_t i = static_cast<int32_t>(fits.size());
-    for (int j = 0; j < joint_count; ++j) {
-      joints[j] = to_abi(rec.frame(i)[j]);
-      if (noise > 0.0)
-        for (double& x : joints[j].position) x += jitter(rng);
-    }
+    for (int j = 0; j < joint_count; ++j) joints[j] = to_abi(rec.frame(i)[j]);
     frusta_hand_fit fit{};
     fit.struct_size = sizeof fit;
     const auto before = std::chrono::steady_clock::now();
