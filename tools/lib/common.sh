@@ -6,7 +6,7 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 
 # Debian packages the build needs (docs: /work/shared/deps.md, README "Dependencies");
 # python3 runs the C# binding's generator and the test that it is up to date.
-FRUSTA_PACKAGES=(cmake ninja-build g++ pkg-config python3 libglm-dev libhidapi-dev libusb-1.0-0-dev
+FRUSTA_PACKAGES=(cmake ninja-build g++ pkg-config python3 libglm-dev libhidapi-dev
                  libembree-dev libtinygltf-dev nlohmann-json3-dev libbenchmark-dev libgtest-dev)
 
 # ensure_packages [PACKAGE...]: those (default: FRUSTA_PACKAGES) installed
@@ -31,7 +31,7 @@ ensure_packages() {
 # Linux arm64 cross builds: Debian's cross compiler, qemu to run the tests, and the
 # arm64 builds of the libraries (multiarch; GLM is header-only, shared with the host)
 FRUSTA_ARM64_PACKAGES=(g++-aarch64-linux-gnu qemu-user-static libhidapi-dev:arm64
-                       libusb-1.0-0-dev:arm64 libgtest-dev:arm64 libbenchmark-dev:arm64)
+                       libgtest-dev:arm64 libbenchmark-dev:arm64)
 
 ensure_arm64_packages() {
   if ! dpkg --print-foreign-architectures | grep -qx arm64; then
@@ -67,8 +67,8 @@ run_arm64() {
 }
 
 # Windows x64 cross builds: Debian's mingw-w64 (posix threads, for std::thread) and
-# Wine to run the tests. hidapi and libusb have no MinGW packages in Debian: their
-# Debian sources are built for Windows by build_windows_libraries.
+# Wine to run the tests. hidapi has no MinGW package in Debian: its Debian source is
+# built for Windows by build_windows_libraries.
 FRUSTA_WINDOWS_PACKAGES=(g++-mingw-w64-x86-64-posix wine64 make bzip2)
 FRUSTA_WINDOWS_TOOLCHAIN="$ROOT/native/cmake/toolchains/x86_64-w64-mingw32.cmake"
 FRUSTA_WINE_DIR=/usr/lib/wine  # Debian's wine64 puts wine64 and wineserver here, not on PATH
@@ -97,25 +97,24 @@ deb_src_sources() {
   done
 }
 
-# build_windows_libraries PREFIX: hidapi (its Windows backend, with its own CMake) and
-# libusb (its Windows backend, with its own configure) from Debian's source packages
-# (bookworm's versions, as on Linux), static, into PREFIX. Done once per PREFIX.
+# build_windows_libraries PREFIX: hidapi (its Windows backend, with its own CMake) from
+# Debian's source package (bookworm's version, as on Linux), static, into PREFIX. Done
+# once per PREFIX.
 build_windows_libraries() {
   local prefix="$1"
-  [ -f "$prefix/lib/libhidapi.a" ] && [ -f "$prefix/lib/libusb-1.0.a" ] && return 0
+  [ -f "$prefix/lib/libhidapi.a" ] && return 0
   local work="$prefix/src"
   rm -rf "$prefix" && mkdir -p "$work/apt/lists/partial" "$work/apt/sources"
   # a private source list: the machine's apt configuration is left as it was
   deb_src_sources "$work/apt/sources"
   local apt=(apt-get -qq -o Dir::Etc::SourceList=/dev/null -o Dir::Etc::SourceParts="$work/apt/sources"
              -o Dir::State::Lists="$work/apt/lists" -o APT::Sandbox::User=root)
-  echo "frusta: fetching Debian's hidapi and libusb sources to build them for Windows" >&2
+  echo "frusta: fetching Debian's hidapi source to build it for Windows" >&2
   # a repository of the machine's without sources fails its part only; apt-get source
   # below says so if what it needs is missing
   "${apt[@]}" update || echo "frusta: some deb-src indexes could not be fetched" >&2
-  (cd "$work" && "${apt[@]}" source --download-only hidapi=0.13.1-1 libusb-1.0=2:1.0.26-1 >/dev/null)
+  (cd "$work" && "${apt[@]}" source --download-only hidapi=0.13.1-1 >/dev/null)
   tar -xzf "$work/hidapi_0.13.1.orig.tar.gz" -C "$work"
-  tar -xjf "$work/libusb-1.0_1.0.26.orig.tar.bz2" -C "$work"
   cmake -S "$work/hidapi-hidapi-0.13.1" -B "$work/hidapi-build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
         -DCMAKE_TOOLCHAIN_FILE="$FRUSTA_WINDOWS_TOOLCHAIN" -DBUILD_SHARED_LIBS=OFF \
         -DHIDAPI_BUILD_HIDTEST=OFF -DCMAKE_INSTALL_PREFIX="$prefix" >/dev/null
@@ -124,10 +123,6 @@ build_windows_libraries() {
   # hidapi.h marks its functions dllexport on Windows unconditionally; linked into
   # frusta.dll they must stay inside it: drop the objects' export directives
   x86_64-w64-mingw32-objcopy --remove-section=.drectve "$prefix/lib/libhidapi.a"
-  (cd "$work/libusb-1.0.26" &&
-     ./configure -q --host=x86_64-w64-mingw32 CC=x86_64-w64-mingw32-gcc-posix --prefix="$prefix" \
-                 --enable-static --disable-shared >/dev/null &&
-     make -s -j"$(nproc)" install >/dev/null 2>&1)
 }
 
 # build_windows_tree DIR BUILD_TYPE [cmake args...]: the runtime and tests for Windows

@@ -2,7 +2,7 @@
 # Windows x64 (where most Unity editors run) from Debian's mingw-w64 cross compiler, the
 # posix-threads flavour that std::thread needs (g++-mingw-w64-x86-64-posix). The
 # runtime DLL links libgcc, libstdc++ and winpthread statically, so it ships alone.
-# hidapi and libusb are Debian's sources built for Windows into FRUSTA_WINDOWS_LIBS
+# hidapi is Debian's source built for Windows into FRUSTA_WINDOWS_LIBS
 # (tools/lib/common.sh: build_windows_libraries). Tests run under Wine.
 # tools/test builds build/windows with it.
 set(CMAKE_SYSTEM_NAME Windows)
@@ -15,8 +15,8 @@ set(CMAKE_RC_COMPILER x86_64-w64-mingw32-windres)
 set(CMAKE_C_FLAGS_INIT "-D__USE_MINGW_ANSI_STDIO=1")
 set(CMAKE_CXX_FLAGS_INIT "-D__USE_MINGW_ANSI_STDIO=1")
 
-# the Windows builds of hidapi and libusb (headers, static libraries, pkg-config files)
-set(FRUSTA_WINDOWS_LIBS "" CACHE PATH "Prefix holding hidapi and libusb built for Windows")
+# the Windows build of hidapi (headers, static library, pkg-config file)
+set(FRUSTA_WINDOWS_LIBS "" CACHE PATH "Prefix holding hidapi built for Windows")
 list(APPEND CMAKE_TRY_COMPILE_PLATFORM_VARIABLES FRUSTA_WINDOWS_LIBS)
 set(CMAKE_FIND_ROOT_PATH /usr/x86_64-w64-mingw32 ${FRUSTA_WINDOWS_LIBS})
 set(CMAKE_FIND_ROOT_PATH_MODE_PROGRAM NEVER)
