@@ -31,22 +31,32 @@ def meta(rel, is_dir):
     return head + "TextScriptImporter:\n  externalObjects: {}\n" + TAIL
 
 
+def assets(root):
+    """(package-relative path, is folder) of everything Unity imports under root, .meta
+    files aside: not hidden, not in a folder ending in ~ (tests/package checks a tarball
+    with this same rule)."""
+    for base, dirs, files in os.walk(root):
+        dirs[:] = sorted(d for d in dirs if not d.endswith("~") and not d.startswith("."))
+        for name in dirs + sorted(files):
+            if name.startswith(".") or name.endswith(".meta"):
+                continue
+            path = os.path.join(base, name)
+            yield os.path.relpath(path, root).replace(os.sep, "/"), os.path.isdir(path)
+
+
 def main():
     written = 0
-    for base, dirs, files in os.walk(ROOT):
-        dirs[:] = sorted(d for d in dirs if not d.endswith("~") and not d.startswith("."))
-        for name in sorted(dirs) + sorted(files):
-            path = os.path.join(base, name)
-            rel = os.path.relpath(path, ROOT).replace(os.sep, "/")
-            if os.path.splitext(name)[1] in SKIP or name.startswith("."):
-                continue
-            target = path + ".meta"
-            if os.path.exists(target):
-                continue
-            with open(target, "w") as f:
-                f.write(meta(rel, os.path.isdir(path)))
-            written += 1
-            print("wrote", os.path.relpath(target, ROOT))
+    for rel, is_dir in assets(ROOT):
+        # built libraries (libembree3.so.3 too) are ignored by git: only their .meta is committed
+        if os.path.splitext(rel)[1] in SKIP or ".so." in os.path.basename(rel):
+            continue
+        target = os.path.join(ROOT, rel) + ".meta"
+        if os.path.exists(target):
+            continue
+        with open(target, "w") as f:
+            f.write(meta(rel, is_dir))
+        written += 1
+        print("wrote", os.path.relpath(target, ROOT))
     print(f"{written} .meta files written", file=sys.stderr)
 
 
