@@ -1110,7 +1110,7 @@ typedef struct frusta_device_info {
 FRUSTA_API frusta_device_def frusta_default_device_def(void);
 /** List the serial ports, HID devices and USB devices present now, by the
  *  output-array rule (capacity 0 and out null ask for the count). Thread: any (it
- *  reads /dev, hidapi and libusb; slow: not for a frame loop). */
+ *  reads /dev, hidapi and the system's USB device list; slow: not for a frame loop). */
 FRUSTA_API frusta_result frusta_enumerate_devices(frusta_device_info* out, int32_t capacity,
                                                   int32_t* out_count);
 /** Open the glove at uri (UTF-8) to drive the world's hand def->hand, and start its

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // What could be a glove on this machine now: serial ports (serial_ports.h),
 // vendor-defined HID devices, and every USB device (for its ids). Slow (it walks /dev
-// or the registry, hidapi and libusb): host only.
+// or the registry, hidapi and the USB device list: usb_watch.h): host only.
 #pragma once
 
 #include <cstdint>

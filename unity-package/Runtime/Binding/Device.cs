@@ -164,7 +164,7 @@ namespace Frusta.Binding
 
         /// <summary>
         /// Every serial port, HID device and USB device present now (<c>frusta_enumerate_devices</c>).
-        /// Slow (it reads /dev, hidapi and libusb) and allocates: not for a frame loop. Thread: any.
+        /// Slow (it reads /dev, hidapi and the system's USB device list) and allocates: not for a frame loop. Thread: any.
         /// </summary>
         /// <returns>The devices found; empty when none.</returns>
         public static FrustaDeviceInfo[] Enumerate()

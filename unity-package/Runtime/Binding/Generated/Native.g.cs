@@ -481,7 +481,7 @@ namespace Frusta.Binding
         /// <summary>
         /// List the serial ports, HID devices and USB devices present now, by the
         /// output-array rule (capacity 0 and out null ask for the count). Thread: any (it
-        /// reads /dev, hidapi and libusb; slow: not for a frame loop).
+        /// reads /dev, hidapi and the system's USB device list; slow: not for a frame loop).
         /// </summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern FrustaResult frusta_enumerate_devices(FrustaDeviceInfo* @out, int capacity, int* outCount);
