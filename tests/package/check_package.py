@@ -202,6 +202,15 @@ def main():
         print(r)
     for e in errors:
         fail(e)
+    # and the runtime is there for every editor and player the tarball serves
+    for version in ("2022.3", "2023.1", "6000.3"):
+        for want in (f"Unity {version} Linux64: Plugins/{'x86_64/' if version == '6000.3' else ''}libfrusta.so <- ",
+                     f"Unity {version} Win64: Plugins/x86_64/frusta.dll <- ",
+                     f"Unity {version} Editor Linux x86_64: libfrusta.so <- ",
+                     f"Unity {version} Editor Linux x86_64: libfrusta_bake.so <- ",
+                     f"Unity {version} Editor Windows x86_64: frusta.dll <- "):
+            if not any(r.startswith(want) for r in rows):
+                fail(f"no plugin for {want[:-4]}")
     check_libraries(package)
     size = os.path.getsize(tarball)
     print(f"{os.path.basename(tarball)}: {size / 1e6:.1f} MB; {len(failures)} failures")
