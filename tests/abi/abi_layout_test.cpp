@@ -58,8 +58,11 @@
   X(frusta_hand_fit_def, require_tracked, 8, 4)       \
   X(frusta_hand_fit_def, max_iterations, 12, 4)       \
   X(frusta_hand_fit_def, orientation_weight, 16, 8)   \
-  X(frusta_hand_fit_def, internal_value, 24, 4)       \
-  X(frusta_hand_fit_def, reserved0, 28, 4)            \
+  X(frusta_hand_fit_def, filter_min_cutoff, 24, 8)    \
+  X(frusta_hand_fit_def, filter_beta, 32, 8)          \
+  X(frusta_hand_fit_def, filter_d_cutoff, 40, 8)      \
+  X(frusta_hand_fit_def, internal_value, 48, 4)       \
+  X(frusta_hand_fit_def, reserved0, 52, 4)            \
   X(frusta_hand_fit, struct_size, 0, 4)               \
   X(frusta_hand_fit, palm_flags, 4, 4)                \
   X(frusta_hand_fit, palm, 8, 56)                     \
@@ -279,7 +282,7 @@
   X(frusta_hand_def, 896, 8)         \
   X(frusta_tracked_joint, 72, 8)     \
   X(frusta_hand_fitter_id, 8, 4)     \
-  X(frusta_hand_fit_def, 32, 8)      \
+  X(frusta_hand_fit_def, 56, 8)      \
   X(frusta_hand_fit, 296, 8)         \
   X(frusta_contact_query, 104, 8)    \
   X(frusta_constraint, 88, 8)        \
@@ -300,8 +303,8 @@
   X(frusta_device_status, 320, 8) \
   X(frusta_device_info, 268, 4)
 
-static_assert(FRUSTA_ABI_VERSION == 4,
-              "the layout table below is ABI 4: update it and the C# mirror with the ABI");
+static_assert(FRUSTA_ABI_VERSION == 5,
+              "the layout table below is ABI 5: update it and the C# mirror with the ABI");
 
 #define FRUSTA_CHECK_MEMBER(type, member, offset, size)                          \
   static_assert(offsetof(type, member) == (offset), #type "." #member " moved"); \
@@ -403,6 +406,9 @@ FRUSTA_CHECK_SIGNATURE(frusta_destroy_hand_fitter, frusta_result (*)(frusta_hand
 FRUSTA_CHECK_SIGNATURE(frusta_hand_fitter_is_valid, int32_t (*)(frusta_hand_fitter_id))
 FRUSTA_CHECK_SIGNATURE(frusta_hand_fitter_fit,
                        frusta_result (*)(frusta_hand_fitter_id, const frusta_tracked_joint*,
+                                         int32_t, const frusta_pose*, frusta_hand_fit*))
+FRUSTA_CHECK_SIGNATURE(frusta_hand_fitter_fit_at,
+                       frusta_result (*)(frusta_hand_fitter_id, double, const frusta_tracked_joint*,
                                          int32_t, const frusta_pose*, frusta_hand_fit*))
 FRUSTA_CHECK_SIGNATURE(frusta_hand_joints_from_pose,
                        frusta_result (*)(const frusta_hand_def*, int32_t, const frusta_pose*,
@@ -542,7 +548,7 @@ TEST(abiLayout, DefaultDefCarriesItsSize) {
   EXPECT_EQ(frusta_default_world_def().struct_size, 136);
   EXPECT_EQ(frusta_default_object_def().struct_size, 224);
   EXPECT_EQ(frusta_default_device_def().struct_size, 728);
-  EXPECT_EQ(frusta_default_hand_fit_def().struct_size, 32);
+  EXPECT_EQ(frusta_default_hand_fit_def().struct_size, 56);
 }
 
 // Bindings learn the native sizes at load from frusta_struct_size; it must know every

@@ -4130,7 +4130,8 @@ static void t_default_hand_fit_def(void) {
   g_calls += 2;
   verify(memcmp(&a, &b, sizeof a) == 0 && a.struct_size == (int32_t)sizeof a && a.internal_value != 0 &&
              a.layout == FRUSTA_JOINT_LAYOUT_XR && a.require_tracked == 0 && a.max_iterations == 10 &&
-             a.orientation_weight == 0.0,
+             a.orientation_weight == 0.0 && a.filter_min_cutoff == 1.0 && a.filter_beta == 2.0 &&
+             a.filter_d_cutoff == 1.0,
          "not the documented deterministic def of this size with its cookie");
   int untouched = 1;
   accepted(call_create_fitter_fit(&a, &untouched, NULL));
@@ -4163,6 +4164,10 @@ static void t_create_hand_fitter(void) {
                call_create_fitter_hand, NULL);
   const Field weight = {FIT_FIELD(orientation_weight), 1, 0, NAME_SCALAR, 0.0, 1.0, 0};
   sweep_fields("frusta_create_hand_fitter", &fd, sizeof fd, &weight, 1, call_create_fitter_fit, NULL);
+  const Field filter[] = {{FIT_FIELD(filter_min_cutoff), 1, 0, NAME_SCALAR, 0.0, 1000.0, 0},
+                          {FIT_FIELD(filter_beta), 1, 0, NAME_SCALAR, 0.0, 1000.0, 0},
+                          {FIT_FIELD(filter_d_cutoff), 1, 0, NAME_SCALAR, 1e-3, 1000.0, 0}};
+  sweep_fields("frusta_create_hand_fitter", &fd, sizeof fd, filter, 3, call_create_fitter_fit, NULL);
   sweep_ints("frusta_create_hand_fitter", &fd, sizeof fd, kFitInts, 3, call_create_fitter_fit, NULL);
   /* hands at the ends of their ranges fit their own joints */
   for (int big = 0; big < 2; ++big) {
@@ -4199,6 +4204,16 @@ static void t_hand_fitter_is_valid(void) {
 
 /* ---- fitting */
 
+/* 1 while frusta_hand_fitter_fit_at is attacked: each fit below is a timed one, at 1 s
+ * after an untimed fit of g_joints (which restarts the filter, so any time is next) */
+static int g_timed = 0;
+
+static frusta_result fit_call(frusta_hand_fitter_id fitter, const frusta_tracked_joint* joints,
+                              int32_t count, const frusta_pose* frame, frusta_hand_fit* out) {
+  if (!g_timed) return frusta_hand_fitter_fit(fitter, joints, count, frame, out);
+  return frusta_hand_fitter_fit_at(fitter, 1.0, joints, count, frame, out);
+}
+
 /* g_fitter on joints (and frame): a refused call leaves out and the fitter's history as
  * they were; an accepted fit is sane. */
 static frusta_result fit_with(const frusta_tracked_joint* joints, int32_t count,
@@ -4207,7 +4222,7 @@ static frusta_result fit_with(const frusta_tracked_joint* joints, int32_t count,
   frusta_hand_fit out;
   fill(&out, sizeof out);
   out.struct_size = (int32_t)sizeof out;
-  const frusta_result r = frusta_hand_fitter_fit(g_fitter, joints, count, frame, &out);
+  const frusta_result r = fit_call(g_fitter, joints, count, frame, &out);
   if (r != FRUSTA_OK) {
     *untouched = is_sentinel((unsigned char*)&out + 4, sizeof out - 4) && fitter_history_kept();
     return r;
@@ -4222,7 +4237,7 @@ static frusta_result call_fit_id(RawId id, int* untouched) {
   fill(&out, sizeof out);
   out.struct_size = (int32_t)sizeof out;
   const frusta_result r =
-      frusta_hand_fitter_fit(fitter_of_raw(id), g_joints, FRUSTA_XR_JOINT_COUNT, NULL, &out);
+      fit_call(fitter_of_raw(id), g_joints, FRUSTA_XR_JOINT_COUNT, NULL, &out);
   *untouched = is_sentinel((unsigned char*)&out + 4, sizeof out - 4) && fitter_history_kept();
   return r;
 }
@@ -4239,10 +4254,11 @@ static frusta_result call_fit_frame(const void* frame, int* untouched, void* con
 }
 
 static frusta_result fit_out(void* out) {
-  return frusta_hand_fitter_fit(g_fitter, g_joints, FRUSTA_XR_JOINT_COUNT, NULL, (frusta_hand_fit*)out);
+  restore_fitter();
+  return fit_call(g_fitter, g_joints, FRUSTA_XR_JOINT_COUNT, NULL, (frusta_hand_fit*)out);
 }
 
-static void t_hand_fitter_fit(void) {
+static void fit_sweeps(void) {
   sweep_ids("frusta_hand_fitter_fit", "hand fitter", TO_RAW(g_fitter), TO_RAW(g_dead_fitter), 1,
             call_fit_id);
   int untouched = 1;
@@ -4250,7 +4266,7 @@ static void t_hand_fitter_fit(void) {
   refused(fit_with(NULL, FRUSTA_XR_JOINT_COUNT, NULL, &untouched), FRUSTA_ERROR_NULL_POINTER, "joints");
   verify(untouched, "a refused call changed something");
   what("frusta_hand_fitter_fit(fitter, joints, 26, NULL, NULL)");
-  refused(frusta_hand_fitter_fit(g_fitter, g_joints, FRUSTA_XR_JOINT_COUNT, NULL, NULL),
+  refused(fit_call(g_fitter, g_joints, FRUSTA_XR_JOINT_COUNT, NULL, NULL),
           FRUSTA_ERROR_NULL_POINTER, "out");
   sweep_out_size("frusta_hand_fitter_fit", "frusta_hand_fit", sizeof(frusta_hand_fit), fit_out);
   /* a count other than the layout's: refused before a joint is read (the buffer holds 26) */
@@ -4283,6 +4299,81 @@ static void t_hand_fitter_fit(void) {
   accepted(fit_with(joints, FRUSTA_XR_JOINT_COUNT, NULL, &untouched));
   ++g_calls;
   verify(fitter_history_kept(), "a sample of missing joints did not give the last fit back, held");
+  restore_fitter();
+}
+
+static void t_hand_fitter_fit(void) { fit_sweeps(); }
+
+/* a timed fit at t (after an untimed one at `after` >= 0 s, else after none) */
+static frusta_result fit_at_after(double after, double t, int* untouched) {
+  restore_fitter();
+  frusta_hand_fit out;
+  if (after >= 0.0) {
+    memset(&out, 0, sizeof out);
+    out.struct_size = (int32_t)sizeof out;
+    if (!verify(frusta_hand_fitter_fit_at(g_fitter, after, g_joints, FRUSTA_XR_JOINT_COUNT, NULL,
+                                          &out) == FRUSTA_OK, "a timed fit at %g s", after))
+      return FRUSTA_OK;
+  }
+  fill(&out, sizeof out);
+  out.struct_size = (int32_t)sizeof out;
+  const frusta_result r = frusta_hand_fitter_fit_at(g_fitter, t, g_joints, FRUSTA_XR_JOINT_COUNT, NULL, &out);
+  if (r != FRUSTA_OK) *untouched = is_sentinel((unsigned char*)&out + 4, sizeof out - 4);
+  else fit_sane(&out);
+  return r;
+}
+
+static void t_hand_fitter_fit_at(void) {
+  /* everything frusta_hand_fitter_fit is attacked with, timed */
+  g_timed = 1;
+  fit_sweeps();
+  g_timed = 0;
+  /* the time: finite, strictly after the previous timed sample's */
+  for (int i = 0; i < HOSTILE_COUNT; ++i) {
+    const double t = kHostile[i];
+    what("frusta_hand_fitter_fit_at: time %g, the first", t);
+    int untouched = 1;
+    if (isfinite(t)) accepted(fit_at_after(-1.0, t, &untouched));
+    else refused(fit_at_after(-1.0, t, &untouched), FRUSTA_ERROR_NOT_FINITE, "time");
+    verify(untouched, "a refused call changed something");
+  }
+  const double previous[] = {0.0, 5.0, -5.0, 1e300};
+  for (int p = 0; p < 4; ++p) {
+    const double t0 = previous[p];
+    const double times[] = {t0, nextafter(t0, -INFINITY), t0 - 1.0, -DBL_MAX, NAN, INFINITY,
+                            nextafter(t0, INFINITY), t0 + 1.0, DBL_MAX};
+    for (int i = 0; i < 9; ++i) {
+      what("frusta_hand_fitter_fit_at: time %.17g after %.17g", times[i], t0);
+      int untouched = 1;
+      const frusta_result r = fit_at_after(t0 >= 0.0 ? t0 : -1.0, times[i], &untouched);
+      if (t0 < 0.0) {  /* after an untimed fit: any finite time */
+        if (isfinite(times[i])) accepted(r);
+        else refused(r, FRUSTA_ERROR_NOT_FINITE, "time");
+      } else if (!isfinite(times[i])) {
+        refused(r, FRUSTA_ERROR_NOT_FINITE, "time");
+      } else if (times[i] > t0) {
+        accepted(r);
+      } else {
+        refused(r, FRUSTA_ERROR_OUT_OF_RANGE, "time");
+      }
+      if (r != FRUSTA_OK) verify(untouched, "a refused call changed something");
+    }
+  }
+  /* a refused time leaves the previous one: the next after it is taken */
+  what("frusta_hand_fitter_fit_at: after a refused time");
+  int untouched = 1;
+  frusta_hand_fit out;
+  memset(&out, 0, sizeof out);
+  out.struct_size = (int32_t)sizeof out;
+  refused(fit_at_after(2.0, 1.0, &untouched), FRUSTA_ERROR_OUT_OF_RANGE, "time");
+  accepted(frusta_hand_fitter_fit_at(g_fitter, nextafter(2.0, 3.0), g_joints, FRUSTA_XR_JOINT_COUNT,
+                                     NULL, &out));
+  /* a fit at a held palm is taken (and restarts the filter) */
+  frusta_tracked_joint none[FRUSTA_XR_JOINT_COUNT];
+  memset(none, 0, sizeof none);
+  what("frusta_hand_fitter_fit_at: every joint missing");
+  accepted(frusta_hand_fitter_fit_at(g_fitter, 3.0, none, FRUSTA_XR_JOINT_COUNT, NULL, &out));
+  verify(out.palm_flags == FRUSTA_FIT_HELD, "a palm with no joint was not held");
   restore_fitter();
 }
 
@@ -4506,6 +4597,7 @@ static const Entry kFunctions[] = {
     {"frusta_destroy_hand_fitter", t_destroy_hand_fitter},
     {"frusta_hand_fitter_is_valid", t_hand_fitter_is_valid},
     {"frusta_hand_fitter_fit", t_hand_fitter_fit},
+    {"frusta_hand_fitter_fit_at", t_hand_fitter_fit_at},
     {"frusta_hand_joints_from_pose", t_hand_joints_from_pose},
     {"frusta_calibrate_hand_def", t_calibrate_hand_def},
     {"frusta_query_contact", t_query_contact},

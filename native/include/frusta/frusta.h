@@ -79,7 +79,7 @@
 #define FRUSTA_VERSION \
   (FRUSTA_VERSION_MAJOR * 1000000 + FRUSTA_VERSION_MINOR * 1000 + FRUSTA_VERSION_PATCH)
 /** Bumped whenever a struct layout or a signature changes; see frusta_check_abi(). */
-#define FRUSTA_ABI_VERSION 4
+#define FRUSTA_ABI_VERSION 5
 
 /** The library's FRUSTA_VERSION. Thread: any. */
 FRUSTA_API int32_t frusta_version(void);
@@ -416,6 +416,17 @@ typedef struct frusta_hand_fit_def {
                                  the palm's fit like points this far from it; 0 (default):
                                  orientations are used only when fewer than three points
                                  out of line are present */
+  double filter_min_cutoff;   /* Hz, 0..1000: the One Euro filter (Casiez et al., CHI 2012)
+                                 frusta_hand_fitter_fit_at applies to the palm position,
+                                 the palm rotation and each angle: its cutoff at rest. 0:
+                                 no filter, fits bit-identical to unfiltered ones; default
+                                 1 (measured: README, tracked hands) */
+  double filter_beta;         /* 1/m (Hz per m/s), 0..1000: the cutoff rises to min_cutoff
+                                 + beta * speed, so fast motion lags little; a rotation's
+                                 or an angle's rad/s count as the speed of a point 0.1 m
+                                 from its axis; default 2 */
+  double filter_d_cutoff;     /* Hz, 0.001..1000: the cutoff of the speed's own low-pass;
+                                 default 1 */
   int32_t internal_value;     /* set by frusta_default_hand_fit_def(); do not touch */
   int32_t reserved0;          /* explicit padding */
 } frusta_hand_fit_def;
@@ -459,6 +470,22 @@ FRUSTA_API frusta_result frusta_hand_fitter_fit(frusta_hand_fitter_id fitter,
                                                 const frusta_tracked_joint* joints,
                                                 int32_t count, const frusta_pose* frame,
                                                 frusta_hand_fit* out);
+/** frusta_hand_fitter_fit of a sample taken at time (seconds, any origin, finite and
+ *  strictly after the previous timed sample's; otherwise refused naming "time", nothing
+ *  changed), through the fitter's One Euro filter (frusta_hand_fit_def.filter_*): the
+ *  palm position, palm rotation and angles are filtered in the joints' frame, then
+ *  composed with frame; residuals and flags are the unfiltered fit's. At rest the filter
+ *  is a first-order low-pass of filter_min_cutoff: a step is followed to 63 % after
+ *  1 / (2 pi filter_min_cutoff) s; moving, the cutoff rises with the speed. A held palm
+ *  (FRUSTA_FIT_HELD, tracking lost) restarts the whole filter, a held finger its angles:
+ *  the next fit is taken as it is, not dragged from a stale pose. An untimed
+ *  frusta_hand_fitter_fit is unfiltered and restarts the filter (the next timed sample
+ *  may then have any time). With filter_min_cutoff 0 the result is bit-identical to
+ *  frusta_hand_fitter_fit's. Allocation-free. Thread: host. */
+FRUSTA_API frusta_result frusta_hand_fitter_fit_at(frusta_hand_fitter_id fitter, double time,
+                                                   const frusta_tracked_joint* joints,
+                                                   int32_t count, const frusta_pose* frame,
+                                                   frusta_hand_fit* out);
 /** The joints of a layout on a hand of def at a palm pose (metres) with
  *  FRUSTA_HAND_JOINT_COUNT joint angles (radians; clamped into the limits as
  *  frusta_hand_set_joint_angles does), every flag set, by the output-array rule: what a

@@ -43,6 +43,9 @@ frusta_result read_fit_def(const frusta_hand_fit_def* def, HandFitOptions* out) 
   o.require_tracked = def->require_tracked == 1;
   o.max_iterations = def->max_iterations;
   o.orientation_weight = def->orientation_weight;
+  o.filter_min_cutoff = def->filter_min_cutoff;
+  o.filter_beta = def->filter_beta;
+  o.filter_d_cutoff = def->filter_d_cutoff;
   if (frusta_result r = check_hand_fit_options(o)) return r;
   *out = o;
   return FRUSTA_OK;
@@ -57,6 +60,9 @@ FRUSTA_API frusta_hand_fit_def frusta_default_hand_fit_def(void) {
   def.require_tracked = o.require_tracked ? 1 : 0;
   def.max_iterations = o.max_iterations;
   def.orientation_weight = o.orientation_weight;
+  def.filter_min_cutoff = o.filter_min_cutoff;
+  def.filter_beta = o.filter_beta;
+  def.filter_d_cutoff = o.filter_d_cutoff;
   return def;
 }
 
@@ -82,12 +88,16 @@ FRUSTA_API int32_t frusta_hand_fitter_is_valid(frusta_hand_fitter_id fitter) {
   return fitter_registry().is_valid(fitter) ? 1 : 0;
 }
 
-FRUSTA_API frusta_result frusta_hand_fitter_fit(frusta_hand_fitter_id fitter,
-                                                const frusta_tracked_joint* joints,
-                                                int32_t count, const frusta_pose* frame,
-                                                frusta_hand_fit* out) {
+namespace {
+
+// frusta_hand_fitter_fit(_at): every input checked, then one fit; timed when time is
+frusta_result fit_sample(frusta_hand_fitter_id fitter, const double* time,
+                         const frusta_tracked_joint* joints, int32_t count,
+                         const frusta_pose* frame, frusta_hand_fit* out) {
   HandFitter* f = nullptr;
   if (frusta_result r = fitter_registry().find(fitter, &f)) return r;
+  if (time)
+    if (frusta_result r = f->check_time(*time)) return r;
   if (frusta_result r = check_pointer(joints, "joints")) return r;
   Pose frame_pose;
   if (frame)
@@ -100,7 +110,10 @@ FRUSTA_API frusta_result frusta_hand_fitter_fit(frusta_hand_fitter_id fitter,
     return r;
 
   HandFit fit;
-  f->fit(in.data(), frame_pose.position, frame_pose.rotation, &fit);
+  if (time)
+    f->fit_at(*time, in.data(), frame_pose.position, frame_pose.rotation, &fit);
+  else
+    f->fit(in.data(), frame_pose.position, frame_pose.rotation, &fit);
   out->palm_flags = fit.palm_flags;
   store(Pose{fit.palm_position, fit.palm_rotation}, &out->palm);
   std::copy(fit.angles.begin(), fit.angles.end(), out->angles);
@@ -109,6 +122,22 @@ FRUSTA_API frusta_result frusta_hand_fitter_fit(frusta_hand_fitter_id fitter,
   std::copy(fit.finger_flags.begin(), fit.finger_flags.end(), out->finger_flags);
   out->reserved0 = 0;
   return FRUSTA_OK;
+}
+
+}  // namespace
+
+FRUSTA_API frusta_result frusta_hand_fitter_fit(frusta_hand_fitter_id fitter,
+                                                const frusta_tracked_joint* joints,
+                                                int32_t count, const frusta_pose* frame,
+                                                frusta_hand_fit* out) {
+  return fit_sample(fitter, nullptr, joints, count, frame, out);
+}
+
+FRUSTA_API frusta_result frusta_hand_fitter_fit_at(frusta_hand_fitter_id fitter, double time,
+                                                   const frusta_tracked_joint* joints,
+                                                   int32_t count, const frusta_pose* frame,
+                                                   frusta_hand_fit* out) {
+  return fit_sample(fitter, &time, joints, count, frame, out);
 }
 
 FRUSTA_API frusta_result frusta_hand_joints_from_pose(const frusta_hand_def* def, int32_t layout,

@@ -26,8 +26,17 @@ frusta_result check_hand_fit_options(const HandFitOptions& o) {
   if (o.max_iterations < 1 || o.max_iterations > kMaxFitIterations)
     return fail(FRUSTA_ERROR_OUT_OF_RANGE, "hand_fit_def.max_iterations is %d, must be 1..%d",
                 o.max_iterations, kMaxFitIterations);
-  return check_range(o.orientation_weight, 0.0, kMaxOrientationWeight, false,
-                     "hand_fit_def.orientation_weight");
+  if (frusta_result r = check_range(o.orientation_weight, 0.0, kMaxOrientationWeight, false,
+                                    "hand_fit_def.orientation_weight"))
+    return r;
+  if (frusta_result r = check_range(o.filter_min_cutoff, 0.0, kMaxFilterCutoff, false,
+                                    "hand_fit_def.filter_min_cutoff"))
+    return r;
+  if (frusta_result r =
+          check_range(o.filter_beta, 0.0, kMaxFilterBeta, false, "hand_fit_def.filter_beta"))
+    return r;
+  return check_range(o.filter_d_cutoff, kMinFilterDCutoff, kMaxFilterCutoff, false,
+                     "hand_fit_def.filter_d_cutoff");
 }
 
 HandFitter::HandFitter(const HandModel& model, const HandFitOptions& options)
@@ -38,8 +47,11 @@ HandFitter::HandFitter(const HandModel& model, const HandFitOptions& options)
     base_position_[f] = finger.base_position;
     base_rotation_[f] = finger.base_rotation;
     // before any fit: the rest pose, as a new hand has it
-    for (int j = 0; j < 4; ++j)
+    for (int j = 0; j < 4; ++j) {
       angles_[f][j] = std::clamp(0.0, finger.joint_min[j], finger.joint_max[j]);
+      angle_min_[static_cast<size_t>(f * 4 + j)] = finger.joint_min[j];
+      angle_max_[static_cast<size_t>(f * 4 + j)] = finger.joint_max[j];
+    }
   }
 }
 
@@ -111,8 +123,7 @@ FingerPoints HandFitter::finger_points(const TrackedJoint* joints, int f,
   return points;
 }
 
-void HandFitter::fit(const TrackedJoint* joints, const vec3& frame_position,
-                     const glm::dquat& frame_rotation, HandFit* out) {
+void HandFitter::fit_local(const TrackedJoint* joints, HandFit* out) {
   glm::dquat rotation;
   vec3 position;
   bool from_orientation = false;
@@ -147,9 +158,75 @@ void HandFitter::fit(const TrackedJoint* joints, const vec3& frame_position,
     out->finger_flags[f] = result.flags;
   }
 
+  out->palm_rotation = palm_rotation_;
+  out->palm_position = palm_position_;
+}
+
+void HandFitter::fit(const TrackedJoint* joints, const vec3& frame_position,
+                     const glm::dquat& frame_rotation, HandFit* out) {
+  reset_filter();
+  fit_local(joints, out);
   // the hand frame in the output frame
-  out->palm_rotation = glm::normalize(frame_rotation * palm_rotation_);
-  out->palm_position = frame_position + glm::mat3_cast(frame_rotation) * palm_position_;
+  out->palm_rotation = glm::normalize(frame_rotation * out->palm_rotation);
+  out->palm_position = frame_position + glm::mat3_cast(frame_rotation) * out->palm_position;
+}
+
+frusta_result HandFitter::check_time(double time) const {
+  if (!std::isfinite(time)) return fail(FRUSTA_ERROR_NOT_FINITE, "time is %g, must be finite", time);
+  if (has_time_ && !(time > time_))
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE,
+                "time is %.17g s, must be after the previous sample's %.17g s", time, time_);
+  return FRUSTA_OK;
+}
+
+void HandFitter::fit_at(double time, const TrackedJoint* joints, const vec3& frame_position,
+                        const glm::dquat& frame_rotation, HandFit* out) {
+  const double dt = has_time_ ? time - time_ : 0.0;
+  has_time_ = true;
+  time_ = time;
+  fit_local(joints, out);
+  // off costs one test: the fit is then fit()'s to the bit
+  if (options_.filter_min_cutoff > 0.0) filter(dt, out);
+  out->palm_rotation = glm::normalize(frame_rotation * out->palm_rotation);
+  out->palm_position = frame_position + glm::mat3_cast(frame_rotation) * out->palm_position;
+}
+
+void HandFitter::reset_filter() {
+  has_time_ = false;
+  position_filter_.reset();
+  rotation_filter_.reset();
+  for (OneEuro<double>& a : angle_filter_) a.reset();
+}
+
+void HandFitter::filter(double dt, HandFit* out) {
+  // tracking lost: what comes back is taken as it is, not dragged from a stale pose
+  if (out->palm_flags & FRUSTA_FIT_HELD) {
+    const double time = time_;
+    reset_filter();
+    has_time_ = true;
+    time_ = time;
+    return;
+  }
+  const OneEuroParams linear{options_.filter_min_cutoff, options_.filter_beta,
+                             options_.filter_d_cutoff};
+  const OneEuroParams angular{options_.filter_min_cutoff,
+                              options_.filter_beta * kFilterAngularRadius,
+                              options_.filter_d_cutoff};
+  out->palm_position = position_filter_.filter(out->palm_position, dt, linear);
+  out->palm_rotation = rotation_filter_.filter(out->palm_rotation, dt, angular);
+  for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
+    const bool held = (out->finger_flags[f] & FRUSTA_FIT_HELD) != 0;
+    for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j) {
+      const size_t i = static_cast<size_t>(f * FRUSTA_JOINTS_PER_FINGER + j);
+      if (held) {
+        angle_filter_[i].reset();
+        continue;
+      }
+      // a mean of angles within the limits is within them, but for rounding
+      out->angles[i] =
+          std::clamp(angle_filter_[i].filter(out->angles[i], dt, angular), angle_min_[i], angle_max_[i]);
+    }
+  }
 }
 
 }  // namespace frusta

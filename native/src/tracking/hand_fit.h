@@ -13,6 +13,7 @@
 #include "hand/hand_model.h"
 #include "tracking/finger_fit.h"
 #include "tracking/hand_joints.h"
+#include "tracking/one_euro.h"
 
 namespace frusta {
 
@@ -22,10 +23,19 @@ struct HandFitOptions {
   bool require_tracked = false;  // a valid joint counts only when tracked too
   int32_t max_iterations = 10;   // refining steps per finger
   double orientation_weight = 0.0;  // metres; 0: orientations only when points fall short
+  // the One Euro filter of timed fits; defaults measured (README, tracked hands)
+  double filter_min_cutoff = 1.0;  // Hz; 0: off
+  double filter_beta = 2.0;        // 1/m: Hz per m/s
+  double filter_d_cutoff = 1.0;    // Hz
 };
 
 constexpr int32_t kMaxFitIterations = 100;
 constexpr double kMaxOrientationWeight = 1.0;  // metres
+constexpr double kMaxFilterCutoff = 1000.0;    // Hz, min_cutoff and d_cutoff
+constexpr double kMaxFilterBeta = 1000.0;      // 1/m
+constexpr double kMinFilterDCutoff = 1e-3;     // Hz
+// metres: a rotation's or an angle's rad/s count as a point's speed this far from the axis
+constexpr double kFilterAngularRadius = 0.1;
 
 // The one check of a fit def's fields; the thread's error names the field.
 frusta_result check_hand_fit_options(const HandFitOptions& options);
@@ -48,12 +58,22 @@ class HandFitter {
 
   // Fit joint_count(layout) joints that passed check_tracked_joints, given in a frame
   // whose pose in the output frame is (frame_position, frame_rotation, unit).
+  // Unfiltered; restarts the filter.
   void fit(const TrackedJoint* joints, const vec3& frame_position,
            const glm::dquat& frame_rotation, HandFit* out);
+  // The one check of a sample's time: finite, after the previous timed sample's.
+  frusta_result check_time(double time) const;
+  // fit of a sample at time (passed check_time), through the One Euro filter
+  void fit_at(double time, const TrackedJoint* joints, const vec3& frame_position,
+              const glm::dquat& frame_rotation, HandFit* out);
 
   const HandFitOptions& options() const { return options_; }
 
  private:
+  // the fit in the joints' frame (the palm in out before composing it with a frame)
+  void fit_local(const TrackedJoint* joints, HandFit* out);
+  void filter(double dt, HandFit* out);
+  void reset_filter();
   bool present(const TrackedJoint& joint) const;
   bool oriented(const TrackedJoint& joint) const;
   // the palm in the joints' frame; false when the joints do not fix it
@@ -77,6 +97,13 @@ class HandFitter {
   glm::dquat palm_rotation_{1.0, 0.0, 0.0, 0.0};
   std::array<std::array<double, 4>, FRUSTA_FINGER_COUNT> angles_{};
   std::array<bool, FRUSTA_FINGER_COUNT> has_finger_{};
+  // the filter: the last timed sample's time, and each output's state
+  std::array<double, FRUSTA_HAND_JOINT_COUNT> angle_min_{}, angle_max_{};
+  bool has_time_ = false;
+  double time_ = 0.0;
+  OneEuro<vec3> position_filter_;
+  OneEuroRotation rotation_filter_;
+  std::array<OneEuro<double>, FRUSTA_HAND_JOINT_COUNT> angle_filter_{};
 };
 
 }  // namespace frusta

@@ -181,6 +181,65 @@ namespace Frusta.Binding.Tests
         }
 
         [Fact]
+        public void TimedFitsAreFilteredAndTimeMustIncrease()
+        {
+            FrustaHandDef hand = FrustaHandDef.Default;
+            FrustaHandFitDef def = FrustaHandFitDef.Default;
+            Assert.True(def.FilterMinCutoff > 0.0 && def.FilterBeta >= 0.0 && def.FilterDCutoff > 0.0);
+            FrustaHandFitDef off = def;
+            off.FilterMinCutoff = 0.0;
+            using var filtered = new HandFitter(hand, def);
+            using var plain = new HandFitter(hand, off);
+            var at = new FrustaTrackedJoint[26];
+            var moved = new FrustaTrackedJoint[26];
+            hand.GetJoints(FrustaJointLayout.Xr, FrustaPose.Identity, new double[20], at);
+            hand.GetJoints(FrustaJointLayout.Xr, new FrustaPose(new Vector3d(0.1, 0, 0), Quaterniond.Identity),
+                           new double[20], moved);
+            FrustaHandFit a = new FrustaHandFit(), b = new FrustaHandFit(), u = new FrustaHandFit();
+            for (int i = 0; i < 10; ++i)
+            {
+                filtered.Fit(i / 90.0, at, ref a);
+                plain.Fit(i / 90.0, at, ref b);
+            }
+            Near(0.0, a.Palm.Position.X, 1e-9);
+            // a step of 10 cm: the filter follows it part way, off follows it at once
+            filtered.Fit(10 / 90.0, moved, ref a);
+            plain.Fit(10 / 90.0, moved, ref b);
+            Assert.InRange(a.Palm.Position.X, 0.001, 0.099);
+            Near(0.1, b.Palm.Position.X, 1e-9);
+            // off: the untimed fit's to the bit
+            plain.Fit(moved, ref u);
+            Assert.Equal(b.Palm.Position.X, u.Palm.Position.X);
+
+            FrustaException e = Fails(FrustaResult.OutOfRange, () => filtered.Fit(10 / 90.0, moved, ref a), "time");
+            Assert.Equal("frusta_hand_fitter_fit_at", e.Call);
+            Fails(FrustaResult.NotFinite, () => filtered.Fit(double.NaN, moved, ref a), "time");
+            FrustaHandFitDef bad = def;
+            bad.FilterDCutoff = 0.0;
+            Fails(FrustaResult.OutOfRange, () => new HandFitter(hand, bad), "filter_d_cutoff");
+            bad = def;
+            bad.FilterBeta = -1.0;
+            Fails(FrustaResult.OutOfRange, () => new HandFitter(hand, bad), "filter_beta");
+        }
+
+        [Fact]
+        public void AFrameOfTimedFittingAllocatesNothing()
+        {
+            FrustaHandDef hand = FrustaHandDef.Default;
+            using var fitter = new HandFitter(hand, FrustaHandFitDef.Default);
+            var joints = new FrustaTrackedJoint[26];
+            hand.GetJoints(FrustaJointLayout.Xr, FrustaPose.Identity, new double[20], joints);
+            var fit = new FrustaHandFit();
+            var origin = FrustaPose.Identity;
+            double time = 0.0;
+            AllocatesNothing(() =>
+            {
+                time += 1.0 / 90.0;
+                fitter.Fit(time, joints, origin, ref fit);
+            });
+        }
+
+        [Fact]
         public void AFrameOfFittingAllocatesNothing()
         {
             FrustaHandDef hand = FrustaHandDef.Default;

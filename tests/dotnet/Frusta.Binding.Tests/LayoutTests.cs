@@ -132,7 +132,7 @@ namespace Frusta.Binding.Tests
             Assert.Equal(136, FrustaWorldDef.Default.struct_size);
             Assert.Equal(224, FrustaObjectDef.Default.struct_size);
             Assert.Equal(728, FrustaDeviceDef.Default.struct_size);
-            Assert.Equal(32, FrustaHandFitDef.Default.struct_size);
+            Assert.Equal(56, FrustaHandFitDef.Default.struct_size);
             Assert.NotEqual(0, FrustaHandFitDef.Default.internal_value);
             Assert.NotEqual(0, FrustaWorldDef.Default.internal_value);
             Assert.NotEqual(0, FrustaObjectDef.Default.internal_value);

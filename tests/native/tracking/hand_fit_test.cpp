@@ -6,10 +6,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <random>
 #include <vector>
 
 #include "scenes/random_cases.h"
+#include "core/error.h"
 #include "scenes/random_hands.h"
 
 namespace frusta {
@@ -327,6 +329,174 @@ TEST(HandFit, NoisyJointsGiveAnglesNearTheTruth) {
     std::printf("%s, 2 mm noise: angle error p50 %.3f rad, p99 %.3f rad\n", layout_name(layout),
                 p50, errors[errors.size() * 99 / 100]);
     EXPECT_LT(p50, 0.1);
+  }
+}
+
+
+// ---------------------------------------------------------------- the One Euro filter
+
+HandFitOptions filtered(double min_cutoff) {
+  HandFitOptions o = options_for(kXr);
+  o.filter_min_cutoff = min_cutoff;
+  return o;
+}
+
+// A tracked hand's samples at 90 Hz: the palm drifting, fingers bending, with noise.
+std::vector<std::array<TrackedJoint, kMaxTrackedJoints>> noisy_samples(const HandModel& model,
+                                                                      int count) {
+  std::mt19937_64 rng(kSeed + 20);
+  HandState state = scenes::random_hand_state(model, rng);
+  std::vector<std::array<TrackedJoint, kMaxTrackedJoints>> samples;
+  for (int i = 0; i < count; ++i) {
+    state.palm_position += vec3(0.002, -0.001, 0.0005);
+    auto joints = scenes::tracked_joints(model, state, kXr);
+    scenes::add_noise(joints.data(), joint_count(kXr), 0.002, rng);
+    samples.push_back(joints);
+  }
+  return samples;
+}
+
+TEST(HandFitFilter, OffIsBitIdenticalToTheUntimedFit) {
+  const HandModel model = make_hand_model(default_hand_def());
+  HandFitter timed(model, filtered(0.0)), untimed(model, filtered(0.0));
+  const vec3 frame_position(0.3, -1.0, 2.0);
+  const glm::dquat frame_rotation = glm::angleAxis(0.7, glm::normalize(vec3(1.0, 2.0, -0.5)));
+  const auto samples = noisy_samples(model, 50);
+  for (size_t i = 0; i < samples.size(); ++i) {
+    HandFit a, b;
+    timed.fit_at(i / 90.0, samples[i].data(), frame_position, frame_rotation, &a);
+    untimed.fit(samples[i].data(), frame_position, frame_rotation, &b);
+    ASSERT_EQ(std::memcmp(&a.palm_position, &b.palm_position, sizeof a.palm_position), 0) << i;
+    ASSERT_EQ(std::memcmp(&a.palm_rotation, &b.palm_rotation, sizeof a.palm_rotation), 0) << i;
+    ASSERT_EQ(std::memcmp(a.angles.data(), b.angles.data(), sizeof a.angles), 0) << i;
+    ASSERT_EQ(a.palm_residual, b.palm_residual);
+    ASSERT_EQ(a.finger_residual, b.finger_residual);
+    ASSERT_EQ(a.palm_flags, b.palm_flags);
+    ASSERT_EQ(a.finger_flags, b.finger_flags);
+  }
+}
+
+TEST(HandFitFilter, AStillHandPassesUnchanged) {
+  std::mt19937_64 rng(kSeed + 21);
+  const HandModel model = make_hand_model(default_hand_def());
+  const HandState truth = scenes::random_hand_state(model, rng);
+  const auto joints = scenes::tracked_joints(model, truth, kXr);
+  HandFitter fitter(model, HandFitOptions{});
+  for (int i = 0; i < 100; ++i) {
+    HandFit fit;
+    fitter.fit_at(10.0 + i / 90.0, joints.data(), vec3(0.0), glm::dquat(1, 0, 0, 0), &fit);
+    const Errors e = errors(fit, truth);
+    ASSERT_LT(std::max({e.position, e.rotation, e.angle}), 1e-9) << i;
+  }
+}
+
+TEST(HandFitFilter, ATimeNotAfterThePreviousIsRefusedNamingIt) {
+  const HandModel model = make_hand_model(default_hand_def());
+  HandFitter fitter(model, HandFitOptions{});
+  const auto samples = noisy_samples(model, 2);
+  HandFit fit;
+  ASSERT_EQ(fitter.check_time(1.0), FRUSTA_OK);
+  fitter.fit_at(1.0, samples[0].data(), vec3(0.0), glm::dquat(1, 0, 0, 0), &fit);
+  for (double t : {1.0, 0.5, -1.0}) {
+    EXPECT_EQ(fitter.check_time(t), FRUSTA_ERROR_OUT_OF_RANGE) << t;
+    EXPECT_NE(std::strstr(last_error_message(), "time"), nullptr) << last_error_message();
+  }
+  EXPECT_EQ(fitter.check_time(std::nan("")), FRUSTA_ERROR_NOT_FINITE);
+  EXPECT_EQ(fitter.check_time(INFINITY), FRUSTA_ERROR_NOT_FINITE);
+  EXPECT_EQ(fitter.check_time(std::nextafter(1.0, 2.0)), FRUSTA_OK);
+  // an untimed fit restarts the filter: any time is next
+  fitter.fit(samples[1].data(), vec3(0.0), glm::dquat(1, 0, 0, 0), &fit);
+  EXPECT_EQ(fitter.check_time(-5.0), FRUSTA_OK);
+}
+
+// tracking lost, then found elsewhere: the fit is taken as it is, not dragged from the
+// stale pose; without the loss the filter would drag it
+TEST(HandFitFilter, AHeldFitRestartsTheFilter) {
+  std::mt19937_64 rng(kSeed + 22);
+  const HandModel model = make_hand_model(default_hand_def());
+  HandState a = scenes::random_hand_state(model, rng), b = a;
+  b.palm_position += vec3(0.2, 0.0, 0.0);
+  for (int j = 1; j < FRUSTA_HAND_JOINT_COUNT; j += 4) b.angles[j] = a.angles[j] > 0.5 ? 0.1 : 0.9;
+  const auto at_a = scenes::tracked_joints(model, a, kXr), at_b = scenes::tracked_joints(model, b, kXr);
+  std::array<TrackedJoint, kMaxTrackedJoints> lost{};  // nothing present
+  for (bool lose : {true, false}) {
+    // the same samples unfiltered: what "taken as it is" means
+    HandFitter fitter(model, HandFitOptions{}), plain(model, filtered(0.0));
+    HandFit fit, raw;
+    double t = 0.0;
+    const auto both = [&](const std::array<TrackedJoint, kMaxTrackedJoints>& joints) {
+      fitter.fit_at(t, joints.data(), vec3(0.0), glm::dquat(1, 0, 0, 0), &fit);
+      plain.fit_at(t, joints.data(), vec3(0.0), glm::dquat(1, 0, 0, 0), &raw);
+      t += 1.0 / 90.0;
+    };
+    for (int i = 0; i < 90; ++i) both(at_a);
+    if (lose) {
+      both(lost);
+      EXPECT_EQ(fit.palm_flags, FRUSTA_FIT_HELD);
+      EXPECT_LT(errors(fit, a).position, 1e-9);  // held: the last fit, as it was
+    }
+    both(at_b);
+    double angle = 0.0;
+    for (int j = 0; j < FRUSTA_HAND_JOINT_COUNT; ++j)
+      angle = std::max(angle, std::fabs(fit.angles[j] - raw.angles[j]));
+    const double position = glm::length(fit.palm_position - raw.palm_position);
+    if (lose) {
+      EXPECT_EQ(position, 0.0);
+      EXPECT_EQ(scenes::rotation_angle(fit.palm_rotation, raw.palm_rotation), 0.0);
+      EXPECT_EQ(angle, 0.0);
+    } else {
+      EXPECT_GT(position, 0.05);  // dragged: the filter's lag
+      EXPECT_GT(angle, 0.05);
+    }
+  }
+}
+
+// a held finger restarts its angles' filter alone
+TEST(HandFitFilter, AHeldFingerRestartsItsAngles) {
+  std::mt19937_64 rng(kSeed + 23);
+  const HandModel model = make_hand_model(default_hand_def());
+  HandState a = scenes::random_hand_state(model, rng), b = a;
+  for (int j = 1; j < FRUSTA_HAND_JOINT_COUNT; j += 4) b.angles[j] = a.angles[j] > 0.5 ? 0.1 : 0.9;
+  const auto at_a = scenes::tracked_joints(model, a, kXr), at_b = scenes::tracked_joints(model, b, kXr);
+  auto index_lost = at_a;
+  for (int k = 1; k < kChainPoints; ++k)
+    set_missing(index_lost, chain_joint(kXr, FRUSTA_FINGER_INDEX, k));
+  HandFitter fitter(model, HandFitOptions{});
+  HandFit fit;
+  double t = 0.0;
+  for (int i = 0; i < 90; ++i, t += 1.0 / 90.0)
+    fitter.fit_at(t, at_a.data(), vec3(0.0), glm::dquat(1, 0, 0, 0), &fit);
+  fitter.fit_at(t, index_lost.data(), vec3(0.0), glm::dquat(1, 0, 0, 0), &fit);
+  t += 1.0 / 90.0;
+  EXPECT_EQ(fit.finger_flags[FRUSTA_FINGER_INDEX], FRUSTA_FIT_HELD);
+  fitter.fit_at(t, at_b.data(), vec3(0.0), glm::dquat(1, 0, 0, 0), &fit);
+  const int index_mcp = FRUSTA_FINGER_INDEX * 4 + 1, middle_mcp = FRUSTA_FINGER_MIDDLE * 4 + 1;
+  EXPECT_NEAR(fit.angles[index_mcp], b.angles[index_mcp], 1e-6);              // taken as it is
+  EXPECT_GT(std::fabs(fit.angles[middle_mcp] - b.angles[middle_mcp]), 0.05);  // filtered
+}
+
+// what the filter removes from a still hand's jitter, fit by fit
+TEST(HandFitFilter, ReducesAStillHandsJitter) {
+  std::mt19937_64 rng(kSeed + 24);
+  const HandModel model = make_hand_model(default_hand_def());
+  const HandState truth = scenes::random_hand_state(model, rng);
+  for (double sigma : {0.001, 0.002, 0.005}) {
+    double raw = 0.0, smooth = 0.0;
+    HandFitter plain(model, filtered(0.0)), filter(model, HandFitOptions{});
+    for (int i = 0; i < 900; ++i) {
+      auto joints = scenes::tracked_joints(model, truth, kXr);
+      scenes::add_noise(joints.data(), joint_count(kXr), sigma, rng);
+      HandFit a, b;
+      plain.fit_at(i / 90.0, joints.data(), vec3(0.0), glm::dquat(1, 0, 0, 0), &a);
+      filter.fit_at(i / 90.0, joints.data(), vec3(0.0), glm::dquat(1, 0, 0, 0), &b);
+      if (i < 90) continue;
+      raw += std::pow(errors(a, truth).position, 2);
+      smooth += std::pow(errors(b, truth).position, 2);
+    }
+    const double factor = std::sqrt(raw / smooth);
+    std::printf("a still hand, %.0f mm noise: the palm's jitter reduced %.1f times\n", 1e3 * sigma,
+                factor);
+    EXPECT_GT(factor, 3.0);
   }
 }
 

@@ -72,7 +72,8 @@ namespace Frusta.Binding
             Fit(joints, FrustaPose.Identity, ref fit);
 
         /// <summary>
-        /// Fit one sample (<c>frusta_hand_fitter_fit</c>): joints in a frame whose pose in the world is
+        /// Fit one sample, unfiltered (<c>frusta_hand_fitter_fit</c>; it restarts the filter of timed
+        /// fits): joints in a frame whose pose in the world is
         /// <paramref name="frame"/> (e.g. the XR origin's), into <paramref name="fit"/>, whose palm is
         /// then in the world. Feed it to <see cref="World.SetHaptic(FrustaHandId, in FrustaHandFit)"/>.
         /// Allocation-free; microseconds.
@@ -93,6 +94,39 @@ namespace Frusta.Binding
             fixed (FrustaHandFit* f = &fit)
                 Errors.Check(Native.frusta_hand_fitter_fit(handle.Id, j, joints.Length, p, f), "frusta_hand_fitter_fit");
         }
+
+        /// <summary>
+        /// Fit one sample taken at <paramref name="time"/> through the fitter's One Euro filter
+        /// (<c>frusta_hand_fitter_fit_at</c>; <see cref="FrustaHandFitDef.FilterMinCutoff"/>,
+        /// <see cref="FrustaHandFitDef.FilterBeta"/>, <see cref="FrustaHandFitDef.FilterDCutoff"/>): a
+        /// tracker's jitter is smoothed away at rest, motion lags little. Give each sample the time the
+        /// tracker took it (e.g. the XR frame's predicted display time), seconds, strictly increasing;
+        /// tracking lost (a held palm) restarts the filter. Allocation-free; microseconds.
+        /// </summary>
+        /// <param name="time">Seconds, any origin, after the previous timed sample's.</param>
+        /// <param name="joints">Exactly <see cref="JointCount"/> joints.</param>
+        /// <param name="frame">The joints' frame in the world, metres.</param>
+        /// <param name="fit">Filled: the filtered palm and angles, the unfiltered fit's residuals and flags.</param>
+        /// <exception cref="FrustaException">A time not after the previous one (naming "time"), a wrong
+        /// count, or a bad joint; the fitter and <paramref name="fit"/> are then as they were.</exception>
+        public void Fit(double time, ReadOnlySpan<FrustaTrackedJoint> joints, in FrustaPose frame, ref FrustaHandFit fit)
+        {
+            fit.struct_size = sizeof(FrustaHandFit);
+            using (new HandleUse(handle))
+            fixed (FrustaTrackedJoint* j = joints)
+            fixed (FrustaPose* p = &frame)
+            fixed (FrustaHandFit* f = &fit)
+                Errors.Check(Native.frusta_hand_fitter_fit_at(handle.Id, time, j, joints.Length, p, f),
+                             "frusta_hand_fitter_fit_at");
+        }
+
+        /// <summary>Fit one sample taken at <paramref name="time"/>, joints in the world's frame
+        /// (<see cref="Fit(double, ReadOnlySpan{FrustaTrackedJoint}, in FrustaPose, ref FrustaHandFit)"/>).</summary>
+        /// <param name="time">Seconds, after the previous timed sample's.</param>
+        /// <param name="joints">Exactly <see cref="JointCount"/> joints.</param>
+        /// <param name="fit">Filled: palm, angles, residuals, flags.</param>
+        public void Fit(double time, ReadOnlySpan<FrustaTrackedJoint> joints, ref FrustaHandFit fit) =>
+            Fit(time, joints, FrustaPose.Identity, ref fit);
 
         /// <summary>Destroy the native fitter (<c>frusta_destroy_hand_fitter</c>). Safe to call twice.</summary>
         public void Dispose() => handle.Dispose();

@@ -232,7 +232,8 @@ namespace Frusta.Binding
     public partial struct FrustaHandFitDef
     {
         /// <summary>The library's defaults (<c>frusta_default_hand_fit_def</c>): OpenXR's 26 joints,
-        /// inferred joints taken, 10 refining steps, orientations only when points fall short.
+        /// inferred joints taken, 10 refining steps, orientations only when points fall short, the
+        /// One Euro filter of timed fits on (<see cref="FilterMinCutoff"/>; 0 turns it off).
         /// Thread: any.</summary>
         public static FrustaHandFitDef Default => FrustaLibrary.Compatible(() => Native.frusta_default_hand_fit_def());
 

@@ -6,7 +6,7 @@ namespace Frusta.Binding
     /// <summary>
     /// A world hand's haptic input from hand tracking, frame after frame: the frame's joints go into
     /// <see cref="Joints"/> (or one by one from XR Hands through <see cref="SetXrHandsJoint"/>), then
-    /// <see cref="Drive"/> fits them (<see cref="HandFitter"/>) and hands the fit to the world. A fit
+    /// <see cref="Drive(World, FrustaHandId, in FrustaPose, double)"/> fits them (<see cref="HandFitter"/>) and hands the fit to the world. A fit
     /// with no good history yet is not sent, so a hand never jumps to the rest pose at the origin.
     /// On request it sizes the hand to the user's: <see cref="BeginCalibration"/> gathers the next
     /// frames, <see cref="TryCompleteCalibration"/> calibrates the def from them
@@ -41,7 +41,7 @@ namespace Frusta.Binding
         public FrustaHandDef Hand => hand;
 
         /// <summary>This frame's joints in the fit def's layout, in Frusta's frame relative to the frame
-        /// given to <see cref="Drive"/>. They stay as set until overwritten or <see cref="ClearJoints"/>.</summary>
+        /// given to <see cref="Drive(World, FrustaHandId, in FrustaPose)"/>. They stay as set until overwritten or <see cref="ClearJoints"/>.</summary>
         public Span<FrustaTrackedJoint> Joints => joints;
 
         /// <summary>The last fit (<see cref="FrustaHandFit.PalmFlags"/> says how good).</summary>
@@ -81,9 +81,25 @@ namespace Frusta.Binding
         /// <returns>true when the fit went to the world.</returns>
         /// <exception cref="FrustaException">A joint breaking the rules of <see cref="FrustaTrackedJoint"/>
         /// (named in the message), or the world refusing the input.</exception>
-        public bool Drive(World world, FrustaHandId id, in FrustaPose frame)
+        public bool Drive(World world, FrustaHandId id, in FrustaPose frame) => Drive(world, id, frame, double.NaN);
+
+        /// <summary>
+        /// <see cref="Drive(World, FrustaHandId, in FrustaPose)"/> of joints the tracker took at
+        /// <paramref name="time"/> (seconds, strictly increasing; e.g. the XR frame's time), through the
+        /// fitter's One Euro filter (<see cref="HandFitter.Fit(double, ReadOnlySpan{FrustaTrackedJoint}, in FrustaPose, ref FrustaHandFit)"/>):
+        /// what real trackers' jitter needs for a stable grasp.
+        /// </summary>
+        /// <param name="world">The hand's world.</param>
+        /// <param name="id">The hand, created from <see cref="Hand"/>.</param>
+        /// <param name="frame">The joints' frame in the world, Frusta's frame.</param>
+        /// <param name="time">Seconds; NaN: an unfiltered fit.</param>
+        /// <returns>true when the fit went to the world.</returns>
+        /// <exception cref="FrustaException">A time not after the previous one, a bad joint, or the
+        /// world refusing the input.</exception>
+        public bool Drive(World world, FrustaHandId id, in FrustaPose frame, double time)
         {
-            fitter.Fit(joints, frame, ref fit);
+            if (double.IsNaN(time)) fitter.Fit(joints, frame, ref fit);
+            else fitter.Fit(time, joints, frame, ref fit);
             if ((fit.PalmFlags & FrustaFitFlag.Held) == 0 && calibrationFrames < CalibrationFrameCapacity)
             {
                 joints.AsSpan().CopyTo(calibration.AsSpan(calibrationFrames * joints.Length));

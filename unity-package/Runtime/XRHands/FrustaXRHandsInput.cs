@@ -47,6 +47,7 @@ namespace Frusta.Unity
         FrustaHand hand;
         XRHandSubsystem subsystem;
         TrackedHandInput input;
+        double lastFitTime = double.NegativeInfinity;  // seconds, the last sample's
         bool calibrationWanted, calibrating;
         bool reportedError;
 
@@ -142,7 +143,11 @@ namespace Frusta.Unity
             FrustaPose frame = trackingSpace != null ? trackingSpace.ToFrustaPose() : FrustaPose.Identity;
             try
             {
-                input.Drive(world, hand.Id, frame);
+                // the fitter's One Euro filter needs each sample's time, strictly increasing
+                double now = Time.unscaledTimeAsDouble;
+                if (now <= lastFitTime) now = lastFitTime + 1e-4;
+                lastFitTime = now;
+                input.Drive(world, hand.Id, frame, now);
                 if (calibrating && input.TryCompleteCalibration())
                 {
                     calibrating = false;

@@ -171,6 +171,23 @@ namespace Frusta.Binding
         internal static extern FrustaResult frusta_hand_fitter_fit(FrustaHandFitterId fitter, FrustaTrackedJoint* joints, int count, FrustaPose* frame, FrustaHandFit* @out);
 
         /// <summary>
+        /// frusta_hand_fitter_fit of a sample taken at time (seconds, any origin, finite and
+        /// strictly after the previous timed sample's; otherwise refused naming "time", nothing
+        /// changed), through the fitter's One Euro filter (frusta_hand_fit_def.filter_*): the
+        /// palm position, palm rotation and angles are filtered in the joints' frame, then
+        /// composed with frame; residuals and flags are the unfiltered fit's. At rest the filter
+        /// is a first-order low-pass of filter_min_cutoff: a step is followed to 63 % after
+        /// 1 / (2 pi filter_min_cutoff) s; moving, the cutoff rises with the speed. A held palm
+        /// (FRUSTA_FIT_HELD, tracking lost) restarts the whole filter, a held finger its angles:
+        /// the next fit is taken as it is, not dragged from a stale pose. An untimed
+        /// frusta_hand_fitter_fit is unfiltered and restarts the filter (the next timed sample
+        /// may then have any time). With filter_min_cutoff 0 the result is bit-identical to
+        /// frusta_hand_fitter_fit's. Allocation-free. Thread: host.
+        /// </summary>
+        [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern FrustaResult frusta_hand_fitter_fit_at(FrustaHandFitterId fitter, double time, FrustaTrackedJoint* joints, int count, FrustaPose* frame, FrustaHandFit* @out);
+
+        /// <summary>
         /// The joints of a layout on a hand of def at a palm pose (metres) with
         /// FRUSTA_HAND_JOINT_COUNT joint angles (radians; clamped into the limits as
         /// frusta_hand_set_joint_angles does), every flag set, by the output-array rule: what a

@@ -147,6 +147,26 @@ namespace Frusta.Binding
         /// out of line are present
         /// </summary>
         public double OrientationWeight;
+        /// <summary>
+        /// Hz, 0..1000: the One Euro filter (Casiez et al., CHI 2012)
+        /// frusta_hand_fitter_fit_at applies to the palm position,
+        /// the palm rotation and each angle: its cutoff at rest. 0:
+        /// no filter, fits bit-identical to unfiltered ones; default
+        /// 1 (measured: README, tracked hands)
+        /// </summary>
+        public double FilterMinCutoff;
+        /// <summary>
+        /// 1/m (Hz per m/s), 0..1000: the cutoff rises to min_cutoff
+        /// + beta * speed, so fast motion lags little; a rotation's
+        /// or an angle's rad/s count as the speed of a point 0.1 m
+        /// from its axis; default 2
+        /// </summary>
+        public double FilterBeta;
+        /// <summary>
+        /// Hz, 0.001..1000: the cutoff of the speed's own low-pass;
+        /// default 1
+        /// </summary>
+        public double FilterDCutoff;
         /// <summary>set by frusta_default_hand_fit_def(); do not touch</summary>
         internal int internal_value;
         /// <summary>explicit padding</summary>
