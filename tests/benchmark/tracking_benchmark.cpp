@@ -4,7 +4,8 @@
 // Gaussian noise of sigma 0, 1, 2 and 5 mm on every joint coordinate (and with a tenth
 // of the joints missing); calibration's time next to its hand length and breadth error.
 // Hands are random: both sides, lengths 0.14..0.23 m, poses uniform within the joint
-// limits (tests/scenes/random_hands.h, fixed seed). Counters:
+// limits (tests/scenes/random_hands.h, fixed seed). BM_FitTimed: a timed fit with the
+// One Euro filter off and on (the default def's), to show what the filter costs. Counters:
 //   us_per_fit                 CPU microseconds per fit of one hand
 //   angle_error_p50, _p99      radians, over all 20 angles of every case
 //   flexion_p99, abduction_p99 radians, the flexions and the abductions alone
@@ -150,6 +151,32 @@ void BM_Calibrate(benchmark::State& state, int32_t layout) {
   state.counters["breadth_error_max"] = breadth_error;
 }
 
+// A timed fit (HandFitter::fit_at, 90 Hz samples), 2 mm noise: range(0) 0 the filter
+// off, 1 the default One Euro filter; its cost is the difference of the two rows
+void BM_FitTimed(benchmark::State& state, int32_t layout) {
+  Batch b = make_batch(layout, 0.002, 0);
+  HandFitOptions options;
+  options.layout = layout;
+  if (state.range(0) == 0) options.filter_min_cutoff = 0.0;
+  for (std::size_t i = 0; i < kCases; ++i)
+    b.fitters[i] = std::make_unique<HandFitter>(make_hand_model(default_hand_def()), options);
+  HandFit fit;
+  const vec3 origin(0.0);
+  const glm::dquat identity(1.0, 0.0, 0.0, 0.0);
+  double time = 0.0;
+  for (auto _ : state) {
+    time += 1.0 / 90.0;
+    for (std::size_t i = 0; i < kCases; ++i) {
+      b.fitters[i]->fit_at(time, b.joints[i].data(), origin, identity, &fit);
+      benchmark::DoNotOptimize(fit.angles[0]);
+    }
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(kCases) * state.iterations());
+  state.counters["us_per_fit"] = benchmark::Counter(
+      static_cast<double>(kCases) * 1e-6,
+      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
 // sigma 0, 1, 2, 5 mm; then 2 mm with a tenth of the joints missing
 void fit_arguments(benchmark::internal::Benchmark* b) {
   for (int sigma_um : {0, 1000, 2000, 5000}) b->Args({sigma_um, 0});
@@ -158,6 +185,7 @@ void fit_arguments(benchmark::internal::Benchmark* b) {
 
 BENCHMARK_CAPTURE(BM_Fit, xr, FRUSTA_JOINT_LAYOUT_XR)->Apply(fit_arguments);
 BENCHMARK_CAPTURE(BM_Fit, keypoints, FRUSTA_JOINT_LAYOUT_KEYPOINTS)->Apply(fit_arguments);
+BENCHMARK_CAPTURE(BM_FitTimed, xr, FRUSTA_JOINT_LAYOUT_XR)->ArgName("filter")->Arg(0)->Arg(1);
 BENCHMARK_CAPTURE(BM_Calibrate, xr, FRUSTA_JOINT_LAYOUT_XR)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Calibrate, keypoints, FRUSTA_JOINT_LAYOUT_KEYPOINTS)->Unit(benchmark::kMillisecond);
 
