@@ -136,6 +136,31 @@ namespace Frusta.Binding.Tests
         }
 
         [Fact]
+        public void TheEditorWorkflowInstallsTheTarballWhereItsTestProjectLooks()
+        {
+            // .github/workflows/unity.yml cannot run here (no Unity editor or licence): its paths can
+            string root = Path.GetDirectoryName(TestEnv.Package);
+            string workflow = File.ReadAllText(Path.Combine(root, ".github", "workflows", "unity.yml"));
+            foreach (string part in new[] { "game-ci/unity-test-runner@v4", "editmode", "playmode", "packageMode:",
+                                            "run: tar -xzf build/package/com.frusta.engine-*.tgz -C build/package",
+                                            "path: build/package/com.frusta.engine-*.tgz", "tools/package" })
+                Assert.Contains(part, workflow);
+            // tools/package writes the tarball there; npm-pack layout unpacks to package/
+            Assert.Contains("out=\"build/package\"", File.ReadAllText(Path.Combine(root, "tools", "package")));
+            string project = Path.Combine(root, "tests", "unity", "XRHandsProject");
+            Assert.Contains($"'tests/unity/XRHandsProject'", workflow);
+            JsonElement manifest = Json(Path.Combine(project, "Packages", "manifest.json"));
+            JsonElement dependencies = manifest.GetProperty("dependencies");
+            string source = dependencies.GetProperty("com.frusta.engine").GetString();
+            Assert.StartsWith("file:", source);
+            Assert.Equal(Path.Combine(root, "build", "package", "package"),
+                         Path.GetFullPath(Path.Combine(project, "Packages", source.Substring(5))));
+            Assert.Equal(new[] { "com.frusta.engine" }, Strings(manifest, "testables"));
+            // the XR Hands version Frusta.XRHands needs (its versionDefines)
+            Assert.True(Version.Parse(dependencies.GetProperty("com.unity.xr.hands").GetString()) >= new Version(1, 5, 0));
+        }
+
+        [Fact]
         public void NoScriptUsesObsoleteUnityApi()
         {
             // obsolete from Unity 2023.1 (FindAnyObjectByType / FindObjectsByType replace them)
