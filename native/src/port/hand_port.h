@@ -7,8 +7,8 @@
 // sees the world. One driver at a time: a glove claims the port, and while it holds it
 // the host's inputs are refused.
 //
-// Threads: set_input from any one thread per port (its driver; a driver of a hand
-// already gone may still be in it); read_feed from one device thread; open / close /
+// Threads: set_input and set_input_at from any one thread per port (its driver; a
+// driver of a hand already gone may still be in it); read_feed from one device thread; open / close /
 // idle / claim_for_device / release_device from the host; the stepping thread takes
 // the input and publishes the feed. No call waits for another.
 #pragma once
@@ -19,17 +19,23 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "core/base.h"
+#include "core/spsc_queue.h"
 #include "core/triple_buffer.h"
 #include "forces/device_outputs.h"
 #include "hand/kinematics.h"
 
 namespace frusta {
 
-// A haptic input and when it was set (steady clock, ns): a device's inputs do not
-// arrive one per step, and the world's own thread smooths them by their times.
+// A haptic input, when it was set (steady clock, ns) and the time it is for: its
+// driver's stamp on the world's clock (timed), or else when it was set. Inputs do not
+// arrive one per step, and a host that stalls delivers them late and in bursts; the
+// world plays them by their times, a fixed delay behind (runtime/input_playback.h).
 struct TimedInput {
   HandState state;  // checked by check_hand_state, rotation unit
   int64_t set_ns = 0;
+  int64_t time_ns = 0;    // the sample's time: the driver's (timed) or set_ns
+  uint64_t sequence = 0;  // 1, 2, ... per hand in the port: the order they were set
+  bool timed = false;     // the driver stamped it (set_input_at)
 };
 
 // What a device thread reads at its own rate: its hand's device outputs and whether
@@ -70,6 +76,12 @@ class HandPort {
   // used; the host (kHost) is refused with FRUSTA_ERROR_WRONG_STATE while a device
   // drives the hand.
   frusta_result set_input(const HandState& state, Driver from, uint32_t generation);
+  // The same, for a sample the driver stamped with its time on the world's clock (ns):
+  // each hand's timed samples must come in time order (FRUSTA_ERROR_OUT_OF_RANGE for one
+  // no later than the one before). Every sample is kept for the step, up to
+  // kInputQueueCapacity between two steps (beyond that, the newest still reaches it).
+  frusta_result set_input_at(const HandState& state, int64_t time_ns, Driver from,
+                             uint32_t generation);
   // One device thread: the newest feed, unchanged until its next call.
   const DeviceFeed& read_feed() { return feed_.read(); }
   double rate_hz() const { return rate_hz_; }
@@ -83,14 +95,26 @@ class HandPort {
   // The stepping thread: whether an input came since the last take, and the newest.
   bool input_fresh() const { return input_.fresh(); }
   const TimedInput& take_input() { return input_.read(); }
+  // The stepping thread: the inputs in the order they were set, oldest first; false
+  // when none is waiting. A burst larger than the queue loses its middle: the newest
+  // is still take_input()'s.
+  bool pop_input(TimedInput& out) { return queue_.pop(out); }
+  static constexpr size_t kInputQueueCapacity = 64;
   // The stepping thread: publish the hand's feed for its device.
   void publish_feed(const DeviceFeed& feed);
 
  private:
-  // set_input once the driver is counted in and the hand is the port's
-  frusta_result write_input(const HandState& state, Driver from);
+  // set_input(_at) once the driver is counted in and the hand is the port's; time_ns < 0:
+  // untimed
+  frusta_result write_input(const HandState& state, int64_t time_ns, Driver from);
+  frusta_result enter(uint32_t generation);
 
-  TripleBuffer<TimedInput> input_;
+  TripleBuffer<TimedInput> input_;  // the newest
+  SpscQueue<TimedInput> queue_{kInputQueueCapacity};  // every one, in order
+  // the driver's (one at a time; atomic as drivers change hands): the last sequence
+  // number and the last timed sample's time
+  std::atomic<uint64_t> sequence_{0};
+  std::atomic<int64_t> last_time_ns_{INT64_MIN};
   TripleBuffer<DeviceFeed> feed_;
   std::atomic<bool> device_{false};
   // a driver counts itself in, then checks the generation; the host closes, then checks

@@ -32,21 +32,23 @@ void HandPipeline::forget(int32_t slot) {
 }
 
 bool HandPipeline::step(const HandStepContext& context, SceneObjects& scene, HandSnapshot& snap) {
-  if (port_.input_fresh()) {
-    previous_ = has_input_ ? newest_ : port_.take_input();
-    newest_ = port_.take_input();
-    has_input_ = true;
-  }
-  if (!has_input_) return true;  // nothing to solve before the first input
-  HandState haptic = newest_.state;
-  const int64_t span = newest_.set_ns - previous_.set_ns;
-  if (context.paced && span > 0) {
-    // where the glove was one period before this tick, between the two inputs around
-    // that time (a tick caught up after a stall asks for its own time, not now's)
-    const double late =
-        static_cast<double>(context.tick_ns - previous_.set_ns) - context.dt * 1e9;
-    const double t = std::clamp(late / static_cast<double>(span), 0.0, 1.0);
-    haptic = interpolate(previous_.state, newest_.state, t);
+  // every sample delivered since the last step, in order; the newest as well, in case a
+  // burst overflowed the port's queue (the playback drops what it has already)
+  TimedInput input;
+  while (port_.pop_input(input)) playback_.push(input);
+  if (port_.input_fresh()) playback_.push(port_.take_input());
+  if (playback_.empty()) return true;  // nothing to solve before the first input
+  HandState haptic;
+  bool late = false;
+  if (!context.paced && !playback_.newest().timed) {
+    // the host steps and sets untimed inputs: it paces both, and the newest is for now
+    playback_.keep_newest();
+    haptic = playback_.newest().state;
+  } else {
+    // where the driver's samples say the hand was input_delay before this step (a step
+    // caught up after a stall asks for its own time, not now's)
+    haptic = playback_.play(context.time_ns - context.input_delay_ns,
+                            context.max_extrapolation_ns, &late);
   }
   update_ignored(scene);
   const bool own_list = ignored_count_ > 0;
@@ -67,6 +69,7 @@ bool HandPipeline::step(const HandStepContext& context, SceneObjects& scene, Han
   snap.graphic = solver_.graphic();
   snap.stats = stats;
   snap.ignored_objects = ignored_count_;
+  snap.input_late = late;
   snap.solved = solver_.started();
   const std::vector<SolverContact>& contacts = solver_.contacts();
   snap.contact_count = static_cast<int32_t>(contacts.size());

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// One hand of a world, each step: take its driver's input from the port (played one
-// period late and interpolated on the world's own thread), solve the graphic hand,
+// One hand of a world, each step: take its driver's inputs from the port and play them
+// a fixed delay behind the step's time (input_playback.h), solve the graphic hand,
 // compute the contact forces and device outputs, add the hand's reactions to the
 // objects, fill the hand's snapshot and publish its device feed. Everything it needs,
 // its snapshots included, is allocated when it is built (on the host's thread, when the
@@ -17,6 +17,7 @@
 #include "forces/contact_forces.h"
 #include "forces/device_outputs.h"
 #include "port/hand_port.h"
+#include "runtime/input_playback.h"
 #include "runtime/scene_objects.h"
 #include "runtime/world_snapshot.h"
 #include "solver/hand_solver.h"
@@ -26,8 +27,13 @@ namespace frusta {
 // What every hand of a world shares for a step.
 struct HandStepContext {
   double dt = 0.0;            // seconds
-  bool paced = false;         // on the world's own thread: play inputs one period late
-  int64_t tick_ns = 0;        // steady clock of the tick being stepped (paced only)
+  bool paced = false;         // on the world's own thread
+  // the step's time on the world's clock: the tick's on the steady clock (paced), else
+  // the world's time after the step (steps / rate_hz); inputs are played input_delay_ns
+  // behind it
+  int64_t time_ns = 0;
+  int64_t input_delay_ns = 0;
+  int64_t max_extrapolation_ns = 0;
   HandSolver::Clock::time_point deadline = HandSolver::Clock::time_point::max();
   DeviceLimits device_limits;
   int32_t max_contacts = 0;   // kept in the snapshot
@@ -62,8 +68,7 @@ class HandPipeline {
   int32_t slot_;
   HandPort& port_;
   std::array<HandSnapshot, 3> snapshots_;
-  bool has_input_ = false;
-  TimedInput previous_, newest_;  // the two last inputs taken
+  InputPlayback playback_;        // the inputs taken, played by their times
   HandState accepted_;            // the last haptic input the solver took
   ContactForces forces_;
   std::vector<ObjectWrench> reactions_;  // this hand's, per object of its list

@@ -2,6 +2,7 @@
 #include "runtime/world.h"
 
 #include <chrono>
+#include <cmath>
 
 #include "core/error.h"
 #include "core/periodic_clock.h"
@@ -66,6 +67,14 @@ frusta_result World::set_haptic(HandHandle hand, const HandState& haptic) {
     return fail(FRUSTA_ERROR_STALE_ID, "hand {slot=%d} names no hand of this world (it has %d hand slots)",
                 hand.slot, def_.max_hands);
   return host_hands_.port(hand.slot).set_input(haptic, HandPort::Driver::kHost, hand.generation);
+}
+
+frusta_result World::set_haptic_at(HandHandle hand, const HandState& haptic, int64_t time_ns) {
+  if (hand.slot < 0 || hand.slot >= def_.max_hands)
+    return fail(FRUSTA_ERROR_STALE_ID, "hand {slot=%d} names no hand of this world (it has %d hand slots)",
+                hand.slot, def_.max_hands);
+  return host_hands_.port(hand.slot).set_input_at(haptic, time_ns, HandPort::Driver::kHost,
+                                                  hand.generation);
 }
 
 frusta_result World::step() {
@@ -135,7 +144,13 @@ void World::step_once(double dt, bool paced, int64_t tick_ns) {
   HandStepContext context;
   context.dt = dt;
   context.paced = paced;
-  context.tick_ns = tick_ns;
+  // the world's clock: the steady clock's tick on the own thread, the step count's time
+  // when the host steps (its samples are stamped on it: deterministic)
+  context.time_ns = paced ? tick_ns
+                          : static_cast<int64_t>(std::llround(static_cast<double>(step_ + 1) * 1e9 /
+                                                              def_.rate_hz));
+  context.input_delay_ns = static_cast<int64_t>(std::llround(def_.input_delay * 1e9));
+  context.max_extrapolation_ns = static_cast<int64_t>(std::llround(def_.max_extrapolation * 1e9));
   context.device_limits = def_.device_limits;
   context.max_contacts = def_.max_contacts_per_hand;
   const int64_t host_read_ns = host_read_ns_.load(std::memory_order_relaxed);

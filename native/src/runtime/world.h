@@ -79,14 +79,20 @@ class World {
 
   // Any one thread per hand: the host's haptic input, through the hand's port (see
   // HandPort::set_input: the one rule for a hand's inputs, refused while a glove
-  // drives the hand). The newest wins. On the world's own thread a step plays the
-  // inputs one period late, interpolated between the two it has by the times they were
-  // set: a glove whose inputs arrive unevenly against the steps (two in one step,
-  // none in the next) moves the hand smoothly instead of in jerks that shake a held
-  // object loose. step() from the host takes the newest input as it is (the host
-  // paces both).
+  // drives the hand). Each step plays the hand's samples input_delay behind the step's
+  // time, interpolated between the two around that time, extrapolated at most
+  // max_extrapolation past the newest, then held (input_playback.h): a driver whose
+  // samples arrive unevenly (two in one step, none in the next, a burst after a stall)
+  // moves the hand as its samples say instead of in jerks that shake a held object
+  // loose. set_haptic stamps the sample with when it is set (steady clock); step() from
+  // the host takes the newest untimed input as it is (the host paces both).
   // FRUSTA_ERROR_STALE_ID for a hand removed (even while a removal is under way).
   frusta_result set_haptic(HandHandle hand, const HandState& haptic);
+  // The same, stamped by the driver with the sample's time on the world's clock (ns):
+  // the steady clock (steady_ns()) for a world on its own thread; for a world the host
+  // steps, the world's time after a step, steps / rate_hz (the host's own clock, in
+  // effect). A hand's samples must come in time order.
+  frusta_result set_haptic_at(HandHandle hand, const HandState& haptic, int64_t time_ns);
 
   // The stepping thread: apply queued commands, solve every hand, publish a snapshot.
   // From the host's loop only while the world's own thread is not running.
@@ -113,9 +119,8 @@ class World {
   HandPort& port(int32_t slot) { return host_hands_.port(slot); }
 
  private:
-  // on the own thread `paced`: inputs are played one period before the tick (steady
-  // clock, ns), interpolated by the times they were set, so a device's jitter does not
-  // jerk the hand
+  // on the own thread `paced`, at the tick tick_ns (steady clock); inputs are played
+  // input_delay behind the step's time
   void step_once(double dt, bool paced, int64_t tick_ns);
   void apply_commands();
 

@@ -95,6 +95,11 @@ frusta_result check_world_def(const WorldDef& def) {
   if (def.command_capacity < 1 || def.command_capacity > 1 << 20)
     return fail(FRUSTA_ERROR_OUT_OF_RANGE, "command_capacity is %d, must be 1..2^20",
                 def.command_capacity);
+  if (frusta_result r = check_range(def.input_delay, 0.0, kMaxInputDelay, false, "input_delay"))
+    return r;
+  if (frusta_result r = check_range(def.max_extrapolation, 0.0, kMaxInputDelay, false,
+                                    "max_extrapolation"))
+    return r;
   return check_device_limits(def.device_limits);
 }
 

@@ -28,7 +28,18 @@ struct WorldDef {
   int32_t max_hands = 8;
   int32_t max_contacts_per_hand = 256;  // reported per snapshot; more are counted, not kept
   int32_t command_capacity = 256;
+  // inputs are played this long behind the step's time (seconds), so a host whose
+  // samples arrive late and in bursts still moves the hand as its samples say. The
+  // default is the p99 of a 1 ms host loop's delivery lateness on a busy 2-core
+  // machine (README, "Timed input")
+  double input_delay = 0.010;
+  // past its newest sample a hand moves on at its last velocity this long (seconds),
+  // then holds: a stall longer than input_delay is bridged, a stream that stopped is
+  // not run away with
+  double max_extrapolation = 0.040;
 };
+// the largest input_delay and max_extrapolation: a hand's playback holds 256 samples
+constexpr double kMaxInputDelay = 0.1;
 
 // An object as the host adds it. Kinematic objects go where the host puts them;
 // dynamic ones the world moves at its rate under the hands' reactions and gravity,

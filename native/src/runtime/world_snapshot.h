@@ -30,6 +30,9 @@ struct HandSnapshot {
   StepStats stats;
   int32_t ignored_objects = 0;  // objects put inside the hand, which it passes through
   bool solved = false;    // false until the hand's first valid haptic input
+  // the step played a time past the hand's newest sample (its driver is late or has
+  // stopped): the input was extrapolated, at most max_extrapolation, or held
+  bool input_late = false;
 };
 
 // One hand slot as the step left it. A hand's snapshot is the hand's own: it stays

@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <functional>
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
 
@@ -16,6 +18,7 @@
 #include "runtime/world.h"
 #include "scenes/baked_objects.h"
 #include "scenes/hand_scenarios.h"
+#include "scenes/jittery_host.h"
 
 namespace frusta {
 namespace {
@@ -286,6 +289,127 @@ TEST(WorldForces, APinchedBallIsCarriedWhileMuTimesTheSqueezeBearsItsWeight) {
 
   const PinchCarry slippery = carry_pinched_ball(0.05, 0.05, 0.003);
   EXPECT_GT(slippery.worst_lag, 0.5) << "too slippery for the squeeze";
+}
+
+// Grasp under jitter (issue 20): a host on a busy machine stamps its samples (noise
+// 0.3 ms) and delivers them late, in bursts after stalls of 5, 10, 20 and 50 ms every
+// 150 ms; the world steps on its own clock (the test steps it: deterministic). The
+// hand closes on an object, the object is handed to gravity, settles for 0.5 s, is
+// carried 15 cm up (and 11 cm across) over 1 s, and held 0.5 s.
+struct JitterCarry {
+  double worst_lag = 0.0;  // metres, from where the played hand's path puts it
+  double end_error = 0.0;  // metres, from the start plus the carry, after the hold
+  int64_t late_steps = 0;  // steps whose input was extrapolated or held
+};
+
+constexpr int64_t kSettle = 500, kCarry = 1000, kHold = 500;
+const vec3 kCarried(0.10, 0.05, 0.15);
+
+// closing: the hand over the first `closing` steps (ms); then held at `held`, carried
+JitterCarry carry_under_jitter(const std::function<HandState(double)>& closing, int64_t closing_steps,
+                               const HandState& held, std::shared_ptr<const TreeFile> tree,
+                               ObjectDef object, uint32_t seed) {
+  WorldDef def;
+  def.gravity = vec3(0.0, 0.0, -9.81);
+  World world(def);
+  const HandHandle hand = add_hand(world, right_hand());
+  const bool dynamic_from_start = object.dynamic;
+  object.dynamic = false;
+  ObjectHandle handle;
+  EXPECT_EQ(world.add_object(std::move(tree), object, &handle), FRUSTA_OK);
+  const size_t slot = static_cast<size_t>(handle.slot);
+  // the played input reaches the closed hand input_delay after the script does
+  const int64_t release = dynamic_from_start ? 1 : closing_steps + 20;
+  const int64_t carry_from = release + kSettle, end = carry_from + kCarry + kHold;
+  auto script = [&](double t) {
+    const double ms = t * 1e3;
+    if (ms < static_cast<double>(closing_steps)) return closing(ms);
+    HandState s = held;
+    s.palm_position += kCarried * smooth((ms - static_cast<double>(carry_from)) / kCarry);
+    return s;
+  };
+  // seed 0: a host on an idle machine (no stall, no noise), the control
+  const scenes::JitteryHost host(
+      seed == 0 ? std::vector<scenes::HostStall>{}
+                : scenes::JitteryHost::stall_cycle(release + 100 + 7 * seed, end, 150),
+      seed == 0 ? 0.0 : 0.0003, seed);
+  std::vector<int64_t> samples;
+  JitterCarry result;
+  vec3 start(0.0);
+  for (int64_t n = 1; n <= end; ++n) {
+    host.delivered_before(n, &samples);
+    for (int64_t j : samples) {
+      const double t = host.stamp(j);
+      EXPECT_EQ(world.set_haptic_at(hand, script(t), static_cast<int64_t>(std::llround(t * 1e9))),
+                FRUSTA_OK);
+    }
+    if (n == release) EXPECT_EQ(world.set_object_dynamic(handle, true), FRUSTA_OK);
+    world.step();
+    const WorldSnapshot& snap = world.read();
+    result.late_steps += snap.hand(hand)->input_late ? 1 : 0;
+    const vec3 at = snap.objects[slot].pose.position;
+    if (n == carry_from) start = at;
+    if (n > carry_from) {
+      // where the played hand (input_delay behind) has carried it
+      const double played = static_cast<double>(n - carry_from) - def.input_delay * 1e3;
+      result.worst_lag = std::max(result.worst_lag, glm::length(at - start - kCarried * smooth(played / kCarry)));
+    }
+    if (n == end) result.end_error = glm::length(at - start - kCarried);
+  }
+  return result;
+}
+
+TEST(WorldForces, AGraspUnderHostJitterIsCarriedTheFullDistanceInEveryRun) {
+  // the marble pinched (the demo's: 50 g, mu 0.8)
+  const scenes::HandScenario pinch = scenes::ball_pinch(0.003);
+  ObjectDef marble;
+  marble.pose = pinch.objects[0].pose;
+  marble.mass = 0.05;
+  marble.inertia = vec3(0.4 * marble.mass * 0.015 * 0.015);
+  marble.linear_damping = marble.angular_damping = 0.5;
+  marble.material.friction = 0.8;
+  // the demo's marble: damped along and across its contacts, so a hand's jitter does not
+  // kick it loose (frusta_object_def.tangential_damping)
+  marble.material.normal_damping = 9.0;
+  marble.material.tangential_damping = 10.0;
+  auto pinch_at = [&](double ms) {
+    const int32_t i = static_cast<int32_t>(std::floor(ms));
+    return scenes::mix(pinch.haptic(i), pinch.haptic(i + 1), ms - std::floor(ms));
+  };
+  // a 200 g box of 5 cm on the palm, turned up (as ABoxOnAnOpenPalm... carries 50 g)
+  const HandModel model = right_hand();
+  const glm::dquat up = scenes::about(vec3(1, 0, 0), glm::pi<double>());
+  HandState palm_up = scenes::open_hand(vec3(0.0), up);
+  for (int f = 1; f < 5; ++f) scenes::set_flexion(palm_up, f, 0.3, 0.3, 0.3);
+  double top = 0.0, centre_x = 0.0;
+  for (const Sphere& p : model.palm_spheres) {
+    top = std::max(top, -p.center.z + p.radius);
+    centre_x += p.center.x / static_cast<double>(model.palm_spheres.size());
+  }
+  const double edge = scenes::test_box_spec("lifted_box").size.x;
+  ObjectDef box;
+  box.pose.position = vec3(centre_x, 0.0, top + 0.5 * edge + 0.001);
+  box.dynamic = true;
+  box.mass = 0.2;
+  box.inertia = vec3(box.mass * edge * edge / 6);
+  box.linear_damping = box.angular_damping = 0.5;
+  box.material.normal_damping = 2.0 * std::sqrt(kDefaultContactStiffness * box.mass);
+  // (a 4 cm ball in the power grasp of scenes::ball_grasp falls out as soon as it is
+  // handed to gravity, on an idle host as well: the closed fingers do not reach under
+  // it. A grasp-model limit, not a timing one: left to a later slice.)
+  for (uint32_t seed = 0; seed <= 8; ++seed) {
+    const JitterCarry m = carry_under_jitter(pinch_at, pinch.steps, pinch.held, pinch.trees[0], marble, seed);
+    EXPECT_LT(m.worst_lag, 0.01) << "marble, run " << seed << ": it stayed in the pinch";
+    EXPECT_LT(m.end_error, 0.01) << "marble, run " << seed << ": carried the full distance";
+    if (seed > 0) EXPECT_GT(m.late_steps, 100) << "the 20 and 50 ms stalls outran the delay";
+    const JitterCarry b = carry_under_jitter([&](double) { return palm_up; }, 0, palm_up,
+                                             scenes::test_box("lifted_box"), box, seed);
+    EXPECT_LT(b.worst_lag, 0.01) << "200 g box, run " << seed;
+    EXPECT_LT(b.end_error, 0.01) << "200 g box, run " << seed;
+    std::printf("run %u: worst lag / end error, mm: marble %.2f / %.2f, box %.2f / %.2f; late steps %lld\n",
+                seed, 1e3 * m.worst_lag, 1e3 * m.end_error, 1e3 * b.worst_lag, 1e3 * b.end_error,
+                static_cast<long long>(m.late_steps));
+  }
 }
 
 TEST(WorldForces, BadObjectsAreRefusedAndChangeNothing) {

@@ -276,6 +276,40 @@ TEST(World, AReaderOnAnotherThreadNeverSeesATornSnapshot) {
   EXPECT_GE(distinct, 100u);
 }
 
+TEST(World, TimedSamplesFromAnInputThreadArriveWholeAndInOrder) {
+  // an input thread stamps sample i at i * 0.1 ms with palm x = i * 0.1 mm and an angle
+  // of i mrad, as fast as it can, while this thread steps the world: whatever a step
+  // plays (a sample, between two, past the newest, fading back) keeps x = angle / 10,
+  // and x within what was sent (and max_extrapolation past it)
+  World world(WorldDef{});
+  const HandHandle hand = add_hand(world, right_hand());
+  constexpr int kSamples = 10000;
+  std::atomic<int> sent{0};
+  std::thread input([&] {
+    for (int i = 1; i <= kSamples; ++i) {
+      HandState s = scenes::open_hand(vec3(1e-4 * i, 0.0, 0.0));
+      s.angles[5] = 1e-3 * i;
+      if (world.set_haptic_at(hand, s, 100'000 * static_cast<int64_t>(i)) == FRUSTA_OK)
+        sent.fetch_add(1, std::memory_order_relaxed);
+    }
+  });
+  int64_t bad = 0, steps = 0;
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::minutes(1);
+  while ((sent.load(std::memory_order_relaxed) < kSamples || steps < 2000) &&
+         std::chrono::steady_clock::now() < give_up) {
+    world.step();
+    ++steps;
+    const HandSnapshot* h = world.read().hand(hand);
+    if (!h || !h->solved) continue;
+    const double x = h->haptic.palm_position.x;
+    bad += std::fabs(x - 0.1 * h->haptic.angles[5]) > 1e-9 || x < -1e-12 ||
+           x > 1.0 + WorldDef{}.max_extrapolation + 1e-9;
+  }
+  input.join();
+  EXPECT_EQ(sent.load(), kSamples) << "every sample in time order is taken";
+  EXPECT_EQ(bad, 0) << "of " << steps << " steps";
+}
+
 TEST(World, TheWorldsSolverSettingsAreCheckedAgainstEachHand) {
   WorldDef def;
   def.solver.prediction_margin = 0.05;  // more than a finger's radius
