@@ -141,8 +141,10 @@
   X(frusta_world_def, max_joint_torque, 104, 8)       \
   X(frusta_world_def, max_palm_force, 112, 8)         \
   X(frusta_world_def, max_palm_torque, 120, 8)        \
-  X(frusta_world_def, internal_value, 128, 4)         \
-  X(frusta_world_def, reserved0, 132, 4)              \
+  X(frusta_world_def, input_delay, 128, 8)            \
+  X(frusta_world_def, max_extrapolation, 136, 8)      \
+  X(frusta_world_def, internal_value, 144, 4)         \
+  X(frusta_world_def, reserved0, 148, 4)              \
   X(frusta_object_def, struct_size, 0, 4)             \
   X(frusta_object_def, dynamic, 4, 4)                 \
   X(frusta_object_def, pose, 8, 56)                   \
@@ -188,7 +190,7 @@
   X(frusta_world_hand, lagging, 456, 4)               \
   X(frusta_world_hand, infeasible, 460, 4)            \
   X(frusta_world_hand, ignored_objects, 464, 4)       \
-  X(frusta_world_hand, reserved0, 468, 4)             \
+  X(frusta_world_hand, input_late, 468, 4)            \
   X(frusta_world_hand, fingertip_force, 472, 120)     \
   X(frusta_world_hand, finger_resistance, 592, 40)    \
   X(frusta_world_hand, joint_torque, 632, 160)        \
@@ -292,7 +294,7 @@
   X(frusta_tree_hit, 40, 8)          \
   X(frusta_world_id, 8, 4)           \
   X(frusta_object_id, 8, 4)          \
-  X(frusta_world_def, 136, 8)        \
+  X(frusta_world_def, 152, 8)        \
   X(frusta_object_def, 224, 8)       \
   X(frusta_world_state, 112, 8)      \
   X(frusta_world_hand, 840, 8)       \
@@ -451,6 +453,10 @@ FRUSTA_CHECK_SIGNATURE(frusta_destroy_world_hand, frusta_result (*)(frusta_hand_
 FRUSTA_CHECK_SIGNATURE(frusta_world_set_haptic,
                        frusta_result (*)(frusta_world_id, frusta_hand_id, const frusta_pose*,
                                          const double*, int32_t))
+FRUSTA_CHECK_SIGNATURE(frusta_world_set_haptic_at,
+                       frusta_result (*)(frusta_world_id, frusta_hand_id, double,
+                                         const frusta_pose*, const double*, int32_t))
+FRUSTA_CHECK_SIGNATURE(frusta_now, double (*)(void))
 FRUSTA_CHECK_SIGNATURE(frusta_create_object,
                        frusta_result (*)(frusta_world_id, frusta_tree_id, const frusta_object_def*,
                                          frusta_object_id*))
@@ -545,7 +551,7 @@ TEST(abiLayout, StructsHaveNoImplicitPaddingAndTheTableIsComplete) {
 TEST(abiLayout, DefaultDefCarriesItsSize) {
   EXPECT_EQ(frusta_default_hand_def().struct_size, 896);
   EXPECT_EQ(frusta_default_bake_def().struct_size, 56);
-  EXPECT_EQ(frusta_default_world_def().struct_size, 136);
+  EXPECT_EQ(frusta_default_world_def().struct_size, 152);
   EXPECT_EQ(frusta_default_object_def().struct_size, 224);
   EXPECT_EQ(frusta_default_device_def().struct_size, 728);
   EXPECT_EQ(frusta_default_hand_fit_def().struct_size, 56);

@@ -2534,6 +2534,124 @@ static void t_world_set_haptic(void) {
                call_set_haptic_angles, NULL);
 }
 
+/* frusta_world_set_haptic_at: g_a's hand 0 takes timed samples at g_time, which every
+ * accepted call moves on (a hand's samples must come in time order) */
+static double g_time = 1.0;
+
+static frusta_result set_timed(frusta_world_id world, frusta_hand_id hand, double time,
+                               const frusta_pose* palm, const double* angles, int32_t count) {
+  return frusta_world_set_haptic_at(world, hand, time, palm, angles, count);
+}
+
+static frusta_result call_set_haptic_at_id(RawId id, int* untouched) {
+  frusta_pose palm = g_a.palm[0];
+  palm.position[2] += 0.001;
+  const frusta_result r = set_timed(world_of_raw(id), g_a.hand[0], g_time += 0.001, &palm,
+                                    g_a.angles[0], FRUSTA_HAND_JOINT_COUNT);
+  *untouched = a_inputs_kept();
+  return r;
+}
+
+static frusta_result call_set_haptic_at_hand(RawId id, int* untouched) {
+  frusta_pose palm = g_a.palm[0];
+  palm.position[2] += 0.001;
+  const frusta_result r = set_timed(g_a.world, hand_of_raw(id), g_time += 0.001, &palm,
+                                    g_a.angles[0], FRUSTA_HAND_JOINT_COUNT);
+  *untouched = a_inputs_kept();
+  return r;
+}
+
+/* a timed sample accepted is what the next step plays (the only one it has: held);
+ * g_a's hand 0 is given its untimed input back afterwards */
+static int timed_sample_played(double time) {
+  frusta_pose palm = g_a.palm[0];
+  palm.position[2] += 0.002;
+  if (!accepted(set_timed(g_a.world, g_a.hand[0], time, &palm, g_a.angles[0],
+                          FRUSTA_HAND_JOINT_COUNT)))
+    return 0;
+  frusta_world_hand wh;
+  int ok = frusta_world_step(g_a.world) == FRUSTA_OK && check_world(&g_a) &&
+           get_hand(g_a.world, g_a.hand[0], &wh) == FRUSTA_OK;
+  ok = verify(ok && wh.haptic_palm.position[2] == palm.position[2],
+              "the step did not play the timed sample at %g s (palm z %g, want %g)", time,
+              wh.haptic_palm.position[2], palm.position[2]);
+  set_input(&g_a, 0, &g_a.palm[0], g_a.angles[0]);
+  return ok && a_inputs_kept();
+}
+
+static void t_world_set_haptic_at(void) {
+  sweep_ids("frusta_world_set_haptic_at", "world", TO_RAW(g_a.world), TO_RAW(g_dead_world), 1,
+            call_set_haptic_at_id);
+  sweep_world_hand_ids("frusta_world_set_haptic_at", g_a.hand[0], call_set_haptic_at_hand);
+  what("frusta_world_set_haptic_at: palm NULL");
+  refused(set_timed(g_a.world, g_a.hand[0], g_time += 0.001, NULL, g_a.angles[0],
+                    FRUSTA_HAND_JOINT_COUNT),
+          FRUSTA_ERROR_NULL_POINTER, "palm");
+  what("frusta_world_set_haptic_at: angles NULL");
+  refused(set_timed(g_a.world, g_a.hand[0], g_time += 0.001, &g_a.palm[0], NULL,
+                    FRUSTA_HAND_JOINT_COUNT),
+          FRUSTA_ERROR_NULL_POINTER, "angles");
+  const int32_t counts[] = {INT32_MIN, -1, 0, FRUSTA_HAND_JOINT_COUNT - 1, FRUSTA_HAND_JOINT_COUNT + 1, INT32_MAX};
+  for (int i = 0; i < 6; ++i) {
+    what("frusta_world_set_haptic_at: count %d", counts[i]);
+    refused(set_timed(g_a.world, g_a.hand[0], g_time += 0.001, &g_a.palm[0], g_a.angles[0], counts[i]),
+            FRUSTA_ERROR_OUT_OF_RANGE, "count");
+  }
+  const struct {
+    double time;
+    frusta_result want;
+  } times[] = {{NAN, FRUSTA_ERROR_NOT_FINITE},       {INFINITY, FRUSTA_ERROR_NOT_FINITE},
+               {-INFINITY, FRUSTA_ERROR_NOT_FINITE}, {-1.0, FRUSTA_ERROR_OUT_OF_RANGE},
+               {-DBL_MIN, FRUSTA_ERROR_OUT_OF_RANGE}, {-DBL_MAX, FRUSTA_ERROR_OUT_OF_RANGE},
+               {1.000001e9, FRUSTA_ERROR_OUT_OF_RANGE}, {DBL_MAX, FRUSTA_ERROR_OUT_OF_RANGE}};
+  for (int i = 0; i < (int)(sizeof times / sizeof times[0]); ++i) {
+    what("frusta_world_set_haptic_at: time %g", times[i].time);
+    refused(set_timed(g_a.world, g_a.hand[0], times[i].time, &g_a.palm[0], g_a.angles[0],
+                      FRUSTA_HAND_JOINT_COUNT),
+            times[i].want, "time");
+  }
+  what("frusta_world_set_haptic_at: after the refused calls");
+  verify(a_inputs_kept(), "the refused calls changed the inputs");
+  /* in time order only: the same time again, or an earlier one, is refused */
+  what("frusta_world_set_haptic_at: a sample, played");
+  const double t = g_time += 0.001;
+  verify(timed_sample_played(t), "the timed sample was not played");
+  what("frusta_world_set_haptic_at: the same time again");
+  refused(set_timed(g_a.world, g_a.hand[0], t, &g_a.palm[0], g_a.angles[0], FRUSTA_HAND_JOINT_COUNT),
+          FRUSTA_ERROR_OUT_OF_RANGE, "previous");
+  what("frusta_world_set_haptic_at: an earlier time");
+  refused(set_timed(g_a.world, g_a.hand[0], t - 0.5, &g_a.palm[0], g_a.angles[0],
+                    FRUSTA_HAND_JOINT_COUNT),
+          FRUSTA_ERROR_OUT_OF_RANGE, "previous");
+  verify(a_inputs_kept(), "the refused calls changed the inputs");
+  /* the largest time there is: nothing can follow it on this hand, so it comes last */
+  what("frusta_world_set_haptic_at: time 1e9");
+  verify(timed_sample_played(1e9), "the timed sample at 1e9 s was not played");
+  what("frusta_world_set_haptic_at: after 1e9");
+  refused(set_timed(g_a.world, g_a.hand[0], 1e9, &g_a.palm[0], g_a.angles[0], FRUSTA_HAND_JOINT_COUNT),
+          FRUSTA_ERROR_OUT_OF_RANGE, "previous");
+  /* palm and angles as frusta_world_set_haptic's: the same one rule */
+  what("frusta_world_set_haptic_at: a palm rotation of norm 3");
+  frusta_pose bad = g_a.palm[0];
+  bad.rotation[3] = 3.0;
+  refused(set_timed(g_a.world, g_a.hand[1], 5.0, &bad, g_a.angles[1], FRUSTA_HAND_JOINT_COUNT),
+          FRUSTA_ERROR_OUT_OF_RANGE, "palm");
+  what("frusta_world_set_haptic_at: a NaN angle");
+  double angles[FRUSTA_HAND_JOINT_COUNT];
+  memcpy(angles, g_a.angles[1], sizeof angles);
+  angles[7] = NAN;
+  refused(set_timed(g_a.world, g_a.hand[1], 5.0, &g_a.palm[1], angles, FRUSTA_HAND_JOINT_COUNT),
+          FRUSTA_ERROR_NOT_FINITE, "angles");
+  verify(a_inputs_kept(), "the refused calls changed the inputs");
+}
+
+static void t_now(void) {
+  what("frusta_now()");
+  g_calls += 2;
+  const double a = frusta_now(), b = frusta_now();
+  verify(isfinite(a) && a >= 0.0 && b >= a, "frusta_now() gave %g then %g", a, b);
+}
+
 static int32_t objects_after_step(frusta_world_id world) {
   frusta_result r;
   if (frusta_world_step(world) != FRUSTA_OK) return -1;
@@ -4619,6 +4737,8 @@ static const Entry kFunctions[] = {
     {"frusta_create_world_hand", t_world_add_hand},
     {"frusta_destroy_world_hand", t_destroy_world_hand},
     {"frusta_world_set_haptic", t_world_set_haptic},
+    {"frusta_world_set_haptic_at", t_world_set_haptic_at},
+    {"frusta_now", t_now},
     {"frusta_create_object", t_world_add_object},
     {"frusta_destroy_object", t_destroy_object},
     {"frusta_world_set_object_pose", t_world_set_object_pose},

@@ -32,8 +32,8 @@
  * offset table lives in abi_layout_test.cpp, these are its sizes. */
 _Static_assert(sizeof(frusta_world_id) == 8, "frusta_world_id layout changed");
 _Static_assert(sizeof(frusta_object_id) == 8, "frusta_object_id layout changed");
-_Static_assert(sizeof(frusta_world_def) == 136, "frusta_world_def layout changed");
-_Static_assert(offsetof(frusta_world_def, internal_value) == 128, "frusta_world_def layout changed");
+_Static_assert(sizeof(frusta_world_def) == 152, "frusta_world_def layout changed");
+_Static_assert(offsetof(frusta_world_def, internal_value) == 144, "frusta_world_def layout changed");
 _Static_assert(sizeof(frusta_object_def) == 224, "frusta_object_def layout changed");
 _Static_assert(offsetof(frusta_object_def, internal_value) == 216,
                "frusta_object_def layout changed");
@@ -322,6 +322,12 @@ static void test_create_errors(void) {
       {WORLD_FIELD(node_radius), INFINITY, FRUSTA_ERROR_NOT_FINITE, "inf"},
       {WORLD_FIELD(node_radius), -0.001, FRUSTA_ERROR_OUT_OF_RANGE, "-0.001"},
       {WORLD_FIELD(node_radius), 2.0, FRUSTA_ERROR_OUT_OF_RANGE, "2"},
+      {WORLD_FIELD(input_delay), NAN, FRUSTA_ERROR_NOT_FINITE, "nan"},
+      {WORLD_FIELD(input_delay), -0.001, FRUSTA_ERROR_OUT_OF_RANGE, "-0.001"},
+      {WORLD_FIELD(input_delay), 0.2, FRUSTA_ERROR_OUT_OF_RANGE, "0.2"},
+      {WORLD_FIELD(max_extrapolation), INFINITY, FRUSTA_ERROR_NOT_FINITE, "inf"},
+      {WORLD_FIELD(max_extrapolation), -1.0, FRUSTA_ERROR_OUT_OF_RANGE, "-1"},
+      {WORLD_FIELD(max_extrapolation), 1.0, FRUSTA_ERROR_OUT_OF_RANGE, "1"},
       {WORLD_FIELD(max_fingertip_force), NAN, FRUSTA_ERROR_NOT_FINITE, "nan"},
       {WORLD_FIELD(max_fingertip_force), INFINITY, FRUSTA_ERROR_NOT_FINITE, "inf"},
       {WORLD_FIELD(max_fingertip_force), -1.0, FRUSTA_ERROR_OUT_OF_RANGE, "-1"},
@@ -1919,7 +1925,7 @@ static void test_ignored_objects(void) {
   check(get_object(world, box, &o) && o.ignoring_hands == 1 && o.reserved0 == 0,
         "the box's state counts one hand ignoring it (%d)", o.ignoring_hands);
   check(get_hand(world, hand, &h) && h.ignored_objects == 1 && h.contact_count == 0 &&
-            h.reserved0 == 0,
+            h.input_late == 0,
         "the hand passes through one object (%d), touching nothing (%d contacts)",
         h.ignored_objects, h.contact_count);
   check(get_object(world, far_box, &o) && o.ignoring_hands == 0, "the far box: none");

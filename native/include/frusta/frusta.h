@@ -730,6 +730,15 @@ typedef struct frusta_world_def {
   double max_joint_torque;      /* newton-metres, per joint; default 0.5 */
   double max_palm_force;        /* newtons; default 20 */
   double max_palm_torque;       /* newton-metres; default 1 */
+  /* timed input (frusta_world_set_haptic_at): each step plays a hand's samples this
+     far behind its time */
+  double input_delay;           /* seconds, 0..0.1; default 0.01: the p99 of a host's
+                                   delivery lateness on a busy machine. A host that
+                                   delivers later than this moves the hand on
+                                   extrapolated samples until its own come */
+  double max_extrapolation;     /* seconds, 0..0.1: how long past its newest sample a
+                                   hand moves on at the sample's velocity before it
+                                   holds; default 0.04 */
   int32_t internal_value;       /* set by frusta_default_world_def(); do not touch */
   int32_t reserved0;            /* explicit padding */
 } frusta_world_def;
@@ -803,7 +812,10 @@ typedef struct frusta_world_hand {
                                    estimate, short of its input */
   int32_t ignored_objects;      /* objects put inside the hand that it passes through
                                    until they part (see frusta_create_object) */
-  int32_t reserved0;            /* explicit padding */
+  int32_t input_late;           /* 1: the step played a time past the hand's newest
+                                   sample (its driver is late or stopped): the input
+                                   was extrapolated (at most max_extrapolation), then
+                                   held */
   /* device outputs, each clamped to the world's limits; pick what the device renders */
   double fingertip_force[FRUSTA_FINGER_COUNT][3]; /* on each distal segment, newtons */
   double finger_resistance[FRUSTA_FINGER_COUNT];  /* |force| on each finger, newtons */
@@ -883,8 +895,10 @@ FRUSTA_API frusta_result frusta_create_world_hand(frusta_world_id world,
  *  hand's world). */
 FRUSTA_API frusta_result frusta_destroy_world_hand(frusta_hand_id hand);
 /** Set a world hand's haptic input (the glove): palm pose (metres, world frame) and
- *  FRUSTA_HAND_JOINT_COUNT joint angles (radians, finger-major). The newest input
- *  wins; the next step uses it. The one rule for every input of a hand (this call,
+ *  FRUSTA_HAND_JOINT_COUNT joint angles (radians, finger-major), stamped with now.
+ *  A world the host steps takes the newest as it is at the next step; a world on its
+ *  own thread plays it input_delay late, as frusta_world_set_haptic_at does (a host
+ *  that can, stamps its samples with their own times there). The one rule for every input of a hand (this call,
  *  frusta_hand_set_joint_angles, a glove's samples): positions within 1e6 m,
  *  quaternion norm in [0.5, 2] (normalised), |angle| <= FRUSTA_MAX_JOINT_ANGLE
  *  (clamped into the hand's limits). What this call accepts the next step uses; what
@@ -895,6 +909,27 @@ FRUSTA_API frusta_result frusta_destroy_world_hand(frusta_hand_id hand);
 FRUSTA_API frusta_result frusta_world_set_haptic(frusta_world_id world, frusta_hand_id hand,
                                                  const frusta_pose* palm, const double* angles,
                                                  int32_t count);
+/** frusta_world_set_haptic for a sample stamped with its time: `time` in seconds on the
+ *  world's clock, which is frusta_now()'s while the world runs on its own thread
+ *  (frusta_world_start), and the world's step time while the host steps it (the step
+ *  after n steps is at (n + 1) / rate_hz: frusta_world_state.time is the latched
+ *  step's). A host with its own clock stamps each sample with that clock plus an
+ *  offset to the world's. Each step plays the hand's samples input_delay behind its
+ *  own time: between two samples, interpolated (palm straight, its rotation along the
+ *  shorter arc, angles straight); before the first, the first; past the newest,
+ *  extrapolated from its velocity for at most max_extrapolation, then held
+ *  (frusta_world_hand.input_late). A host that stalls and then delivers its samples
+ *  in a burst so moves the hand as the samples say. time must be finite, 0..1e9 s,
+ *  and later than the hand's previous timed sample (FRUSTA_ERROR_OUT_OF_RANGE);
+ *  otherwise as frusta_world_set_haptic (the two are not meant to be mixed on one
+ *  hand). Lock-free and allocation-free. Thread: input. */
+FRUSTA_API frusta_result frusta_world_set_haptic_at(frusta_world_id world, frusta_hand_id hand,
+                                                    double time, const frusta_pose* palm,
+                                                    const double* angles, int32_t count);
+/** Seconds on Frusta's monotonic clock (the steady clock a world on its own thread
+ *  steps by, and so the clock of frusta_world_set_haptic_at's time for such a world).
+ *  Thread: any. */
+FRUSTA_API double frusta_now(void);
 
 /** Create an object in the world with the tree's shape; queued, present from the next
  *  step. The world keeps the tree alive while it uses it, even if the tree's id is

@@ -4,6 +4,7 @@
 // nothing.
 #include <algorithm>
 #include <bitset>
+#include <cmath>
 #include <cstring>
 #include <glm/gtc/quaternion.hpp>
 
@@ -11,6 +12,7 @@
 #include "capi/tree_registry.h"
 #include "capi/world_registry.h"
 #include "core/error.h"
+#include "core/periodic_clock.h"
 #include "core/validate.h"
 #include "frusta/frusta.h"
 #include "hand/hand_model.h"
@@ -18,6 +20,8 @@
 using namespace frusta;
 
 namespace {
+
+constexpr double kMaxInputTime = 1e9;  // seconds
 
 vec3 vec3_of(const double v[3]) { return vec3(v[0], v[1], v[2]); }
 
@@ -36,6 +40,8 @@ frusta_result read_world_def(const frusta_world_def& in, WorldDef* out) {
   def.solver.max_substeps = in.max_substeps;
   def.device_limits = {in.max_fingertip_force, in.max_finger_resistance, in.max_joint_torque,
                        in.max_palm_force, in.max_palm_torque};
+  def.input_delay = in.input_delay;
+  def.max_extrapolation = in.max_extrapolation;
   if (frusta_result r = check_world_def(def)) return r;
   *out = def;
   return FRUSTA_OK;
@@ -157,6 +163,8 @@ FRUSTA_API frusta_world_def frusta_default_world_def(void) {
   def.max_joint_torque = d.device_limits.max_joint_torque;
   def.max_palm_force = d.device_limits.max_palm_force;
   def.max_palm_torque = d.device_limits.max_palm_torque;
+  def.input_delay = d.input_delay;
+  def.max_extrapolation = d.max_extrapolation;
   return def;
 }
 
@@ -243,6 +251,28 @@ FRUSTA_API frusta_result frusta_world_set_haptic(frusta_world_id world, frusta_h
   // the hand's port refuses it once the hand is destroyed, and while a glove drives it
   return w->world.set_haptic(hand, state);
 }
+
+FRUSTA_API frusta_result frusta_world_set_haptic_at(frusta_world_id world, frusta_hand_id hand_id,
+                                                    double time, const frusta_pose* palm,
+                                                    const double* angles, int32_t count) {
+  WorldObject* w = nullptr;
+  if (frusta_result r = world_registry().find(world, &w)) return r;
+  HandHandle hand;
+  if (frusta_result r = hand_handle(world, hand_id, &hand)) return r;
+  // within int64 nanoseconds with room to spare: 1e9 s is 31 years of uptime
+  if (frusta_result r = check_range(time, 0.0, kMaxInputTime, false, "time")) return r;
+  Pose pose;
+  if (frusta_result r = read_pose(palm, "palm", &pose)) return r;
+  HandState state;
+  if (frusta_result r = read_joint_angles(angles, count, "angles", &state.angles)) return r;
+  state.palm_position = pose.position;
+  state.palm_rotation = pose.rotation;
+  const int64_t time_ns = static_cast<int64_t>(std::llround(time * 1e9));
+  // the port refuses a sample out of time order, and as frusta_world_set_haptic
+  return w->world.set_haptic_at(hand, state, time_ns);
+}
+
+FRUSTA_API double frusta_now(void) { return static_cast<double>(steady_ns()) * 1e-9; }
 
 FRUSTA_API frusta_result frusta_create_object(frusta_world_id world, frusta_tree_id tree,
                                               const frusta_object_def* def,
@@ -362,7 +392,7 @@ FRUSTA_API frusta_result frusta_world_get_hand(frusta_world_id world, frusta_han
   out->lagging = h->stats.lagging ? 1 : 0;
   out->infeasible = h->stats.infeasible ? 1 : 0;
   out->ignored_objects = h->ignored_objects;
-  out->reserved0 = 0;
+  out->input_late = h->input_late ? 1 : 0;
   for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
     store(h->device.fingertip_force[static_cast<size_t>(f)], out->fingertip_force[f]);
     out->finger_resistance[f] = h->device.finger_resistance[static_cast<size_t>(f)];
