@@ -337,5 +337,43 @@ namespace Frusta.Binding.Tests
             AllocatesNothing(Frame);
             Assert.True(snapshot.GetContacts(0).Length > 0);
         }
+
+        [Fact]
+        public void TimedSamplesArePlayedInputDelayBehindTheStepInterpolatedAndThenHeld()
+        {
+            // a host that steps the world stamps its samples on the step clock: the step
+            // after n steps is at (n + 1) ms; each plays its time minus the 10 ms delay
+            using var world = new World();
+            FrustaHandId hand = world.CreateHand(FrustaHandDef.Default);
+            var angles = new double[FrustaConstants.HandJointCount];
+            var h = new FrustaWorldHand();
+            // every other millisecond a sample, the palm lowered 1 mm per ms
+            for (int n = 1; n <= 60; ++n)
+            {
+                if (n % 2 == 0 && n <= 40) world.SetHaptic(hand, n * 1e-3, Lowered(n * 1e-3), angles);
+                world.Step();
+            }
+            world.GetHand(hand, ref h);
+            // step 60 plays 50 ms: 10 ms past the newest sample (40 ms), extrapolated at its velocity
+            Assert.True(h.InputLate);
+            Near(-0.050, h.HapticPalm.Position.Z, 1e-9, "extrapolated palm");
+            // an odd step between two samples: interpolated
+            using var second = new World();
+            FrustaHandId other = second.CreateHand(FrustaHandDef.Default);
+            for (int n = 1; n <= 25; ++n)
+            {
+                if (n % 2 == 0) second.SetHaptic(other, n * 1e-3, Lowered(n * 1e-3), angles);
+                second.Step();
+            }
+            second.GetHand(other, ref h);
+            Assert.False(h.InputLate);
+            Near(-0.015, h.HapticPalm.Position.Z, 1e-12, "interpolated palm (15 ms)");
+            // out of order: refused, naming the time
+            var e = Assert.Throws<FrustaException>(() => second.SetHaptic(other, 0.001, Lowered(0), angles));
+            Assert.Equal(FrustaResult.OutOfRange, e.Result);
+            Assert.Contains("time", e.Message);
+            double now = World.Now;
+            Assert.True(now > 0 && World.Now >= now);
+        }
     }
 }

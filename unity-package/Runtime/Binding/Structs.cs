@@ -355,6 +355,11 @@ namespace Frusta.Binding
         /// estimate, short of its input.</summary>
         public readonly bool Infeasible => infeasible != 0;
 
+        /// <summary>true when the step played a time past the hand's newest timed sample (its
+        /// driver is late or stopped): the input was extrapolated, at most
+        /// <see cref="FrustaWorldDef.MaxExtrapolation"/>, then held.</summary>
+        public readonly bool InputLate => input_late != 0;
+
         static int Joint(int joint)
         {
             if ((uint)joint >= FrustaConstants.HandJointCount)

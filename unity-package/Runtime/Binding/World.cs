@@ -147,6 +147,37 @@ namespace Frusta.Binding
                 Errors.Check(Native.frusta_world_set_haptic(handle.Id, hand, p, a, angles.Length), "frusta_world_set_haptic");
         }
 
+        /// <summary>
+        /// Set a hand's haptic input stamped with the sample's time (<c>frusta_world_set_haptic_at</c>):
+        /// each step plays the hand's samples <see cref="FrustaWorldDef.InputDelay"/> behind its own
+        /// time, interpolated between the two around it, extrapolated at most
+        /// <see cref="FrustaWorldDef.MaxExtrapolation"/> past the newest, then held. A host that
+        /// stalls and then delivers its samples in a burst so moves the hand as its samples say.
+        /// Lock-free and allocation-free. Thread: one input thread per hand (or the host).
+        /// </summary>
+        /// <param name="hand">The id from <see cref="CreateHand"/>.</param>
+        /// <param name="time">Seconds on the world's clock: <see cref="Now"/>'s while the world runs on
+        /// its own thread (<see cref="Start"/>); the step time while the host steps it (the step after n
+        /// steps is at (n + 1) / rate). Later than the hand's previous timed sample, 0..1e9.</param>
+        /// <param name="palm">Metres, world frame; quaternion norm in [0.5, 2].</param>
+        /// <param name="angles">Exactly 20 radians, as <see cref="SetHaptic(FrustaHandId, in FrustaPose, ReadOnlySpan{double})"/> takes them.</param>
+        /// <exception cref="FrustaException"><see cref="FrustaResult.OutOfRange"/> naming "time" for a time
+        /// out of range or not after the previous one; otherwise as
+        /// <see cref="SetHaptic(FrustaHandId, in FrustaPose, ReadOnlySpan{double})"/>.</exception>
+        public void SetHaptic(FrustaHandId hand, double time, in FrustaPose palm, ReadOnlySpan<double> angles)
+        {
+            using (new HandleUse(handle))
+            fixed (FrustaPose* p = &palm)
+            fixed (double* a = angles)
+                Errors.Check(Native.frusta_world_set_haptic_at(handle.Id, hand, time, p, a, angles.Length),
+                             "frusta_world_set_haptic_at");
+        }
+
+        /// <summary>Seconds on Frusta's monotonic clock (<c>frusta_now</c>): the clock of
+        /// <see cref="SetHaptic(FrustaHandId, double, in FrustaPose, ReadOnlySpan{double})"/>'s time
+        /// while a world runs on its own thread. Thread: any.</summary>
+        public static double Now => Native.frusta_now();
+
         /// <summary>Set a hand's haptic input from a fit of tracked joints: its palm and angles, as
         /// <see cref="SetHaptic(FrustaHandId, in FrustaPose, ReadOnlySpan{double})"/> takes them
         /// (<c>frusta_world_set_haptic</c>). Lock-free and allocation-free. Thread: one input thread per hand.</summary>

@@ -357,8 +357,10 @@ namespace Frusta.Binding
 
         /// <summary>
         /// Set a world hand's haptic input (the glove): palm pose (metres, world frame) and
-        /// FRUSTA_HAND_JOINT_COUNT joint angles (radians, finger-major). The newest input
-        /// wins; the next step uses it. The one rule for every input of a hand (this call,
+        /// FRUSTA_HAND_JOINT_COUNT joint angles (radians, finger-major), stamped with now.
+        /// A world the host steps takes the newest as it is at the next step; a world on its
+        /// own thread plays it input_delay late, as frusta_world_set_haptic_at does (a host
+        /// that can, stamps its samples with their own times there). The one rule for every input of a hand (this call,
         /// frusta_hand_set_joint_angles, a glove's samples): positions within 1e6 m,
         /// quaternion norm in [0.5, 2] (normalised), |angle| &lt;= FRUSTA_MAX_JOINT_ANGLE
         /// (clamped into the hand's limits). What this call accepts the next step uses; what
@@ -369,6 +371,33 @@ namespace Frusta.Binding
         /// </summary>
         [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
         internal static extern FrustaResult frusta_world_set_haptic(FrustaWorldId world, FrustaHandId hand, FrustaPose* palm, double* angles, int count);
+
+        /// <summary>
+        /// frusta_world_set_haptic for a sample stamped with its time: `time` in seconds on the
+        /// world's clock, which is frusta_now()'s while the world runs on its own thread
+        /// (frusta_world_start), and the world's step time while the host steps it (the step
+        /// after n steps is at (n + 1) / rate_hz: frusta_world_state.time is the latched
+        /// step's). A host with its own clock stamps each sample with that clock plus an
+        /// offset to the world's. Each step plays the hand's samples input_delay behind its
+        /// own time: between two samples, interpolated (palm straight, its rotation along the
+        /// shorter arc, angles straight); before the first, the first; past the newest,
+        /// extrapolated from its velocity for at most max_extrapolation, then held
+        /// (frusta_world_hand.input_late). A host that stalls and then delivers its samples
+        /// in a burst so moves the hand as the samples say. time must be finite, 0..1e9 s,
+        /// and later than the hand's previous timed sample (FRUSTA_ERROR_OUT_OF_RANGE);
+        /// otherwise as frusta_world_set_haptic (the two are not meant to be mixed on one
+        /// hand). Lock-free and allocation-free. Thread: input.
+        /// </summary>
+        [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern FrustaResult frusta_world_set_haptic_at(FrustaWorldId world, FrustaHandId hand, double time, FrustaPose* palm, double* angles, int count);
+
+        /// <summary>
+        /// Seconds on Frusta's monotonic clock (the steady clock a world on its own thread
+        /// steps by, and so the clock of frusta_world_set_haptic_at's time for such a world).
+        /// Thread: any.
+        /// </summary>
+        [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern double frusta_now();
 
         /// <summary>
         /// Create an object in the world with the tree's shape; queued, present from the next

@@ -408,6 +408,23 @@ namespace Frusta.Binding
         public double MaxPalmForce;
         /// <summary>newton-metres; default 1</summary>
         public double MaxPalmTorque;
+        /// <summary>
+        /// seconds, 0..0.1; default 0.01: the p99 of a host's
+        /// delivery lateness on a busy machine. A host that
+        /// delivers later than this moves the hand on
+        /// extrapolated samples until its own come
+        /// </summary>
+        /// <remarks>
+        /// timed input (frusta_world_set_haptic_at): each step plays a hand's samples this
+        /// far behind its time
+        /// </remarks>
+        public double InputDelay;
+        /// <summary>
+        /// seconds, 0..0.1: how long past its newest sample a
+        /// hand moves on at the sample's velocity before it
+        /// holds; default 0.04
+        /// </summary>
+        public double MaxExtrapolation;
         /// <summary>set by frusta_default_world_def(); do not touch</summary>
         internal int internal_value;
         /// <summary>explicit padding</summary>
@@ -554,8 +571,13 @@ namespace Frusta.Binding
         /// until they part (see frusta_create_object)
         /// </summary>
         public int IgnoredObjects;
-        /// <summary>explicit padding</summary>
-        internal int reserved0;
+        /// <summary>
+        /// 1: the step played a time past the hand's newest
+        /// sample (its driver is late or stopped): the input
+        /// was extrapolated (at most max_extrapolation), then
+        /// held
+        /// </summary>
+        internal int input_late;
         /// <summary>
         /// on each distal segment, newtons
         /// </summary>
