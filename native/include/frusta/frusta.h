@@ -897,8 +897,9 @@ FRUSTA_API frusta_result frusta_destroy_world_hand(frusta_hand_id hand);
 /** Set a world hand's haptic input (the glove): palm pose (metres, world frame) and
  *  FRUSTA_HAND_JOINT_COUNT joint angles (radians, finger-major), stamped with now.
  *  A world the host steps takes the newest as it is at the next step; a world on its
- *  own thread plays it input_delay late, as frusta_world_set_haptic_at does (a host
- *  that can, stamps its samples with their own times there). The one rule for every input of a hand (this call,
+ *  own thread plays it input_delay late, as frusta_world_set_haptic_at does, but
+ *  never extrapolates past it (when it was set is not when it was measured; a host
+ *  that can, stamps its samples with their own times). The one rule for every input of a hand (this call,
  *  frusta_hand_set_joint_angles, a glove's samples): positions within 1e6 m,
  *  quaternion norm in [0.5, 2] (normalised), |angle| <= FRUSTA_MAX_JOINT_ANGLE
  *  (clamped into the hand's limits). What this call accepts the next step uses; what

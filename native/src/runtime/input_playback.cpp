@@ -111,9 +111,11 @@ HandState InputPlayback::sampled(int64_t at_ns, int64_t max_extrapolation_ns) co
     return interpolate(a.state, b.state, t);
   }
   // past the newest: from its velocity over the window, for a bounded time, held there
-  // until the stream has stopped, then the newest
+  // until the stream has stopped, then the newest. Only samples their driver stamped:
+  // the times of unstamped ones are when they arrived, which a burst squeezes together
   const int64_t newest_ns = a.time_ns;
-  if (count_ < 2 || max_extrapolation_ns <= 0 || at_ns - newest_ns > max_extrapolation_ns + kStopNs)
+  if (count_ < 2 || !a.timed || max_extrapolation_ns <= 0 ||
+      at_ns - newest_ns > max_extrapolation_ns + kStopNs)
     return a.state;
   size_t r = count_ - 2;
   while (r > 0 && newest_ns - at(r).time_ns < kVelocityWindowNs) --r;

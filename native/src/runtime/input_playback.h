@@ -5,8 +5,10 @@
 // made, not the host's hiccups. Between two samples the input is interpolated (palm
 // straight, its rotation along the shorter arc, angles straight); past the newest it
 // is extrapolated from the newest's velocity for at most max_extrapolation, then held
-// there; a stream silent kStopNs longer has stopped, and the hand goes back to its
-// newest sample. Whenever the answer jumps (late samples came at last, the stream
+// there (samples their driver stamped only: an unstamped sample's time is when it
+// arrived, which a burst squeezes, so past the newest of those the hand holds); a
+// stream silent kStopNs longer has stopped, and the hand goes back to its newest
+// sample. Whenever the answer jumps (late samples came at last, the stream
 // stopped), the hand fades from what it played to the new answer over kRejoinNs
 // instead of jumping: a held object's stick springs let go at a fraction of a
 // millimetre's jerk.

@@ -299,3 +299,28 @@ TEST(InputPlayback, TheSameSampleTwiceIsTakenOnce) {
 
 }  // namespace
 }  // namespace frusta
+
+namespace frusta {
+namespace {
+
+// Samples stamped when they were set (a glove's, a host's untimed ones) are played by
+// those times but never extrapolated: a burst squeezes them together, and their
+// velocity would fling the hand.
+TEST(InputPlayback, UnstampedSamplesAreHeldPastTheNewestNotExtrapolated) {
+  InputPlayback playback;
+  for (int j = 1; j <= 100; ++j) {
+    TimedInput in;
+    in.state = trajectory(j * kDt);  // 100 ms of motion, arrived within 100 us
+    in.sequence = static_cast<uint64_t>(j);
+    in.time_ns = in.set_ns = 1'000'000'000 + j * 1'000;
+    in.timed = false;
+    ASSERT_TRUE(playback.push(in));
+  }
+  bool late = false;
+  const HandState held = playback.play(1'000'000'000 + 30'000'000, 40'000'000, &late);
+  EXPECT_TRUE(late);
+  EXPECT_LT(palm_error(held, trajectory(0.100)), 1e-12);
+}
+
+}  // namespace
+}  // namespace frusta
