@@ -129,7 +129,7 @@ namespace Frusta.Binding.Tests
         {
             Assert.Equal(896, FrustaHandDef.Default.struct_size);
             Assert.Equal(56, FrustaBakeDef.Default.struct_size);
-            Assert.Equal(136, FrustaWorldDef.Default.struct_size);
+            Assert.Equal(152, FrustaWorldDef.Default.struct_size);
             Assert.Equal(224, FrustaObjectDef.Default.struct_size);
             Assert.Equal(728, FrustaDeviceDef.Default.struct_size);
             Assert.Equal(56, FrustaHandFitDef.Default.struct_size);

@@ -353,6 +353,8 @@ namespace Frusta.Binding.Tests
                 if (n % 2 == 0 && n <= 40) world.SetHaptic(hand, n * 1e-3, Lowered(n * 1e-3), angles);
                 world.Step();
             }
+            var state = new FrustaWorldState();
+            world.Read(ref state);
             world.GetHand(hand, ref h);
             // step 60 plays 50 ms: 10 ms past the newest sample (40 ms), extrapolated at its velocity
             Assert.True(h.InputLate);
@@ -365,6 +367,7 @@ namespace Frusta.Binding.Tests
                 if (n % 2 == 0) second.SetHaptic(other, n * 1e-3, Lowered(n * 1e-3), angles);
                 second.Step();
             }
+            second.Read(ref state);
             second.GetHand(other, ref h);
             Assert.False(h.InputLate);
             Near(-0.015, h.HapticPalm.Position.Z, 1e-12, "interpolated palm (15 ms)");
