@@ -47,8 +47,7 @@ bool HandPipeline::step(const HandStepContext& context, SceneObjects& scene, Han
   } else {
     // where the driver's samples say the hand was input_delay before this step (a step
     // caught up after a stall asks for its own time, not now's)
-    haptic = playback_.play(context.time_ns - context.input_delay_ns,
-                            context.max_extrapolation_ns, &late);
+    haptic = playback_.play(context.play_ns, context.max_extrapolation_ns, &late);
   }
   update_ignored(scene);
   const bool own_list = ignored_count_ > 0;

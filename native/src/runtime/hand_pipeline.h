@@ -28,11 +28,10 @@ namespace frusta {
 struct HandStepContext {
   double dt = 0.0;            // seconds
   bool paced = false;         // on the world's own thread
-  // the step's time on the world's clock: the tick's on the steady clock (paced), else
-  // the world's time after the step (steps / rate_hz); inputs are played input_delay_ns
-  // behind it
-  int64_t time_ns = 0;
-  int64_t input_delay_ns = 0;
+  // the time whose input the step plays, on the world's clock: input_delay behind the
+  // step's time (the tick's on the steady clock when paced, else steps / rate_hz), one
+  // period further each step (catching up a little faster after the world stalled)
+  int64_t play_ns = 0;
   int64_t max_extrapolation_ns = 0;
   HandSolver::Clock::time_point deadline = HandSolver::Clock::time_point::max();
   DeviceLimits device_limits;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "runtime/world.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -14,6 +15,11 @@ namespace {
 // the share of a period the hands' solves may take on the own thread; the rest is for
 // the forces, the objects and the snapshot
 constexpr double kStepBudget = 0.7;
+// after a stall of the world's own thread, the hands play 1 + 1/kCatchUpDivisor periods
+// of their inputs a step until they are input_delay behind again; beyond kMaxPlayLagNs
+// behind (a world stopped and started again), they jump
+constexpr int64_t kCatchUpDivisor = 4;
+constexpr int64_t kMaxPlayLagNs = 500'000'000;
 
 }  // namespace
 
@@ -145,11 +151,21 @@ void World::step_once(double dt, bool paced, int64_t tick_ns) {
   context.dt = dt;
   context.paced = paced;
   // the world's clock: the steady clock's tick on the own thread, the step count's time
-  // when the host steps (its samples are stamped on it: deterministic)
-  context.time_ns = paced ? tick_ns
-                          : static_cast<int64_t>(std::llround(static_cast<double>(step_ + 1) * 1e9 /
-                                                              def_.rate_hz));
-  context.input_delay_ns = static_cast<int64_t>(std::llround(def_.input_delay * 1e9));
+  // when the host steps (its samples are stamped on it: deterministic). The hands play
+  // their inputs input_delay behind it, one period of them a step: a world thread that
+  // stalled and dropped ticks plays on from where it was and catches up at most
+  // kCatchUp - 1 periods a step, rather than jump the hands (and what they hold) ahead
+  const int64_t period_ns = static_cast<int64_t>(std::llround(1e9 * dt));
+  const int64_t target =
+      (paced ? tick_ns
+             : static_cast<int64_t>(std::llround(static_cast<double>(step_ + 1) * 1e9 / def_.rate_hz))) -
+      static_cast<int64_t>(std::llround(def_.input_delay * 1e9));
+  if (!playing_ || target < play_ns_ || target - play_ns_ > kMaxPlayLagNs)
+    play_ns_ = target;  // the first step, or a clock that changed (host to own thread)
+  else
+    play_ns_ = std::min(target, play_ns_ + period_ns + period_ns / kCatchUpDivisor);
+  playing_ = true;
+  context.play_ns = play_ns_;
   context.max_extrapolation_ns = static_cast<int64_t>(std::llround(def_.max_extrapolation * 1e9));
   context.device_limits = def_.device_limits;
   context.max_contacts = def_.max_contacts_per_hand;

@@ -137,6 +137,8 @@ class World {
   uint64_t step_ = 0;
   double time_ = 0.0;
   int64_t rejected_ = 0;
+  int64_t play_ns_ = 0;  // the time whose inputs the last step played (world clock)
+  bool playing_ = false;
   TripleBuffer<WorldSnapshot> output_;
   std::atomic<int64_t> host_read_ns_{0};
   StepThread thread_;  // last: stopped (joined) before the parts it steps are freed
