@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * frusta_demo RECORDING.csv OBJECTS_DIR [--trace TRACE.csv] [--host-steps] [--check]
+ * frusta_demo RECORDING.csv OBJECTS_DIR [--trace TRACE.csv] [--host-steps] [--untimed] [--check]
  *
  * Plays a scripted glove recording (samples/data/demo_glove.csv, written by
  * frusta-make-recording) through a world, through the public C ABI only, as a host
@@ -11,8 +11,17 @@
  * overruns, the deepest penetration, peak and mean force per finger, how far the
  * marble was carried. --trace writes one CSV row per host tick.
  *
+ * Each sample is stamped with its time in the recording (frusta_world_set_haptic_at,
+ * on the world's clock: frusta_now() at the start plus the recording's time), so a
+ * host thread that stalls on a busy machine and then catches up still moves the hand
+ * as the glove did; the world plays the samples input_delay behind. The table reports
+ * how late this thread delivered them (the world's default input_delay is the p99 of
+ * that on a busy machine) and how many steps had to extrapolate. --untimed sets them
+ * with frusta_world_set_haptic instead, stamped when set (as before timed input).
+ *
  * --host-steps steps the world from this thread instead, one step per millisecond of
- * recording time, as fast as it goes: deterministic, for tests.
+ * recording time, as fast as it goes: deterministic, for tests (the samples are then
+ * stamped on the world's step clock).
  * --check exits non-zero unless the hand never sank more than 0.1 mm into an object,
  * the marble was carried at least 10 cm up and then fell, and the fingertip slide and
  * the pinches made forces.
@@ -68,6 +77,7 @@ typedef struct tally {
   double peak_palm;
   double marble_start_z, marble_top_z, marble_end_z;
   long ticks;
+  long late_steps; /* latched steps whose input was extrapolated or held */
 } tally;
 
 static const char* const kFingerNames[FRUSTA_FINGER_COUNT] = {"thumb", "index", "middle",
@@ -216,6 +226,7 @@ static int observe(frusta_world_id world, frusta_hand_id hand_id, const recordin
   }
   const double palm = norm3(hand.palm_force);
   if (palm > t->peak_palm) t->peak_palm = palm;
+  t->late_steps += hand.input_late ? 1 : 0;
   double marble_z = NAN;
   const object_row* marble = &rec->objects[0];
   frusta_object_state object = {.struct_size = sizeof object};
@@ -235,6 +246,11 @@ static int observe(frusta_world_id world, frusta_hand_id hand_id, const recordin
   return 1;
 }
 
+static int by_value(const void* a, const void* b) {
+  const double x = *(const double*)a, y = *(const double*)b;
+  return x < y ? -1 : x > y ? 1 : 0;
+}
+
 static void sleep_until(struct timespec* deadline, long step_ns) {
   deadline->tv_nsec += step_ns;
   while (deadline->tv_nsec >= 1000000000L) {
@@ -247,14 +263,15 @@ static void sleep_until(struct timespec* deadline, long step_ns) {
 int main(int argc, char** argv) {
   if (argc < 3) {
     fprintf(stderr, "usage: frusta_demo RECORDING.csv OBJECTS_DIR [--trace TRACE.csv] "
-                    "[--host-steps] [--check]\n");
+                    "[--host-steps] [--untimed] [--check]\n");
     return 2;
   }
   const char* trace_path = NULL;
-  int check_mode = 0, host_steps = 0;
+  int check_mode = 0, host_steps = 0, untimed = 0;
   for (int i = 3; i < argc; ++i) {
     if (strcmp(argv[i], "--check") == 0) check_mode = 1;
     else if (strcmp(argv[i], "--host-steps") == 0) host_steps = 1;
+    else if (strcmp(argv[i], "--untimed") == 0) untimed = 1;
     else if (strcmp(argv[i], "--trace") == 0 && i + 1 < argc) trace_path = argv[++i];
     else {
       fprintf(stderr, "frusta_demo: unknown argument %s\n", argv[i]);
@@ -301,17 +318,29 @@ int main(int argc, char** argv) {
   memset(&t, 0, sizeof t);
   t.marble_top_z = -1e9;
   const long tick_ns = (long)(1e9 / def.rate_hz);
-  int ok = 1;
-  if (!host_steps) ok = check(frusta_world_start(world), "frusta_world_start");
+  const long tick_count = (long)(duration * def.rate_hz) + 1;
+  double* lateness = malloc(sizeof(double) * (size_t)tick_count);
+  int ok = lateness != NULL;
+  if (ok && !host_steps) ok = check(frusta_world_start(world), "frusta_world_start");
   struct timespec deadline;
   clock_gettime(CLOCK_MONOTONIC, &deadline);
-  for (long tick = 0; ok && (double)tick * 1e-9 * (double)tick_ns <= duration; ++tick) {
+  /* the recording's time 0 on the world's clock: frusta_now() for its own thread; its
+   * step clock (the step after n steps is at (n + 1) / rate) when this thread steps it */
+  const double origin = host_steps ? 1.0 / def.rate_hz : frusta_now();
+  long ticks = 0;
+  for (long tick = 0; ok && tick < tick_count; ++tick) {
     const double now = (double)tick * 1e-9 * (double)tick_ns;
     frame glove;
     glove_at(&rec, now, &glove);
-    ok = check(frusta_world_set_haptic(world, hand, &glove.palm, glove.angles,
-                                       FRUSTA_HAND_JOINT_COUNT), "set_haptic") &&
-         apply_events(&rec, world, now);
+    lateness[ticks++] = host_steps ? 0.0 : frusta_now() - (origin + now);
+    if (untimed)
+      ok = check(frusta_world_set_haptic(world, hand, &glove.palm, glove.angles,
+                                         FRUSTA_HAND_JOINT_COUNT), "set_haptic");
+    else
+      ok = check(frusta_world_set_haptic_at(world, hand, origin + now, &glove.palm, glove.angles,
+                                            FRUSTA_HAND_JOINT_COUNT), "set_haptic_at");
+    /* the host's own actions (let go of the marble) follow the hand the world plays */
+    ok = ok && apply_events(&rec, world, now - (untimed && host_steps ? 0.0 : def.input_delay));
     if (ok && host_steps) ok = check(frusta_world_step(world), "frusta_world_step");
     if (ok) ok = observe(world, hand, &rec, &t, trace);
     if (!host_steps) sleep_until(&deadline, tick_ns);
@@ -331,6 +360,14 @@ int main(int argc, char** argv) {
            state.wake_late_us_p99, state.wake_late_us_max);
   printf("  deepest penetration %.4f mm (exact, against the leaves); rejected inputs %lld\n",
          1e3 * t.deepest, (long long)state.rejected_inputs);
+  if (!host_steps && ticks > 0) {
+    qsort(lateness, (size_t)ticks, sizeof(double), by_value);
+    printf("  samples set late  p50 %7.2f ms   p99 %7.2f ms   max %7.2f ms   (input delay %.1f ms%s)\n",
+           1e3 * lateness[ticks / 2], 1e3 * lateness[ticks * 99 / 100], 1e3 * lateness[ticks - 1],
+           1e3 * def.input_delay, untimed ? ", untimed" : "");
+    printf("  steps past the newest sample (extrapolated or held): %ld of %ld latched\n", t.late_steps,
+           t.ticks);
+  }
   printf("\n  %-8s %10s %10s %12s\n", "finger", "peak N", "mean N", "touching s");
   for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f)
     printf("  %-8s %10.3f %10.3f %12.2f\n", kFingerNames[f], t.peak[f],
@@ -345,6 +382,7 @@ int main(int argc, char** argv) {
   for (int o = 0; o < rec.object_count; ++o) frusta_destroy_sphere_tree(rec.objects[o].tree);
   frusta_destroy_world(world);
   free(rec.frames);
+  free(lateness);
   if (!check_mode) return 0;
   int failed = 0;
   if (t.deepest > 1e-4) failed = fprintf(stderr, "check: the hand sank %.3f mm\n", 1e3 * t.deepest);

@@ -10,7 +10,10 @@
 //    hand slots (a free hand, where the step's own plumbing shows, and a grasping one),
 //    and the bytes an empty slot holds;
 //  - what a hand that comes and goes costs the host: add_hand (its whole pipeline is
-//    allocated here), remove_hand, and the read that frees it.
+//    allocated here), remove_hand, and the read that frees it;
+//  - what timed input costs a step: the same free and grasping hand fed one stamped
+//    sample a step (set_haptic_at) against one untimed (set_haptic), and with a
+//    host that stalls 5-50 ms and catches up in bursts.
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -24,6 +27,7 @@
 #include "core/periodic_clock.h"
 #include "runtime/world.h"
 #include "scenes/hand_scenarios.h"
+#include "scenes/jittery_host.h"
 #include "runtime/step_histogram.h"
 #include "core/triple_buffer.h"
 
@@ -144,6 +148,46 @@ void hand_slots(int slots, bool grasping, bool last) {
               steps.percentile(0.99), world.read().hand(hand)->contact_count, last ? "" : ",");
 }
 
+// One hand, free or grasping a ball, fed untimed inputs, stamped ones, or stamped ones
+// from a host that stalls (5, 10, 20, 50 ms every 150 ms) and catches up in a burst.
+void timed_input(const char* feed, bool grasping, bool last) {
+  World world(WorldDef{});
+  const std::shared_ptr<const TreeFile> ball = scenes::ball_shell(2000, 0.04);
+  HandHandle hand;
+  world.add_hand(make_hand_model(default_hand_def()), &hand);
+  ObjectHandle handle;
+  world.add_object(ball, RigidPose{vec3(0.10, 0.0, -0.058), glm::dmat3(1.0)}, &handle);
+  const scenes::HandScenario grasp = scenes::ball_grasp(ball);
+  auto input = [&](int64_t t) {
+    return grasping ? grasp.haptic(static_cast<int32_t>(std::min<int64_t>(t, grasp.steps - 1)))
+                    : scenes::open_hand(vec3(0.0, 0.5 + 1e-5 * static_cast<double>(t), 0.0));
+  };
+  const bool timed = feed[0] != 'u', stalls = feed[0] == 's';
+  const scenes::JitteryHost host(stalls ? scenes::JitteryHost::stall_cycle(100, 100000, 150)
+                                        : std::vector<scenes::HostStall>{},
+                                 stalls ? 0.0003 : 0.0, 1);
+  std::vector<int64_t> samples;
+  samples.reserve(64);
+  StepHistogram steps;
+  constexpr int kWarm = 300, kMeasured = 5000;
+  for (int64_t n = 1; n <= kWarm + kMeasured; ++n) {
+    if (timed) {
+      host.delivered_before(n, &samples);
+      for (int64_t j : samples)
+        world.set_haptic_at(hand, input(j), static_cast<int64_t>(std::llround(host.stamp(j) * 1e9)));
+    } else {
+      world.set_haptic(hand, input(n));
+    }
+    const Clock::time_point start = Clock::now();
+    world.step();
+    if (n > kWarm) steps.record(std::chrono::duration<double, std::micro>(Clock::now() - start).count());
+  }
+  std::printf("  {\"feed\": \"%s\", \"hand\": \"%s\", \"steps\": %d, \"p50_us\": %.3f, \"p99_us\": %.3f, "
+              "\"max_us\": %.3f}%s\n",
+              feed, grasping ? "grasping" : "free", kMeasured, steps.percentile(0.5),
+              steps.percentile(0.99), steps.max(), last ? "" : ",");
+}
+
 // The host's time to add a hand (allocating its pipeline), to remove it, and for the read
 // that frees it once a step applied the removal; one other hand steps throughout.
 void hand_add_remove() {
@@ -187,11 +231,20 @@ int main() {
   std::printf("],\n\"snapshot_read_ns\": {\"writer_idle\": %.2f, \"writer_publishing\": %.2f, \"snapshot_bytes\": %zu},\n",
               read_ns(false), read_ns(true), sizeof(Snapshot));
   // an empty hand slot: its port, and a slot header in each of the three snapshots
-  std::printf("\"empty_hand_slot_bytes\": %zu,\n", sizeof(HandPort) + 3 * sizeof(HandSlot));
+  // an empty hand slot: its port (with its input queue), and a slot header in each of
+  // the three snapshots
+  std::printf("\"empty_hand_slot_bytes\": %zu,\n",
+              sizeof(HandPort) + HandPort::kInputQueueCapacity * sizeof(TimedInput) + 3 * sizeof(HandSlot));
+  std::printf("\"hand_playback_bytes\": %zu,\n", InputPlayback::kCapacity * sizeof(TimedInput));
   hand_add_remove();
   std::printf("\"hand_slots\": [\n");
   for (bool grasping : {false, true})
     for (int slots : {1, 8, 64}) hand_slots(slots, grasping, grasping && slots == 64);
+  std::printf("],\n");
+  std::printf("\"timed_input\": [\n");
+  for (bool grasping : {false, true})
+    for (const char* feed : {"untimed", "timed", "timed, stalls"})
+      timed_input(feed, grasping, grasping && feed[0] == 't' && feed[5] == ',');
   std::printf("],\n");
   std::printf("\"world_step\": [\n");
   for (int hands : {1, 2})
