@@ -305,8 +305,8 @@
   X(frusta_device_status, 320, 8) \
   X(frusta_device_info, 268, 4)
 
-static_assert(FRUSTA_ABI_VERSION == 5,
-              "the layout table below is ABI 5: update it and the C# mirror with the ABI");
+static_assert(FRUSTA_ABI_VERSION == 6,
+              "the layout table below is ABI 6: update it and the C# mirror with the ABI");
 
 #define FRUSTA_CHECK_MEMBER(type, member, offset, size)                          \
   static_assert(offsetof(type, member) == (offset), #type "." #member " moved"); \

@@ -79,7 +79,7 @@
 #define FRUSTA_VERSION \
   (FRUSTA_VERSION_MAJOR * 1000000 + FRUSTA_VERSION_MINOR * 1000 + FRUSTA_VERSION_PATCH)
 /** Bumped whenever a struct layout or a signature changes; see frusta_check_abi(). */
-#define FRUSTA_ABI_VERSION 5
+#define FRUSTA_ABI_VERSION 6
 
 /** The library's FRUSTA_VERSION. Thread: any. */
 FRUSTA_API int32_t frusta_version(void);
