@@ -89,6 +89,9 @@
   X(frusta_tree_id, index1, 0, 4)                     \
   X(frusta_tree_id, world0, 4, 2)                     \
   X(frusta_tree_id, generation, 6, 2)                 \
+  X(frusta_bake_job_id, index1, 0, 4)                 \
+  X(frusta_bake_job_id, world0, 4, 2)                 \
+  X(frusta_bake_job_id, generation, 6, 2)             \
   X(frusta_bake_def, struct_size, 0, 4)               \
   X(frusta_bake_def, branching, 4, 4)                 \
   X(frusta_bake_def, target_error, 8, 8)              \
@@ -290,6 +293,7 @@
   X(frusta_constraint, 88, 8)        \
   X(frusta_tree_id, 8, 4)            \
   X(frusta_bake_def, 56, 8)          \
+  X(frusta_bake_job_id, 8, 4)        \
   X(frusta_sphere_tree_info, 120, 8) \
   X(frusta_tree_hit, 40, 8)          \
   X(frusta_world_id, 8, 4)           \
@@ -340,7 +344,8 @@ static_assert(FRUSTA_OK == 0 && FRUSTA_ERROR_NULL_POINTER == 1 && FRUSTA_ERROR_S
               FRUSTA_ERROR_ABI_MISMATCH == 9 && FRUSTA_ERROR_OUT_OF_MEMORY == 10 &&
               FRUSTA_ERROR_INTERNAL == 11 && FRUSTA_ERROR_IO == 12 &&
               FRUSTA_ERROR_FILE_FORMAT == 13 && FRUSTA_ERROR_CORRUPT_FILE == 14 &&
-              FRUSTA_ERROR_WRONG_STATE == 15 && FRUSTA_ERROR_UNAVAILABLE == 16);
+              FRUSTA_ERROR_WRONG_STATE == 15 && FRUSTA_ERROR_UNAVAILABLE == 16 &&
+              FRUSTA_ERROR_CANCELLED == 17);
 static_assert(FRUSTA_HAND_RIGHT == 0 && FRUSTA_HAND_LEFT == 1);
 static_assert(FRUSTA_FINGER_THUMB == 0 && FRUSTA_FINGER_INDEX == 1 && FRUSTA_FINGER_MIDDLE == 2 &&
               FRUSTA_FINGER_RING == 3 && FRUSTA_FINGER_LITTLE == 4);
@@ -431,6 +436,15 @@ FRUSTA_CHECK_SIGNATURE(frusta_create_sphere_tree_from_mesh,
                                          const frusta_bake_def*, frusta_tree_id*))
 FRUSTA_CHECK_SIGNATURE(frusta_create_sphere_tree_from_file,
                        frusta_result (*)(const char*, frusta_tree_id*))
+FRUSTA_CHECK_SIGNATURE(frusta_create_sphere_tree_from_memory,
+                       frusta_result (*)(const void*, int64_t, frusta_tree_id*))
+FRUSTA_CHECK_SIGNATURE(frusta_start_bake,
+                       frusta_result (*)(const float*, int32_t, const int32_t*, int32_t,
+                                         const frusta_bake_def*, frusta_bake_job_id*))
+FRUSTA_CHECK_SIGNATURE(frusta_bake_job_progress,
+                       frusta_result (*)(frusta_bake_job_id, double*, int32_t*))
+FRUSTA_CHECK_SIGNATURE(frusta_cancel_bake_job, frusta_result (*)(frusta_bake_job_id))
+FRUSTA_CHECK_SIGNATURE(frusta_finish_bake_job, frusta_result (*)(frusta_bake_job_id, frusta_tree_id*))
 FRUSTA_CHECK_SIGNATURE(frusta_destroy_sphere_tree, frusta_result (*)(frusta_tree_id))
 FRUSTA_CHECK_SIGNATURE(frusta_sphere_tree_save, frusta_result (*)(frusta_tree_id, const char*))
 FRUSTA_CHECK_SIGNATURE(frusta_sphere_tree_is_valid, int32_t (*)(frusta_tree_id))

@@ -125,9 +125,10 @@ static void test_result_names(void) {
                                        "FRUSTA_ERROR_FILE_FORMAT",
                                        "FRUSTA_ERROR_CORRUPT_FILE",
                                        "FRUSTA_ERROR_WRONG_STATE",
-                                       "FRUSTA_ERROR_UNAVAILABLE"};
+                                       "FRUSTA_ERROR_UNAVAILABLE",
+                                       "FRUSTA_ERROR_CANCELLED"};
   const int count = (int)(sizeof kNames / sizeof kNames[0]);
-  check(FRUSTA_ERROR_UNAVAILABLE == count - 1, "result codes are 0..%d", count - 1);
+  check(FRUSTA_ERROR_CANCELLED == count - 1, "result codes are 0..%d", count - 1);
   for (int32_t code = 0; code < count; ++code) {
     const char* name = frusta_result_name(code);
     check(name && strcmp(name, kNames[code]) == 0, "frusta_result_name(%d) = %s", code,

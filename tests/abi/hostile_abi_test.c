@@ -775,14 +775,14 @@ static void t_last_error(void) {
 }
 
 static void t_result_name(void) {
-  const int32_t codes[] = {INT32_MIN, -1, 17, 1000, INT32_MAX};
+  const int32_t codes[] = {INT32_MIN, -1, FRUSTA_ERROR_CANCELLED + 1, 1000, INT32_MAX};
   for (size_t i = 0; i < sizeof codes / sizeof codes[0]; ++i) {
     what("frusta_result_name(%d)", codes[i]);
     ++g_calls;
     const char* name = frusta_result_name(codes[i]);
     verify(name && strcmp(name, "FRUSTA_ERROR_UNKNOWN") == 0, "\"%s\"", name ? name : "(null)");
   }
-  for (int32_t c = 0; c <= FRUSTA_ERROR_UNAVAILABLE; ++c) {
+  for (int32_t c = 0; c <= FRUSTA_ERROR_CANCELLED; ++c) {
     what("frusta_result_name(%d)", c);
     ++g_calls;
     const char* name = frusta_result_name(c);
@@ -1828,6 +1828,202 @@ static int write_file(const char* path, const unsigned char* bytes, long size) {
   if (!f) return 0;
   const int ok = fwrite(bytes, 1, (size_t)size, f) == (size_t)size;
   return fclose(f) == 0 && ok;
+}
+
+/* ------------------------------------------------------------------ bake jobs */
+
+static frusta_bake_job_id job_of_raw(RawId r) { return (frusta_bake_job_id){r.index1, r.world0, r.generation}; }
+
+static frusta_bake_job_id g_dead_job; /* started, then finished */
+
+/* A quick job on the cube, finished: 1 when its tree was finite. */
+static int run_quick_job(const frusta_bake_def* def) {
+  frusta_bake_job_id job;
+  if (!accepted(frusta_start_bake(kCube, 8, kCubeTriangles, 36, def, &job))) return 0;
+  frusta_tree_id tree;
+  if (!accepted(frusta_finish_bake_job(job, &tree))) return 0;
+  const int ok = tree_finite(tree);
+  frusta_destroy_sphere_tree(tree);
+  g_dead_job = job;
+  return ok;
+}
+
+static frusta_result call_start_def(const void* def, int* untouched, void* context) {
+  (void)context;
+  frusta_bake_job_id job;
+  fill(&job, sizeof job);
+  const frusta_result r = frusta_start_bake(kCube, 8, kCubeTriangles, 36, (const frusta_bake_def*)def, &job);
+  if (r != FRUSTA_OK) {
+    *untouched = is_sentinel(&job, sizeof job);
+    return r;
+  }
+  frusta_tree_id tree;
+  const frusta_result finished = frusta_finish_bake_job(job, &tree);
+  if (finished == FRUSTA_OK) frusta_destroy_sphere_tree(tree);
+  return finished;
+}
+
+static void t_start_bake(void) {
+  const frusta_bake_def def = quick_bake_def();
+  frusta_bake_job_id job;
+  fill(&job, sizeof job);
+  what("frusta_start_bake: vertices NULL");
+  refused(frusta_start_bake(NULL, 8, kCubeTriangles, 36, &def, &job), FRUSTA_ERROR_NULL_POINTER, "vertices");
+  what("frusta_start_bake: indices NULL");
+  refused(frusta_start_bake(kCube, 8, NULL, 36, &def, &job), FRUSTA_ERROR_NULL_POINTER, "indices");
+  what("frusta_start_bake: def NULL");
+  refused(frusta_start_bake(kCube, 8, kCubeTriangles, 36, NULL, &job), FRUSTA_ERROR_NULL_POINTER, "def");
+  what("frusta_start_bake: out_job NULL");
+  refused(frusta_start_bake(kCube, 8, kCubeTriangles, 36, &def, NULL), FRUSTA_ERROR_NULL_POINTER, "out_job");
+  const int32_t counts[] = {INT32_MIN, -1};
+  for (int i = 0; i < 2; ++i) {
+    what("frusta_start_bake: vertex_count %d", counts[i]);
+    refused(frusta_start_bake(kCube, counts[i], kCubeTriangles, 36, &def, &job), FRUSTA_ERROR_OUT_OF_RANGE,
+            "vertex_count");
+    what("frusta_start_bake: index_count %d", counts[i]);
+    refused(frusta_start_bake(kCube, 8, kCubeTriangles, counts[i], &def, &job), FRUSTA_ERROR_OUT_OF_RANGE,
+            "index_count");
+  }
+  verify(is_sentinel(&job, sizeof job), "out_job written by a refused call");
+  sweep_def_header("frusta_start_bake", "frusta_bake_def", &def, sizeof def,
+                   offsetof(frusta_bake_def, internal_value), call_start_def, NULL);
+  /* a mesh the bake refuses: the job starts, and finishing it says why */
+  const int32_t bad[] = {0, 1, 9};
+  what("frusta_start_bake: index 9 of 8 vertices, refused at the finish");
+  if (accepted(frusta_start_bake(kCube, 8, bad, 3, &def, &job))) {
+    frusta_tree_id tree;
+    fill(&tree, sizeof tree);
+    refused(frusta_finish_bake_job(job, &tree), FRUSTA_ERROR_OUT_OF_RANGE, "indices[2]");
+    verify(is_sentinel(&tree, sizeof tree), "out_tree written by a failed job");
+  }
+  what("frusta_start_bake: the cube, finished");
+  verify(run_quick_job(&def), "the job's tree");
+}
+
+static frusta_result call_progress_id(RawId id, int* untouched) {
+  double fraction;
+  int32_t done;
+  fill(&fraction, sizeof fraction);
+  fill(&done, sizeof done);
+  const frusta_result r = frusta_bake_job_progress(job_of_raw(id), &fraction, &done);
+  *untouched = is_sentinel(&fraction, sizeof fraction) && is_sentinel(&done, sizeof done);
+  return r;
+}
+
+static frusta_result call_cancel_id(RawId id, int* untouched) {
+  *untouched = 1;
+  return frusta_cancel_bake_job(job_of_raw(id));
+}
+
+static frusta_result call_finish_id(RawId id, int* untouched) {
+  frusta_tree_id tree;
+  fill(&tree, sizeof tree);
+  const frusta_result r = frusta_finish_bake_job(job_of_raw(id), &tree);
+  *untouched = is_sentinel(&tree, sizeof tree);
+  return r;
+}
+
+/* A live job for the id sweeps: a bake of the cube, which the sweeps never touch. */
+static frusta_bake_job_id live_job(void) {
+  const frusta_bake_def def = quick_bake_def();
+  frusta_bake_job_id job = {0, 0, 0};
+  accepted(frusta_start_bake(kCube, 8, kCubeTriangles, 36, &def, &job));
+  return job;
+}
+
+static void end_job(frusta_bake_job_id job) {
+  frusta_tree_id tree;
+  if (frusta_finish_bake_job(job, &tree) == FRUSTA_OK) frusta_destroy_sphere_tree(tree);
+}
+
+static void t_bake_job_progress(void) {
+  if (g_dead_job.index1 == 0) {
+    const frusta_bake_def def = quick_bake_def();
+    run_quick_job(&def);
+  }
+  const frusta_bake_job_id job = live_job();
+  sweep_ids("frusta_bake_job_progress", "bake job", TO_RAW(job), TO_RAW(g_dead_job), 1, call_progress_id);
+  double fraction;
+  int32_t done;
+  what("frusta_bake_job_progress(job, NULL, &done)");
+  refused(frusta_bake_job_progress(job, NULL, &done), FRUSTA_ERROR_NULL_POINTER, "out_fraction");
+  what("frusta_bake_job_progress(job, &fraction, NULL)");
+  refused(frusta_bake_job_progress(job, &fraction, NULL), FRUSTA_ERROR_NULL_POINTER, "out_done");
+  what("frusta_bake_job_progress(job)");
+  if (accepted(frusta_bake_job_progress(job, &fraction, &done)))
+    verify(fraction >= 0.0 && fraction <= 1.0 && (done == 0 || done == 1), "%g, done %d", fraction, done);
+  end_job(job);
+}
+
+static void t_cancel_bake_job(void) {
+  const frusta_bake_job_id job = live_job();
+  sweep_ids("frusta_cancel_bake_job", "bake job", TO_RAW(job), TO_RAW(g_dead_job), 1, call_cancel_id);
+  what("frusta_cancel_bake_job(job), then its finish");
+  accepted(frusta_cancel_bake_job(job));
+  accepted(frusta_cancel_bake_job(job)); /* twice is once */
+  frusta_tree_id tree;
+  fill(&tree, sizeof tree);
+  refused(frusta_finish_bake_job(job, &tree), FRUSTA_ERROR_CANCELLED, "cancelled");
+  verify(is_sentinel(&tree, sizeof tree), "out_tree written by a cancelled job");
+}
+
+static void t_finish_bake_job(void) {
+  const frusta_bake_job_id job = live_job();
+  sweep_ids("frusta_finish_bake_job", "bake job", TO_RAW(job), TO_RAW(g_dead_job), 1, call_finish_id);
+  what("frusta_finish_bake_job(job, NULL)");
+  refused(frusta_finish_bake_job(job, NULL), FRUSTA_ERROR_NULL_POINTER, "out_tree");
+  what("frusta_finish_bake_job(job) twice");
+  frusta_tree_id tree;
+  if (accepted(frusta_finish_bake_job(job, &tree))) frusta_destroy_sphere_tree(tree);
+  refused(frusta_finish_bake_job(job, &tree), FRUSTA_ERROR_STALE_ID, "bake job");
+}
+
+/* ------------------------------------------------------------------ trees in memory */
+
+static frusta_result call_memory(const unsigned char* bytes, int64_t size) {
+  frusta_tree_id tree;
+  fill(&tree, sizeof tree);
+  const frusta_result r = frusta_create_sphere_tree_from_memory(bytes, size, &tree);
+  if (r == FRUSTA_OK) {
+    tree_finite(tree);
+    frusta_destroy_sphere_tree(tree);
+  } else {
+    verify(is_sentinel(&tree, sizeof tree), "out_tree written by a refused call");
+  }
+  return r;
+}
+
+static void t_create_sphere_tree_from_memory(void) {
+  char path[1024];
+  object_path("press_box", path, sizeof path);
+  long size = 0;
+  unsigned char* bytes = read_file(path, &size);
+  if (!verify(bytes != NULL, "cannot read %s", path)) return;
+  frusta_tree_id tree;
+  what("frusta_create_sphere_tree_from_memory(NULL, size, &tree)");
+  refused(frusta_create_sphere_tree_from_memory(NULL, size, &tree), FRUSTA_ERROR_NULL_POINTER, "data");
+  what("frusta_create_sphere_tree_from_memory(bytes, size, NULL)");
+  refused(frusta_create_sphere_tree_from_memory(bytes, size, NULL), FRUSTA_ERROR_NULL_POINTER, "out_tree");
+  const int64_t sizes[] = {INT64_MIN, -1, (int64_t)1 << 40, INT64_MAX};
+  for (int i = 0; i < 4; ++i) {
+    what("frusta_create_sphere_tree_from_memory: size %lld", (long long)sizes[i]);
+    refused(call_memory(bytes, sizes[i]), FRUSTA_ERROR_OUT_OF_RANGE, "size");
+  }
+  what("frusta_create_sphere_tree_from_memory: the whole file");
+  accepted(call_memory(bytes, size));
+  /* every shorter piece is refused by the format's checks, naming the input */
+  const long cuts[] = {0, 1, 8, 159, 160, 161, size / 2, size - 1};
+  for (int i = 0; i < 8; ++i) {
+    if (cuts[i] >= size) continue;
+    what("frusta_create_sphere_tree_from_memory: the first %ld of %ld bytes", cuts[i], size);
+    const frusta_result r = call_memory(bytes, cuts[i]);
+    refused(r, r == FRUSTA_ERROR_FILE_FORMAT ? FRUSTA_ERROR_FILE_FORMAT : FRUSTA_ERROR_CORRUPT_FILE, "data");
+  }
+  /* a flipped byte in the payload: the checksum */
+  bytes[size - 3] ^= 0x5a;
+  what("frusta_create_sphere_tree_from_memory: a flipped byte");
+  refused(call_memory(bytes, size), FRUSTA_ERROR_CORRUPT_FILE, "data");
+  free(bytes);
 }
 
 static void load_refused(const char* label, const char* path, frusta_result want1, frusta_result want2,
@@ -4722,6 +4918,11 @@ static const Entry kFunctions[] = {
     {"frusta_constraint_eval", t_constraint_eval},
     {"frusta_default_bake_def", t_default_bake_def},
     {"frusta_create_sphere_tree_from_mesh", t_bake_sphere_tree},
+    {"frusta_create_sphere_tree_from_memory", t_create_sphere_tree_from_memory},
+    {"frusta_start_bake", t_start_bake},
+    {"frusta_bake_job_progress", t_bake_job_progress},
+    {"frusta_cancel_bake_job", t_cancel_bake_job},
+    {"frusta_finish_bake_job", t_finish_bake_job},
     {"frusta_create_sphere_tree_from_file", t_load_sphere_tree},
     {"frusta_sphere_tree_save", t_save_sphere_tree},
     {"frusta_destroy_sphere_tree", t_destroy_sphere_tree},

@@ -110,7 +110,8 @@ typedef enum frusta_result {
   FRUSTA_ERROR_FILE_FORMAT = 13,     /* not a Frusta file, or a format version we cannot read */
   FRUSTA_ERROR_CORRUPT_FILE = 14,    /* a Frusta file whose contents fail validation */
   FRUSTA_ERROR_WRONG_STATE = 15,     /* not now: e.g. stepping a world its own thread runs */
-  FRUSTA_ERROR_UNAVAILABLE = 16      /* a part this build lacks: the baker where Embree does not exist */
+  FRUSTA_ERROR_UNAVAILABLE = 16,     /* a part this build lacks: the baker where Embree does not exist */
+  FRUSTA_ERROR_CANCELLED = 17        /* a bake job stopped because it was asked to */
 } frusta_result;
 #endif /* FRUSTA_BASE_RESULT */
 
@@ -649,6 +650,44 @@ FRUSTA_API frusta_result frusta_create_sphere_tree_from_mesh(const float* vertic
  *  FRUSTA_ERROR_CORRUPT_FILE naming the problem. Thread: any. */
 FRUSTA_API frusta_result frusta_create_sphere_tree_from_file(const char* path,
                                                              frusta_tree_id* out_tree);
+/** Create a sphere tree from the bytes of a .frtree file in memory (size bytes at data,
+ *  0..the largest valid tree: an engine's asset, with no temporary file), checked as
+ *  frusta_create_sphere_tree_from_file checks a file. The bytes may go once this
+ *  returns. Thread: any. */
+FRUSTA_API frusta_result frusta_create_sphere_tree_from_memory(const void* data, int64_t size,
+                                                               frusta_tree_id* out_tree);
+
+/** Bake-job handle: a bake running on a thread of its own. Opaque; pass by value; zero
+ *  means null. */
+typedef struct frusta_bake_job_id {
+  int32_t index1;      /* slot + 1; 0 is null */
+  uint16_t world0;     /* always 0: jobs are standalone */
+  uint16_t generation; /* bumped when the slot is reused */
+} frusta_bake_job_id;
+
+/** Start baking a tree as frusta_create_sphere_tree_from_mesh does, on a thread of the
+ *  job's own, so that an editor can show its progress and cancel it. The def is checked
+ *  now (its errors come from here); the mesh is copied, so its arrays may go at once,
+ *  and checked by the bake (its errors come from frusta_finish_bake_job). Every started
+ *  job must be finished with frusta_finish_bake_job, which frees it. Thread: any. */
+FRUSTA_API frusta_result frusta_start_bake(const float* vertices, int32_t vertex_count,
+                                           const int32_t* indices, int32_t index_count,
+                                           const frusta_bake_def* def,
+                                           frusta_bake_job_id* out_job);
+/** How far a job has come: *out_fraction in 0..1, never decreasing, and *out_done 1
+ *  once it has ended (baked, failed or cancelled; finishing it then does not wait).
+ *  Thread: any. */
+FRUSTA_API frusta_result frusta_bake_job_progress(frusta_bake_job_id job, double* out_fraction,
+                                                  int32_t* out_done);
+/** Ask a job to stop: it ends soon after (within a few thousand of the baker's queries)
+ *  and finishing it gives FRUSTA_ERROR_CANCELLED, even if it had ended already (its
+ *  tree is dropped). Thread: any. */
+FRUSTA_API frusta_result frusta_cancel_bake_job(frusta_bake_job_id job);
+/** Wait for a job to end, free it (its id turns stale) and give what it made: its tree
+ *  in *out_tree, or the bake's error (as frusta_create_sphere_tree_from_mesh reports
+ *  it), or FRUSTA_ERROR_CANCELLED. out_tree may not be null: a job is freed either way.
+ *  Thread: any; one thread per job. */
+FRUSTA_API frusta_result frusta_finish_bake_job(frusta_bake_job_id job, frusta_tree_id* out_tree);
 /** Destroy a tree; its id becomes stale. Worlds whose objects use it keep it alive.
  *  Thread: any, but not while another thread uses the same tree. */
 FRUSTA_API frusta_result frusta_destroy_sphere_tree(frusta_tree_id tree);

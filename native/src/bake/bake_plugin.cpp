@@ -44,13 +44,17 @@ frusta_result read_mesh(const float* vertices, int32_t vertex_count, const int32
 
 frusta_result bake(const float* vertices, int32_t vertex_count, const int32_t* indices,
                    int32_t index_count, const frusta_bake_plugin_params& params,
+                   frusta_bake_plugin_progress progress, void* context,
                    std::vector<uint8_t>* file, bool* target_met) {
   TriangleMesh mesh;
   if (frusta_result r = read_mesh(vertices, vertex_count, indices, index_count, &mesh)) return r;
   BakeParams p;
   copy_bake_params(params, p);
   TreeFile tree;
-  if (frusta_result r = bake_sphere_tree(mesh, p, nullptr, &tree, target_met)) return r;
+  ProgressFn report;
+  if (progress != nullptr)
+    report = [progress, context](double fraction) { return progress(fraction, context) == 0; };
+  if (frusta_result r = bake_sphere_tree(mesh, p, report, &tree, target_met)) return r;
   *file = encode_tree_file(tree);
   return FRUSTA_OK;
 }
@@ -63,15 +67,16 @@ FRUSTA_BAKE_PLUGIN_API int32_t frusta_bake_plugin_version(void) {
 
 FRUSTA_BAKE_PLUGIN_API frusta_result frusta_bake_plugin_bake(
     const float* vertices, int32_t vertex_count, const int32_t* indices, int32_t index_count,
-    const frusta_bake_plugin_params* params, uint8_t** out_tree_file, int64_t* out_size,
-    int32_t* out_target_met, char* error, int32_t error_capacity) {
+    const frusta_bake_plugin_params* params, frusta_bake_plugin_progress progress,
+    void* context, uint8_t** out_tree_file, int64_t* out_size, int32_t* out_target_met,
+    char* error, int32_t error_capacity) {
   frusta_result r = guarded("frusta_create_sphere_tree_from_mesh", [&] {
     if (frusta_result p = check_pointer(params, "params")) return p;
     if (frusta_result p = check_pointer(out_tree_file, "out_tree_file")) return p;
     std::vector<uint8_t> file;
     bool target_met = false;
-    if (frusta_result b = bake(vertices, vertex_count, indices, index_count, *params, &file,
-                               &target_met))
+    if (frusta_result b = bake(vertices, vertex_count, indices, index_count, *params, progress,
+                               context, &file, &target_met))
       return b;
     auto* bytes = static_cast<uint8_t*>(std::malloc(file.size()));
     if (bytes == nullptr)
@@ -83,13 +88,8 @@ FRUSTA_BAKE_PLUGIN_API frusta_result frusta_bake_plugin_bake(
     return FRUSTA_OK;
   });
   if (r != FRUSTA_OK && error != nullptr && error_capacity > 0) {
-    // the message without fail()'s "FRUSTA_ERROR_...: " prefix: the runtime's fail()
-    // adds the code again
-    const char* message = last_error_message();
-    const size_t prefix = std::strlen(result_name(r));
-    if (std::strncmp(message, result_name(r), prefix) == 0 && message[prefix] == ':')
-      message += prefix + (message[prefix + 1] == ' ' ? 2 : 1);
-    std::strncpy(error, message, static_cast<size_t>(error_capacity) - 1);
+    // the runtime's fail() adds the code again
+    std::strncpy(error, last_error_detail(r), static_cast<size_t>(error_capacity) - 1);
     error[error_capacity - 1] = 0;
   }
   return r;

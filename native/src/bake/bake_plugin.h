@@ -30,8 +30,13 @@
 #endif
 
 /* bumped with any change below (2: error messages come without the code's name;
- * 3: the plugin's own parameter struct instead of frusta_bake_def) */
-#define FRUSTA_BAKE_PLUGIN_VERSION 3
+ * 3: the plugin's own parameter struct instead of frusta_bake_def; 4: progress) */
+#define FRUSTA_BAKE_PLUGIN_VERSION 4
+
+/** Called now and then from the baking thread with how far the bake has come (0..1);
+ *  return 0 to go on, anything else to cancel (the bake then fails with
+ *  FRUSTA_ERROR_CANCELLED). */
+typedef int32_t (*frusta_bake_plugin_progress)(double fraction, void* context);
 
 /** What to bake: frusta_bake_def's values (the runtime checked them). */
 typedef struct frusta_bake_plugin_params {
@@ -51,11 +56,13 @@ FRUSTA_BAKE_PLUGIN_API int32_t frusta_bake_plugin_version(void);
  *  bytes, to release with frusta_bake_plugin_free, and *out_target_met is 1 when both
  *  error figures met the target. On failure, the message is written to error (at most
  *  error_capacity bytes with the terminating NUL) without the code's name, which
- *  the caller reports with the result. Thread: any. */
+ *  the caller reports with the result. progress (may be null) is called with context.
+ *  Thread: any. */
 FRUSTA_BAKE_PLUGIN_API frusta_result frusta_bake_plugin_bake(
     const float* vertices, int32_t vertex_count, const int32_t* indices, int32_t index_count,
-    const frusta_bake_plugin_params* params, uint8_t** out_tree_file, int64_t* out_size,
-    int32_t* out_target_met, char* error, int32_t error_capacity);
+    const frusta_bake_plugin_params* params, frusta_bake_plugin_progress progress,
+    void* context, uint8_t** out_tree_file, int64_t* out_size, int32_t* out_target_met,
+    char* error, int32_t error_capacity);
 
 /** Release what frusta_bake_plugin_bake returned (null is ignored). Thread: any. */
 FRUSTA_BAKE_PLUGIN_API void frusta_bake_plugin_free(uint8_t* tree_file);

@@ -15,11 +15,23 @@
 namespace frusta {
 
 BakeError measure_bake_error(const MeshQueries& queries, const TriangleMesh& mesh,
-                             const SphereTree& tree, int64_t samples, uint64_t seed) {
+                             const SphereTree& tree, int64_t samples, uint64_t seed,
+                             const ProgressFn& progress) {
   BakeError error;
+  // each half of the measurement reports every 1024 points
+  const auto stop = [&](int64_t done, double half) {
+    return progress && (done & 1023) == 0 &&
+           !progress(0.5 * half + 0.5 * static_cast<double>(done) / static_cast<double>(samples));
+  };
   // (a) how far a finger sinks before it touches: surface points outside every leaf
-  for (const SurfaceSample& s : sample_surface(mesh, static_cast<size_t>(samples), seed))
+  int64_t surface_points = 0;
+  for (const SurfaceSample& s : sample_surface(mesh, static_cast<size_t>(samples), seed)) {
     error.uncovered = std::max(error.uncovered, distance_to_leaves(tree, s.point));
+    if (stop(++surface_points, 0.0)) {
+      error.cancelled = true;
+      return error;
+    }
+  }
 
   // (b) how far above the surface a finger stops: leaf points outside the mesh.
   // Points are spread over the leaves by area, at least 4 on each.
@@ -34,7 +46,10 @@ BakeError measure_bake_error(const MeshQueries& queries, const TriangleMesh& mes
     for (int64_t k = 0; k < n; ++k) {
       // braces: the three draws in order on every compiler (function arguments have none)
       const vec3 q = l.center + l.radius * glm::normalize(vec3{gauss(rng), gauss(rng), gauss(rng)});
-      ++leaf_points;
+      if (stop(std::min(++leaf_points, samples), 1.0)) {
+        error.cancelled = true;
+        return error;
+      }
       // inside another leaf: not on the union's boundary, cannot stand out further
       if (distance_to_leaves(tree, q) < -1e-12) continue;
       if (queries.inside(q)) continue;
@@ -55,9 +70,15 @@ frusta_result bake_sphere_tree(const TriangleMesh& mesh, const BakeParams& param
   const auto start = std::chrono::steady_clock::now();
   std::unique_ptr<MeshQueries> queries;
   if (frusta_result r = MeshQueries::create(mesh, &queries)) return r;
-  const CoverResult cover =
-      cover_with_spheres(mesh, *queries, {params.target_error, params.max_leaves, params.seed}, progress);
-  if (cover.cancelled) return fail(FRUSTA_ERROR_INTERNAL, "bake cancelled");
+  // the cover takes most of a bake, the error's measurement the rest
+  constexpr double kCoverShare = 0.7;
+  const auto share = [&progress](double from, double width) {
+    return progress ? ProgressFn([&progress, from, width](double f) { return progress(from + width * f); })
+                    : ProgressFn();
+  };
+  const CoverResult cover = cover_with_spheres(
+      mesh, *queries, {params.target_error, params.max_leaves, params.seed}, share(0.0, kCoverShare));
+  if (cover.cancelled) return fail(FRUSTA_ERROR_CANCELLED, "the bake was cancelled");
   if (cover.leaves.empty())
     return fail(FRUSTA_ERROR_OUT_OF_RANGE, "the mesh encloses no volume the baker could fill");
 
@@ -77,7 +98,8 @@ frusta_result bake_sphere_tree(const TriangleMesh& mesh, const BakeParams& param
   }
   // measured on samples the cover never saw
   const BakeError error = measure_bake_error(*queries, mesh, file.tree, params.error_samples,
-                                             params.seed + 0x5eed);
+                                             params.seed + 0x5eed, share(kCoverShare, 1.0 - kCoverShare));
+  if (error.cancelled) return fail(FRUSTA_ERROR_CANCELLED, "the bake was cancelled");
   BakeRecord& b = file.bake;
   b.target_error = params.target_error;
   b.max_leaves = params.max_leaves;

@@ -14,10 +14,13 @@ struct BakeError {
   double uncovered = 0.0;   // largest distance from a surface point to the leaves
   double protruding = 0.0;  // largest distance from a leaf surface point out of the mesh
   int64_t samples = 0;
+  bool cancelled = false;   // progress said stop: the figures are partial
 };
 
+// progress (may be empty) as sphere_cover.h's, over the measurement.
 BakeError measure_bake_error(const MeshQueries& queries, const TriangleMesh& mesh,
-                             const SphereTree& tree, int64_t samples, uint64_t seed);
+                             const SphereTree& tree, int64_t samples, uint64_t seed,
+                             const ProgressFn& progress = {});
 
 // The whole bake; params are checked (check_bake_params) before anything else.
 // *target_met says whether both figures came out at or under the

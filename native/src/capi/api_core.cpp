@@ -38,6 +38,7 @@ constexpr NamedSize kStructSizes[] = {
     FRUSTA_NAMED_SIZE(frusta_hand_fitter_id), FRUSTA_NAMED_SIZE(frusta_hand_fit_def),
     FRUSTA_NAMED_SIZE(frusta_hand_fit),      FRUSTA_NAMED_SIZE(frusta_contact_query),
     FRUSTA_NAMED_SIZE(frusta_constraint),    FRUSTA_NAMED_SIZE(frusta_tree_id),
+    FRUSTA_NAMED_SIZE(frusta_bake_job_id),
     FRUSTA_NAMED_SIZE(frusta_bake_def),      FRUSTA_NAMED_SIZE(frusta_sphere_tree_info),
     FRUSTA_NAMED_SIZE(frusta_tree_hit),      FRUSTA_NAMED_SIZE(frusta_world_id),
     FRUSTA_NAMED_SIZE(frusta_object_id),     FRUSTA_NAMED_SIZE(frusta_world_def),

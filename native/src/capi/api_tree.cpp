@@ -33,6 +33,24 @@ FRUSTA_API frusta_result frusta_create_sphere_tree_from_file(const char* path,
   });
 }
 
+FRUSTA_API frusta_result frusta_create_sphere_tree_from_memory(const void* data, int64_t size,
+                                                               frusta_tree_id* out_tree) {
+  if (frusta_result r = check_pointer(data, "data")) return r;
+  if (frusta_result r = check_pointer(out_tree, "out_tree")) return r;
+  if (size < 0 || static_cast<uint64_t>(size) > kMaxTreeFileBytes)
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "size is %lld, must be 0..%zu (the largest valid tree)",
+                static_cast<long long>(size), kMaxTreeFileBytes);
+  return guarded("frusta_create_sphere_tree_from_memory", [&] {
+    auto tree = std::make_unique<TreeObject>();
+    if (frusta_result r = decode_tree_file(static_cast<const uint8_t*>(data),
+                                           static_cast<size_t>(size), "data", &tree->file))
+      return r;
+    const BakeRecord& b = tree->file.bake;
+    tree->target_met = b.uncovered_error <= b.target_error && b.protruding_error <= b.target_error;
+    return tree_registry().add(std::move(tree), out_tree);
+  });
+}
+
 FRUSTA_API frusta_result frusta_sphere_tree_save(frusta_tree_id tree, const char* path) {
   TreeObject* t = nullptr;
   if (frusta_result r = tree_registry().find(tree, &t)) return r;

@@ -27,7 +27,8 @@ typedef enum frusta_result {
   FRUSTA_ERROR_FILE_FORMAT = 13,     /* not a Frusta file, or a format version we cannot read */
   FRUSTA_ERROR_CORRUPT_FILE = 14,    /* a Frusta file whose contents fail validation */
   FRUSTA_ERROR_WRONG_STATE = 15,     /* not now: e.g. stepping a world its own thread runs */
-  FRUSTA_ERROR_UNAVAILABLE = 16      /* a part this build lacks: the baker where Embree does not exist */
+  FRUSTA_ERROR_UNAVAILABLE = 16,     /* a part this build lacks: the baker where Embree does not exist */
+  FRUSTA_ERROR_CANCELLED = 17        /* a bake job stopped because it was asked to */
 } frusta_result;
 #endif /* FRUSTA_BASE_RESULT */
 

@@ -3,6 +3,7 @@
 
 #include <cstdarg>
 #include <cstdio>
+#include <cstring>
 
 namespace frusta {
 
@@ -39,10 +40,18 @@ const char* result_name(int32_t result) {
     case FRUSTA_ERROR_CORRUPT_FILE: return "FRUSTA_ERROR_CORRUPT_FILE";
     case FRUSTA_ERROR_WRONG_STATE: return "FRUSTA_ERROR_WRONG_STATE";
     case FRUSTA_ERROR_UNAVAILABLE: return "FRUSTA_ERROR_UNAVAILABLE";
+    case FRUSTA_ERROR_CANCELLED: return "FRUSTA_ERROR_CANCELLED";
     default: return "FRUSTA_ERROR_UNKNOWN";
   }
 }
 const char* last_error_message() { return t_message; }
+
+const char* last_error_detail(frusta_result code) {
+  const size_t prefix = std::strlen(result_name(code));
+  if (std::strncmp(t_message, result_name(code), prefix) != 0 || t_message[prefix] != ':')
+    return t_message;
+  return t_message + prefix + (t_message[prefix + 1] == ' ' ? 2 : 1);
+}
 void clear_last_error() { t_message[0] = '\0'; }
 
 }  // namespace frusta

@@ -39,6 +39,9 @@ frusta_result guarded(const char* function, Body&& body) noexcept {
 const char* result_name(int32_t result);
 
 const char* last_error_message();
+// The message after fail()'s "FRUSTA_ERROR_...: " prefix for code, to hand on to a
+// fail() that adds it again (from another library or another thread).
+const char* last_error_detail(frusta_result code);
 void clear_last_error();
 
 }  // namespace frusta

@@ -46,6 +46,9 @@ constexpr size_t kChecksumOffset = kTreeChecksumOffset;
 constexpr size_t kNodeBytes = 24;
 constexpr size_t kLeafBytes = 32;
 static_assert(sizeof(TreeNode) == kNodeBytes, "TreeNode is stored as is");
+static_assert(kMaxTreeFileBytes == kHeaderBytes + static_cast<size_t>(kMaxNodes) * kNodeBytes +
+                                       static_cast<size_t>(kMaxLeaves) * kLeafBytes,
+              "the header's limit and the layout agree");
 
 uint64_t fnv1a(uint64_t hash, const uint8_t* data, size_t size) {
   for (size_t i = 0; i < size; ++i) hash = (hash ^ data[i]) * 0x100000001b3ull;
@@ -285,11 +288,9 @@ frusta_result load_tree_file(const std::string& path, TreeFile* out) {
   std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) return fail(FRUSTA_ERROR_IO, "%s: cannot open it for reading", path.c_str());
   const std::streamoff size = in.tellg();
-  const size_t limit = kHeaderBytes + static_cast<size_t>(kMaxNodes) * kNodeBytes +
-                       static_cast<size_t>(kMaxLeaves) * kLeafBytes;
-  if (size < 0 || static_cast<size_t>(size) > limit)
+  if (size < 0 || static_cast<size_t>(size) > kMaxTreeFileBytes)
     return fail(FRUSTA_ERROR_CORRUPT_FILE, "%s: %lld bytes, larger than any valid tree (%zu)",
-                path.c_str(), static_cast<long long>(size), limit);
+                path.c_str(), static_cast<long long>(size), kMaxTreeFileBytes);
   std::vector<uint8_t> bytes(static_cast<size_t>(size));
   in.seekg(0);
   in.read(reinterpret_cast<char*>(bytes.data()), size);

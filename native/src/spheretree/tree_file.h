@@ -11,6 +11,7 @@
 
 #include "core/base.h"
 #include "spheretree/sphere_tree.h"
+#include "spheretree/tree_limits.h"
 
 namespace frusta {
 
@@ -35,6 +36,10 @@ struct TreeFile {
 constexpr uint32_t kTreeFormatVersion = 1;
 constexpr size_t kTreeHeaderBytes = 160;
 constexpr size_t kTreeChecksumOffset = 152;
+// The largest file a valid tree makes (the header, then 24 bytes per node and 32 per
+// leaf at the limits): larger input is refused unread.
+constexpr size_t kMaxTreeFileBytes =
+    kTreeHeaderBytes + static_cast<size_t>(kMaxNodes) * 24 + static_cast<size_t>(kMaxLeaves) * 32;
 
 // The checksum a file of size >= kTreeHeaderBytes stores at kTreeChecksumOffset,
 // computed over its other bytes. Public so the fuzzer can repair the files it mutates.
