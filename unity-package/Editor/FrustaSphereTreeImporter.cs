@@ -16,11 +16,12 @@ namespace Frusta.Editor
         public override void OnImportAsset(AssetImportContext ctx)
         {
             var asset = ScriptableObject.CreateInstance<FrustaSphereTreeAsset>();
-            string path = Path.GetFullPath(ctx.assetPath);
+            byte[] bytes = File.ReadAllBytes(Path.GetFullPath(ctx.assetPath));
             try
             {
-                using (SphereTree tree = SphereTree.Load(path))
-                    asset.Set(File.ReadAllBytes(path), tree.Info);
+                // the bytes the asset keeps are the ones checked
+                using (SphereTree tree = SphereTree.LoadFromMemory(bytes))
+                    asset.Set(bytes, tree.Info);
             }
             catch (FrustaException e)
             {

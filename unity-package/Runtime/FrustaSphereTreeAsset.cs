@@ -1,6 +1,5 @@
 // SPDX-License-Identifier: MIT
 using System;
-using System.IO;
 using Frusta.Binding;
 using UnityEngine;
 
@@ -8,8 +7,7 @@ namespace Frusta.Unity
 {
     /// <summary>
     /// A baked sphere tree (a <c>.frtree</c> file) imported as an asset: its bytes and the figures
-    /// the bake reported. The native library loads trees from files only, so <see cref="Load"/>
-    /// writes the bytes once to the temporary cache and loads that file.
+    /// the bake reported. <see cref="Load"/> hands the bytes to the native library in memory.
     /// </summary>
     public sealed class FrustaSphereTreeAsset : ScriptableObject
     {
@@ -50,11 +48,6 @@ namespace Frusta.Unity
         }
 
         /// <summary>Load the tree natively; dispose the result (a world keeps its own reference).</summary>
-        public SphereTree Load()
-        {
-            string path = Path.Combine(Application.temporaryCachePath, $"frusta-{GetInstanceID()}-{data.Length}{SphereTree.FileExtension}");
-            if (!File.Exists(path) || new FileInfo(path).Length != data.Length) File.WriteAllBytes(path, data);
-            return SphereTree.Load(path);
-        }
+        public SphereTree Load() => SphereTree.LoadFromMemory(data);
     }
 }

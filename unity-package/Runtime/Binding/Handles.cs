@@ -84,6 +84,17 @@ namespace Frusta.Binding
         protected override void Destroy() => Native.frusta_destroy_sphere_tree(Id);
     }
 
+    internal sealed class BakeJobHandle : IdHandle<FrustaBakeJobId>
+    {
+        // a job dropped unfinished: stopped, and its end (and any tree) thrown away
+        protected override unsafe void Destroy()
+        {
+            Native.frusta_cancel_bake_job(Id);
+            FrustaTreeId tree;
+            if (Native.frusta_finish_bake_job(Id, &tree) == FrustaResult.Ok) Native.frusta_destroy_sphere_tree(tree);
+        }
+    }
+
     internal sealed class HandHandle : IdHandle<FrustaHandId>
     {
         protected override void Destroy() => Native.frusta_destroy_hand(Id);

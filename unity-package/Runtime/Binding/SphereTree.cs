@@ -47,6 +47,36 @@ namespace Frusta.Binding
             return new SphereTree(h);
         }
 
+        /// <summary>Load a tree from a <c>.frtree</c> file's bytes in memory (an engine asset's: no temporary
+        /// file; <c>frusta_create_sphere_tree_from_memory</c>), checked as <see cref="Load(string)"/> checks a
+        /// file. Thread: any.</summary>
+        /// <param name="fileBytes">The whole file.</param>
+        /// <returns>The tree; dispose it.</returns>
+        /// <exception cref="FrustaException"><see cref="FrustaResult.FileFormat"/> or
+        /// <see cref="FrustaResult.CorruptFile"/> for bytes that are not a whole valid tree, with the
+        /// native message naming the problem.</exception>
+        public static SphereTree LoadFromMemory(ReadOnlySpan<byte> fileBytes)
+        {
+            FrustaLibrary.EnsureCompatible();
+            var h = new TreeHandle();
+            FrustaTreeId id;
+            FrustaResult r;
+            // a pointer to something even for no bytes: an empty span's is null
+            byte none = 0;
+            fixed (byte* p = fileBytes)
+                r = Native.frusta_create_sphere_tree_from_memory(p != null ? p : &none, fileBytes.Length, &id);
+            h.Own(r, id, "frusta_create_sphere_tree_from_memory");
+            return new SphereTree(h);
+        }
+
+        /// <summary>A tree whose id a native call returned (a bake job's), owned from now on.</summary>
+        internal static SphereTree Own(FrustaResult r, FrustaTreeId id, string call)
+        {
+            var h = new TreeHandle();
+            h.Own(r, id, call);
+            return new SphereTree(h);
+        }
+
         /// <summary>Bake a tree from triangles with the default bake parameters.</summary>
         /// <param name="vertices">xyz triples, metres, right-handed object frame (Frusta's; convert
         /// Unity meshes with <see cref="CoordinateConversion"/>, which also reverses the winding).</param>

@@ -42,6 +42,8 @@ namespace Frusta.Binding
         WrongState = 15,
         /// <summary>a part this build lacks: the baker where Embree does not exist</summary>
         Unavailable = 16,
+        /// <summary>a bake job stopped because it was asked to</summary>
+        Cancelled = 17,
     }
 
     /// <summary>Which hand; a left hand mirrors a right one through the hand frame's x-z plane.</summary>

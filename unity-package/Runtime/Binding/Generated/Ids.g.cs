@@ -159,6 +159,58 @@ namespace Frusta.Binding
         public override readonly string ToString() => $"{{{Index1}, {World0}, {Generation}}}";
     }
 
+    /// <summary>
+    /// Bake-job handle: a bake running on a thread of its own. Opaque; pass by value; zero
+    /// means null.
+    /// </summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public partial struct FrustaBakeJobId : IEquatable<FrustaBakeJobId>
+    {
+        /// <summary>slot + 1; 0 is null</summary>
+        public int Index1;
+        /// <summary>always 0: jobs are standalone</summary>
+        public ushort World0;
+        /// <summary>bumped when the slot is reused</summary>
+        public ushort Generation;
+
+        /// <summary>The null handle (all zero).</summary>
+        public static FrustaBakeJobId Null => default;
+
+        /// <summary>true for the null handle (<see cref="Index1"/> is 0).</summary>
+        public readonly bool IsNull => Index1 == 0;
+
+        /// <summary>Field-wise equality.</summary>
+        /// <param name="other">The handle to compare with.</param>
+        /// <returns>true when both name the same slot, world and generation.</returns>
+        public readonly bool Equals(FrustaBakeJobId other) =>
+            Index1 == other.Index1 && World0 == other.World0 && Generation == other.Generation;
+
+        /// <summary>Field-wise equality with a boxed handle.</summary>
+        /// <param name="obj">The object to compare with.</param>
+        /// <returns>true when obj is an equal handle.</returns>
+        public override readonly bool Equals(object obj) => obj is FrustaBakeJobId o && Equals(o);
+
+        /// <summary>A hash of the three fields.</summary>
+        /// <returns>The hash code.</returns>
+        public override readonly int GetHashCode() => Index1 * 31 + (World0 << 16 | Generation);
+
+        /// <summary>Field-wise equality.</summary>
+        /// <param name="a">The first handle.</param>
+        /// <param name="b">The second handle.</param>
+        /// <returns>true when equal.</returns>
+        public static bool operator ==(FrustaBakeJobId a, FrustaBakeJobId b) => a.Equals(b);
+
+        /// <summary>Field-wise inequality.</summary>
+        /// <param name="a">The first handle.</param>
+        /// <param name="b">The second handle.</param>
+        /// <returns>true when different.</returns>
+        public static bool operator !=(FrustaBakeJobId a, FrustaBakeJobId b) => !a.Equals(b);
+
+        /// <summary>"{index1, world0, generation}".</summary>
+        /// <returns>The text.</returns>
+        public override readonly string ToString() => $"{{{Index1}, {World0}, {Generation}}}";
+    }
+
     /// <summary>World handle. Opaque; pass by value; zero means null.</summary>
     [StructLayout(LayoutKind.Sequential)]
     public partial struct FrustaWorldId : IEquatable<FrustaWorldId>

@@ -260,6 +260,50 @@ namespace Frusta.Binding
         internal static extern FrustaResult frusta_create_sphere_tree_from_file(byte* path, FrustaTreeId* outTree);
 
         /// <summary>
+        /// Create a sphere tree from the bytes of a .frtree file in memory (size bytes at data,
+        /// 0..the largest valid tree: an engine's asset, with no temporary file), checked as
+        /// frusta_create_sphere_tree_from_file checks a file. The bytes may go once this
+        /// returns. Thread: any.
+        /// </summary>
+        [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern FrustaResult frusta_create_sphere_tree_from_memory(void* data, long size, FrustaTreeId* outTree);
+
+        /// <summary>
+        /// Start baking a tree as frusta_create_sphere_tree_from_mesh does, on a thread of the
+        /// job's own, so that an editor can show its progress and cancel it. The def is checked
+        /// now (its errors come from here); the mesh is copied, so its arrays may go at once,
+        /// and checked by the bake (its errors come from frusta_finish_bake_job). Every started
+        /// job must be finished with frusta_finish_bake_job, which frees it. Thread: any.
+        /// </summary>
+        [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern FrustaResult frusta_start_bake(float* vertices, int vertexCount, int* indices, int indexCount, FrustaBakeDef* def, FrustaBakeJobId* outJob);
+
+        /// <summary>
+        /// How far a job has come: *out_fraction in 0..1, never decreasing, and *out_done 1
+        /// once it has ended (baked, failed or cancelled; finishing it then does not wait).
+        /// Thread: any.
+        /// </summary>
+        [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern FrustaResult frusta_bake_job_progress(FrustaBakeJobId job, double* outFraction, int* outDone);
+
+        /// <summary>
+        /// Ask a job to stop: it ends soon after (within a few thousand of the baker's queries)
+        /// and finishing it gives FRUSTA_ERROR_CANCELLED, even if it had ended already (its
+        /// tree is dropped). Thread: any.
+        /// </summary>
+        [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern FrustaResult frusta_cancel_bake_job(FrustaBakeJobId job);
+
+        /// <summary>
+        /// Wait for a job to end, free it (its id turns stale) and give what it made: its tree
+        /// in *out_tree, or the bake's error (as frusta_create_sphere_tree_from_mesh reports
+        /// it), or FRUSTA_ERROR_CANCELLED. out_tree may not be null: a job is freed either way.
+        /// Thread: any; one thread per job.
+        /// </summary>
+        [DllImport(Lib.Name, CallingConvention = CallingConvention.Cdecl, ExactSpelling = true)]
+        internal static extern FrustaResult frusta_finish_bake_job(FrustaBakeJobId job, FrustaTreeId* outTree);
+
+        /// <summary>
         /// Destroy a tree; its id becomes stale. Worlds whose objects use it keep it alive.
         /// Thread: any, but not while another thread uses the same tree.
         /// </summary>

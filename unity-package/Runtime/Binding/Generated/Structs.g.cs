@@ -836,6 +836,7 @@ namespace Frusta.Binding
             new Mirror("frusta_bake_def", typeof(FrustaBakeDef), sizeof(FrustaBakeDef)),
             new Mirror("frusta_sphere_tree_info", typeof(FrustaSphereTreeInfo), sizeof(FrustaSphereTreeInfo)),
             new Mirror("frusta_tree_hit", typeof(FrustaTreeHit), sizeof(FrustaTreeHit)),
+            new Mirror("frusta_bake_job_id", typeof(FrustaBakeJobId), sizeof(FrustaBakeJobId)),
             new Mirror("frusta_world_id", typeof(FrustaWorldId), sizeof(FrustaWorldId)),
             new Mirror("frusta_object_id", typeof(FrustaObjectId), sizeof(FrustaObjectId)),
             new Mirror("frusta_world_def", typeof(FrustaWorldDef), sizeof(FrustaWorldDef)),
