@@ -30,6 +30,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/error.h"
+#include "core/file_read.h"
 #include "spheretree/tree_limits.h"
 
 namespace frusta {
@@ -275,26 +276,9 @@ frusta_result save_tree_file(const std::string& path, const TreeFile& file) {
 }
 
 frusta_result load_tree_file(const std::string& path, TreeFile* out) {
-  // a regular file only: opening a FIFO waits for a writer for ever, and a directory
-  // or a device has no size to read (a directory once read as 2^63 - 1 bytes)
-  std::error_code error;
-  const std::filesystem::file_status status = std::filesystem::status(path, error);
-  if (error)
-    return fail(FRUSTA_ERROR_IO, "%s: cannot open it for reading (%s)", path.c_str(),
-                error.message().c_str());
-  if (!std::filesystem::is_regular_file(status))
-    return fail(FRUSTA_ERROR_IO, "%s: not a regular file (a directory, a device or a pipe)",
-                path.c_str());
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) return fail(FRUSTA_ERROR_IO, "%s: cannot open it for reading", path.c_str());
-  const std::streamoff size = in.tellg();
-  if (size < 0 || static_cast<size_t>(size) > kMaxTreeFileBytes)
-    return fail(FRUSTA_ERROR_CORRUPT_FILE, "%s: %lld bytes, larger than any valid tree (%zu)",
-                path.c_str(), static_cast<long long>(size), kMaxTreeFileBytes);
-  std::vector<uint8_t> bytes(static_cast<size_t>(size));
-  in.seekg(0);
-  in.read(reinterpret_cast<char*>(bytes.data()), size);
-  if (!in) return fail(FRUSTA_ERROR_IO, "%s: read failed", path.c_str());
+  std::vector<uint8_t> bytes;
+  if (frusta_result r = read_file(path, kMaxTreeFileBytes, "any valid tree takes", &bytes))
+    return r;
   return decode_tree_file(bytes.data(), bytes.size(), path.c_str(), out);
 }
 

@@ -12,6 +12,7 @@
 #include <system_error>
 
 #include "core/error.h"
+#include "core/file_read.h"
 #include "core/validate.h"
 
 namespace frusta {
@@ -303,8 +304,7 @@ frusta_result decode_joint_recording(const char* text, size_t size, const char* 
       joint = quantised(read);
       if (const frusta_result r = check_tracked_joint(joint, "joints", j)) {
         // the check's message, less the name of its code
-        std::string why = last_error_message();
-        why.erase(0, std::strlen(result_name(r)) + 2);
+        const std::string why = last_error_detail(r);
         return lines.error(FRUSTA_ERROR_CORRUPT_FILE, "%s: %s", joint_name(recording.layout, j),
                            why.c_str());
       }
@@ -320,28 +320,12 @@ frusta_result decode_joint_recording(const char* text, size_t size, const char* 
 }
 
 frusta_result load_joint_recording(const std::string& path, JointRecording* out) {
-  // a regular file only: opening a FIFO waits for a writer for ever, and a device or a
-  // directory has no size to bound the read by
-  std::error_code error;
-  const std::filesystem::file_status status = std::filesystem::status(path, error);
-  if (error)
-    return fail(FRUSTA_ERROR_IO, "%s: cannot open it for reading (%s)", path.c_str(),
-                error.message().c_str());
-  if (!std::filesystem::is_regular_file(status))
-    return fail(FRUSTA_ERROR_IO, "%s: not a regular file (a directory, a device or a pipe)",
-                path.c_str());
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) return fail(FRUSTA_ERROR_IO, "%s: cannot open it for reading", path.c_str());
-  const std::streamoff size = in.tellg();
-  if (size < 0 || size > kMaxJointRecordingBytes)
-    return fail(FRUSTA_ERROR_CORRUPT_FILE, "%s: %lld bytes, more than a recording may hold (%lld)",
-                path.c_str(), static_cast<long long>(size),
-                static_cast<long long>(kMaxJointRecordingBytes));
-  std::string text(static_cast<size_t>(size), '\0');
-  in.seekg(0);
-  in.read(text.data(), size);
-  if (!in) return fail(FRUSTA_ERROR_IO, "%s: read failed", path.c_str());
-  return decode_joint_recording(text.data(), text.size(), path.c_str(), out);
+  std::vector<uint8_t> text;
+  if (frusta_result r = read_file(path, static_cast<size_t>(kMaxJointRecordingBytes),
+                                  "a recording may hold", &text))
+    return r;
+  return decode_joint_recording(reinterpret_cast<const char*>(text.data()), text.size(),
+                                path.c_str(), out);
 }
 
 std::string encode_joint_recording_header(int32_t layout, int32_t side) {
