@@ -49,32 +49,18 @@ namespace Frusta.Editor
 
         void StartBake()
         {
-            if (!mesh.isReadable)
-            {
-                Show(MessageType.Error, $"{mesh.name} is not readable: tick Read/Write in its model's import settings.");
-                return;
-            }
-            string path = EditorUtility.SaveFilePanelInProject("Save sphere tree", mesh.name, "frtree", "Where the baked tree goes");
-            if (string.IsNullOrEmpty(path)) return;
             FrustaBakeDef def = FrustaBakeDef.Default;
             def.TargetError = targetErrorMm / 1000.0;
             def.MaxLeaves = maxLeaves;
             def.Branching = branching;
-            baking = true;
             baked = null;
-            Show(MessageType.Info, $"Baking {mesh.name} (Unity's progress bar shows how far, and cancels)...");
-            FrustaEditorBake.Start(mesh, Vector3.one * unitsToMetres, def, path, asset =>
+            baking = FrustaEditorBake.Start(mesh, Vector3.one * unitsToMetres, def, mesh.name, (asset, type, text) =>
             {
                 baking = false;
                 baked = asset;
-                if (asset == null) Show(MessageType.Error, $"Baked {path}, but it did not import.");
-                else if (asset.TargetMet) Show(MessageType.Info, $"Baked {path}: both errors within {targetErrorMm} mm.");
-                else Show(MessageType.Warning, $"Baked {path}, but the leaf budget ran out before the target: raise it or the target error.");
-            }, why =>
-            {
-                baking = false;
-                Show(MessageType.Error, why);
+                Show(type, text);
             });
+            if (baking) Show(MessageType.Info, $"Baking {mesh.name} (Unity's progress bar shows how far, and cancels)...");
         }
 
         void Show(MessageType type, string text)

@@ -63,32 +63,17 @@ namespace Frusta.Editor
 
         void Bake(FrustaSphereTreeObject o, Mesh mesh)
         {
-            if (!mesh.isReadable)
-            {
-                Show(MessageType.Error, $"{mesh.name} is not readable: tick Read/Write in its model's import settings.");
-                return;
-            }
-            string path = EditorUtility.SaveFilePanelInProject("Save sphere tree", o.name, "frtree", "Where the baked tree goes");
-            if (string.IsNullOrEmpty(path)) return;
-            baking = true;
-            Show(MessageType.Info, $"Baking {mesh.name} into {path}...");
-            FrustaEditorBake.Start(mesh, o.transform.lossyScale, FrustaBakeDef.Default, path, asset =>
+            baking = FrustaEditorBake.Start(mesh, o.transform.lossyScale, FrustaBakeDef.Default, o.name, (asset, type, text) =>
             {
                 baking = false;
-                if (o == null) return;
+                Show(type, text);
+                if (o == null || asset == null) return;
                 // through the serialized object: undoable, and the scene is marked changed
                 var so = new SerializedObject(o);
                 so.FindProperty("tree").objectReferenceValue = asset;
                 so.ApplyModifiedProperties();
-                Show(asset != null && asset.TargetMet ? MessageType.Info : MessageType.Warning,
-                     asset == null ? $"Baked {path}, but it did not import."
-                     : asset.TargetMet ? $"Baked {path}: both errors within the target."
-                     : $"Baked {path}, but the leaf budget ran out before the target.");
-            }, why =>
-            {
-                baking = false;
-                Show(MessageType.Error, why);
             });
+            if (baking) Show(MessageType.Info, $"Baking {mesh.name} (Unity's progress bar shows how far, and cancels)...");
         }
 
         void Show(MessageType type, string text)

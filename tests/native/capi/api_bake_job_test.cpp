@@ -13,15 +13,12 @@
 #include <vector>
 
 #include "frusta/frusta.h"
+#include "scenes/cube_mesh.h"
 
 namespace {
 
-// a 2 cm cube, counter-clockwise seen from outside
-const float kVertices[] = {-0.01f, -0.01f, -0.01f, 0.01f, -0.01f, -0.01f, 0.01f, 0.01f, -0.01f,
-                           -0.01f, 0.01f, -0.01f, -0.01f, -0.01f, 0.01f, 0.01f, -0.01f, 0.01f,
-                           0.01f, 0.01f, 0.01f, -0.01f, 0.01f, 0.01f};
-const int32_t kIndices[] = {0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4,
-                            1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7};
+using frusta_test::kCubeIndices;
+using frusta_test::kCubeVertices;
 
 frusta_bake_def cube_def() {
   frusta_bake_def def = frusta_default_bake_def();
@@ -64,10 +61,10 @@ double wait_for(frusta_bake_job_id job) {
 TEST(capiBakeJob, AJobBakesTheTreeABlockingBakeBakesAndReportsProgressToTheEnd) {
   const frusta_bake_def def = cube_def();
   frusta_tree_id blocking{};
-  ASSERT_EQ(frusta_create_sphere_tree_from_mesh(kVertices, 8, kIndices, 36, &def, &blocking), FRUSTA_OK)
+  ASSERT_EQ(frusta_create_sphere_tree_from_mesh(kCubeVertices, 8, kCubeIndices, 36, &def, &blocking), FRUSTA_OK)
       << frusta_last_error();
   frusta_bake_job_id job{};
-  ASSERT_EQ(frusta_start_bake(kVertices, 8, kIndices, 36, &def, &job), FRUSTA_OK) << frusta_last_error();
+  ASSERT_EQ(frusta_start_bake(kCubeVertices, 8, kCubeIndices, 36, &def, &job), FRUSTA_OK) << frusta_last_error();
   EXPECT_EQ(wait_for(job), 1.0);
   frusta_tree_id tree{};
   ASSERT_EQ(frusta_finish_bake_job(job, &tree), FRUSTA_OK) << frusta_last_error();
@@ -87,7 +84,7 @@ TEST(capiBakeJob, ACancelledJobGivesNoTreeWheneverItWasCancelled) {
   slow.target_error = 1e-4;
   slow.error_samples = 10000000;
   frusta_bake_job_id job{};
-  ASSERT_EQ(frusta_start_bake(kVertices, 8, kIndices, 36, &slow, &job), FRUSTA_OK);
+  ASSERT_EQ(frusta_start_bake(kCubeVertices, 8, kCubeIndices, 36, &slow, &job), FRUSTA_OK);
   ASSERT_EQ(frusta_cancel_bake_job(job), FRUSTA_OK);
   wait_for(job);
   frusta_tree_id tree{};
@@ -95,7 +92,7 @@ TEST(capiBakeJob, ACancelledJobGivesNoTreeWheneverItWasCancelled) {
   EXPECT_EQ(tree.index1, 0) << "no tree";
   // a job cancelled after it ended gives none either
   const frusta_bake_def def = cube_def();
-  ASSERT_EQ(frusta_start_bake(kVertices, 8, kIndices, 36, &def, &job), FRUSTA_OK);
+  ASSERT_EQ(frusta_start_bake(kCubeVertices, 8, kCubeIndices, 36, &def, &job), FRUSTA_OK);
   EXPECT_EQ(wait_for(job), 1.0);
   ASSERT_EQ(frusta_cancel_bake_job(job), FRUSTA_OK);
   EXPECT_EQ(frusta_finish_bake_job(job, &tree), FRUSTA_ERROR_CANCELLED);
@@ -104,8 +101,8 @@ TEST(capiBakeJob, ACancelledJobGivesNoTreeWheneverItWasCancelled) {
 
 TEST(capiBakeJob, TheJobBakesItsOwnCopyOfTheMeshAndReportsTheMeshsErrorsAtTheFinish) {
   const frusta_bake_def def = cube_def();
-  std::vector<float> vertices(std::begin(kVertices), std::end(kVertices));
-  std::vector<int32_t> indices(std::begin(kIndices), std::end(kIndices));
+  std::vector<float> vertices(std::begin(kCubeVertices), std::end(kCubeVertices));
+  std::vector<int32_t> indices(std::begin(kCubeIndices), std::end(kCubeIndices));
   frusta_bake_job_id job{};
   ASSERT_EQ(frusta_start_bake(vertices.data(), 8, indices.data(), 36, &def, &job), FRUSTA_OK);
   // the caller's arrays change and go at once
@@ -116,13 +113,13 @@ TEST(capiBakeJob, TheJobBakesItsOwnCopyOfTheMeshAndReportsTheMeshsErrorsAtTheFin
   indices.shrink_to_fit();
   frusta_tree_id tree{}, blocking{};
   ASSERT_EQ(frusta_finish_bake_job(job, &tree), FRUSTA_OK) << frusta_last_error();
-  ASSERT_EQ(frusta_create_sphere_tree_from_mesh(kVertices, 8, kIndices, 36, &def, &blocking), FRUSTA_OK);
+  ASSERT_EQ(frusta_create_sphere_tree_from_mesh(kCubeVertices, 8, kCubeIndices, 36, &def, &blocking), FRUSTA_OK);
   expect_same_leaves(blocking, tree);
   frusta_destroy_sphere_tree(tree);
   frusta_destroy_sphere_tree(blocking);
 
   const int32_t bad[] = {0, 1, 9};
-  ASSERT_EQ(frusta_start_bake(kVertices, 8, bad, 3, &def, &job), FRUSTA_OK);
+  ASSERT_EQ(frusta_start_bake(kCubeVertices, 8, bad, 3, &def, &job), FRUSTA_OK);
   EXPECT_EQ(frusta_finish_bake_job(job, &tree), FRUSTA_ERROR_OUT_OF_RANGE);
   EXPECT_NE(std::string(frusta_last_error()).find("indices[2] is 9"), std::string::npos) << frusta_last_error();
 }
@@ -131,7 +128,7 @@ TEST(capiBakeJob, JobsRunSideBySide) {
   const frusta_bake_def def = cube_def();
   frusta_bake_job_id jobs[4]{};
   for (frusta_bake_job_id& job : jobs)
-    ASSERT_EQ(frusta_start_bake(kVertices, 8, kIndices, 36, &def, &job), FRUSTA_OK);
+    ASSERT_EQ(frusta_start_bake(kCubeVertices, 8, kCubeIndices, 36, &def, &job), FRUSTA_OK);
   frusta_tree_id first{};
   for (int i = 0; i < 4; ++i) {
     frusta_tree_id tree{};
@@ -148,7 +145,7 @@ TEST(capiBakeJob, JobsRunSideBySide) {
 TEST(capiTreeMemory, AFilesBytesMakeTheTreeTheFileMakes) {
   const frusta_bake_def def = cube_def();
   frusta_tree_id baked{};
-  ASSERT_EQ(frusta_create_sphere_tree_from_mesh(kVertices, 8, kIndices, 36, &def, &baked), FRUSTA_OK);
+  ASSERT_EQ(frusta_create_sphere_tree_from_mesh(kCubeVertices, 8, kCubeIndices, 36, &def, &baked), FRUSTA_OK);
   const char* path = "api_bake_job_test.frtree";
   ASSERT_EQ(frusta_sphere_tree_save(baked, path), FRUSTA_OK);
   std::ifstream in(path, std::ios::binary);

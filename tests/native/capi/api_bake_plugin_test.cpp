@@ -9,20 +9,17 @@
 #include <string>
 
 #include "frusta/frusta.h"
+#include "scenes/cube_mesh.h"
 
 namespace {
 
-// a 2 cm cube, counter-clockwise seen from outside
-const float kVertices[] = {-0.01f, -0.01f, -0.01f, 0.01f, -0.01f, -0.01f, 0.01f, 0.01f, -0.01f,
-                           -0.01f, 0.01f, -0.01f, -0.01f, -0.01f, 0.01f, 0.01f, -0.01f, 0.01f,
-                           0.01f, 0.01f, 0.01f, -0.01f, 0.01f, 0.01f};
-const int32_t kIndices[] = {0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4,
-                            1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7};
+using frusta_test::kCubeIndices;
+using frusta_test::kCubeVertices;
 
 frusta_result bake_cube(frusta_tree_id* tree) {
   frusta_bake_def def = frusta_default_bake_def();
   def.error_samples = 20000;
-  return frusta_create_sphere_tree_from_mesh(kVertices, 8, kIndices, 36, &def, tree);
+  return frusta_create_sphere_tree_from_mesh(kCubeVertices, 8, kCubeIndices, 36, &def, tree);
 }
 
 TEST(capiBakePlugin, BakesThroughTheBakerBesideTheProgram) {
@@ -38,7 +35,7 @@ TEST(capiBakePlugin, BakesThroughTheBakerBesideTheProgram) {
   // the baker's own errors come back with their message
   frusta_bake_def def = frusta_default_bake_def();
   const int32_t bad[] = {0, 1, 9};
-  EXPECT_EQ(frusta_create_sphere_tree_from_mesh(kVertices, 8, bad, 3, &def, &tree),
+  EXPECT_EQ(frusta_create_sphere_tree_from_mesh(kCubeVertices, 8, bad, 3, &def, &tree),
             FRUSTA_ERROR_OUT_OF_RANGE);
   EXPECT_NE(std::string(frusta_last_error()).find("indices[2] is 9"), std::string::npos)
       << frusta_last_error();

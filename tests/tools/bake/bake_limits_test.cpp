@@ -12,17 +12,14 @@
 #include "bake/bake_params.h"
 #include "bake/mesh_queries.h"
 #include "frusta/frusta.h"
+#include "scenes/cube_mesh.h"
 #include "meshes/meshes.h"
 
 namespace frusta {
 namespace {
 
-// a 2 cm cube, counter-clockwise seen from outside
-const float kVertices[] = {-0.01f, -0.01f, -0.01f, 0.01f, -0.01f, -0.01f, 0.01f, 0.01f, -0.01f,
-                           -0.01f, 0.01f, -0.01f, -0.01f, -0.01f, 0.01f, 0.01f, -0.01f, 0.01f,
-                           0.01f, 0.01f, 0.01f, -0.01f, 0.01f, 0.01f};
-const int32_t kIndices[] = {0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4,
-                            1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7};
+using frusta_test::kCubeIndices;
+using frusta_test::kCubeVertices;
 
 // the message names the code once, at its start
 void expect_code_once(frusta_result code) {
@@ -76,7 +73,7 @@ TEST(BakeLimits, TheCAbiRefusesEveryParameterOutsideItsRange) {
     c.edit(&def);
     const frusta_tree_id sentinel{77, 0, 5};
     frusta_tree_id tree = sentinel;
-    EXPECT_EQ(frusta_create_sphere_tree_from_mesh(kVertices, 8, kIndices, 36, &def, &tree), c.code)
+    EXPECT_EQ(frusta_create_sphere_tree_from_mesh(kCubeVertices, 8, kCubeIndices, 36, &def, &tree), c.code)
         << c.field;
     EXPECT_NE(std::string(frusta_last_error()).find(c.field), std::string::npos)
         << frusta_last_error();
@@ -92,7 +89,7 @@ TEST(BakeLimits, TheEdgesOfTheRangesBake) {
     def.error_samples = kMinErrorSamples;
     def.seed = std::numeric_limits<uint64_t>::max();
     frusta_tree_id tree{};
-    ASSERT_EQ(frusta_create_sphere_tree_from_mesh(kVertices, 8, kIndices, 36, &def, &tree),
+    ASSERT_EQ(frusta_create_sphere_tree_from_mesh(kCubeVertices, 8, kCubeIndices, 36, &def, &tree),
               FRUSTA_OK)
         << target << ": " << frusta_last_error();
     frusta_sphere_tree_info info{};
@@ -108,13 +105,13 @@ TEST(BakeLimits, TheEdgesOfTheRangesBake) {
 TEST(BakeLimits, TheBakerLibrarysMessagesSayTheirCodeOnce) {
   frusta_bake_def def = frusta_default_bake_def();
   frusta_tree_id tree{};
-  EXPECT_EQ(frusta_create_sphere_tree_from_mesh(nullptr, 8, kIndices, 36, &def, &tree),
+  EXPECT_EQ(frusta_create_sphere_tree_from_mesh(nullptr, 8, kCubeIndices, 36, &def, &tree),
             FRUSTA_ERROR_NULL_POINTER);
   EXPECT_NE(std::string(frusta_last_error()).find("vertices"), std::string::npos)
       << frusta_last_error();
   expect_code_once(FRUSTA_ERROR_NULL_POINTER);
   const int32_t bad[] = {0, 1, 9};
-  EXPECT_EQ(frusta_create_sphere_tree_from_mesh(kVertices, 8, bad, 3, &def, &tree),
+  EXPECT_EQ(frusta_create_sphere_tree_from_mesh(kCubeVertices, 8, bad, 3, &def, &tree),
             FRUSTA_ERROR_OUT_OF_RANGE);
   EXPECT_NE(std::string(frusta_last_error()).find("indices[2] is 9"), std::string::npos);
   expect_code_once(FRUSTA_ERROR_OUT_OF_RANGE);
