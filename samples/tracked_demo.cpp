@@ -547,13 +547,13 @@ int main(int argc, char** argv) {
     double sum = 0.0;
     size_t n = 0;
     for (size_t i = 0; i < fits.size(); ++i) {
-      const double t = rec.times[i] - 1e-3 * shift_ms;
-      if (t < rec.times.front()) continue;
+      const double when = rec.times[i] - 1e-3 * shift_ms;
+      if (when < rec.times.front()) continue;
       const size_t k = static_cast<size_t>(
-          std::upper_bound(rec.times.begin(), rec.times.end(), t) - rec.times.begin() - 1);
+          std::upper_bound(rec.times.begin(), rec.times.end(), when) - rec.times.begin() - 1);
       const size_t k1 = std::min(k + 1, true_palm.size() - 1);
       const double span = rec.times[k1] - rec.times[k];
-      const double u = span > 0.0 ? (t - rec.times[k]) / span : 0.0;
+      const double u = span > 0.0 ? (when - rec.times[k]) / span : 0.0;
       for (int c = 0; c < 3; ++c) {
         const double truth = true_palm[k].position[c] + u * (true_palm[k1].position[c] - true_palm[k].position[c]);
         const double d = fits[i].palm.position[c] - truth;

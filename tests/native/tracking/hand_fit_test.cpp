@@ -364,7 +364,7 @@ TEST(HandFitFilter, OffIsBitIdenticalToTheUntimedFit) {
   const auto samples = noisy_samples(model, 50);
   for (size_t i = 0; i < samples.size(); ++i) {
     HandFit a, b;
-    timed.fit_at(i / 90.0, samples[i].data(), frame_position, frame_rotation, &a);
+    timed.fit_at(static_cast<double>(i) / 90.0, samples[i].data(), frame_position, frame_rotation, &a);
     untimed.fit(samples[i].data(), frame_position, frame_rotation, &b);
     ASSERT_EQ(std::memcmp(&a.palm_position, &b.palm_position, sizeof a.palm_position), 0) << i;
     ASSERT_EQ(std::memcmp(&a.palm_rotation, &b.palm_rotation, sizeof a.palm_rotation), 0) << i;
