@@ -343,7 +343,9 @@ JitterCarry carry_under_jitter(const std::function<HandState(double)>& closing, 
       EXPECT_EQ(world.set_haptic_at(hand, script(t), static_cast<int64_t>(std::llround(t * 1e9))),
                 FRUSTA_OK);
     }
-    if (n == release) EXPECT_EQ(world.set_object_dynamic(handle, true), FRUSTA_OK);
+    if (n == release) {
+      EXPECT_EQ(world.set_object_dynamic(handle, true), FRUSTA_OK);
+    }
     world.step();
     const WorldSnapshot& snap = world.read();
     result.late_steps += snap.hand(hand)->input_late ? 1 : 0;
@@ -401,7 +403,9 @@ TEST(WorldForces, AGraspUnderHostJitterIsCarriedTheFullDistanceInEveryRun) {
     const JitterCarry m = carry_under_jitter(pinch_at, pinch.steps, pinch.held, pinch.trees[0], marble, seed);
     EXPECT_LT(m.worst_lag, 0.01) << "marble, run " << seed << ": it stayed in the pinch";
     EXPECT_LT(m.end_error, 0.01) << "marble, run " << seed << ": carried the full distance";
-    if (seed > 0) EXPECT_GT(m.late_steps, 100) << "the 20 and 50 ms stalls outran the delay";
+    if (seed > 0) {
+      EXPECT_GT(m.late_steps, 100) << "the 20 and 50 ms stalls outran the delay";
+    }
     const JitterCarry b = carry_under_jitter([&](double) { return palm_up; }, 0, palm_up,
                                              scenes::test_box("lifted_box"), box, seed);
     EXPECT_LT(b.worst_lag, 0.01) << "200 g box, run " << seed;
