@@ -50,6 +50,8 @@ options (a value outside its range is refused with exit code 2):
                        recommended (default 100000)
   --seed N             random seed of the sampling, 0..2^64-1 (default 1): same
                        input, same tree
+  --reproducible       store 0 as the bake's time in the file, so that the same
+                       input and options give the same bytes (the sample objects)
   --json               print one JSON object on stdout instead of the summary
   -q, --quiet          no summary and no progress bar
   -h, --help           this text
@@ -68,7 +70,7 @@ exit codes:
 struct Options {
   std::string input, output;
   frusta::BakeParams params;
-  bool json = false, quiet = false;
+  bool json = false, quiet = false, reproducible = false;
   std::map<frusta::BakeField, std::string> given;  // option and text behind each field
 };
 
@@ -117,6 +119,7 @@ int parse(int argc, char** argv, Options* o) {
       std::exit(kOk);
     }
     if (a == "--json") { o->json = true; continue; }
+    if (a == "--reproducible") { o->reproducible = true; continue; }
     if (a == "-q" || a == "--quiet") { o->quiet = true; continue; }
     if (a.rfind("-", 0) == 0) {
       if (i + 1 >= argc) return usage(a + " needs a value");
@@ -215,6 +218,9 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "frusta-bake: %s: %s\n", o.input.c_str(), frusta::last_error_message());
     return kBakeFailed;
   }
+  // the time is the only part of a bake that differs between runs
+  const double seconds = file.bake.bake_seconds;
+  if (o.reproducible) file.bake.bake_seconds = 0.0;
   if (frusta::save_tree_file(o.output, file) != FRUSTA_OK) {
     std::fprintf(stderr, "frusta-bake: %s\n", frusta::last_error_message());
     return kWriteFailed;
@@ -231,7 +237,7 @@ int main(int argc, char** argv) {
                 "\"uncovered_error_mm\": %.4f, \"protruding_error_mm\": %.4f, "
                 "\"error_samples\": %lld, \"target_met\": %s, \"warnings\": %zu}\n",
                 input.mesh.triangles.size(), file.tree.leaves.size(), file.tree.nodes.size(),
-                file.tree.depth, file.tree.branching, b.bake_seconds, b.target_error * 1e3,
+                file.tree.depth, file.tree.branching, seconds, b.target_error * 1e3,
                 b.uncovered_error * 1e3, b.protruding_error * 1e3,
                 static_cast<long long>(b.error_samples), met ? "true" : "false",
                 input.warnings.size());
@@ -241,7 +247,7 @@ int main(int argc, char** argv) {
                 "  protruding %.3f mm  (leaves above the surface)\n"
                 "  measured on %lld points each; target %.3f mm: %s\n",
                 o.input.c_str(), o.output.c_str(), input.mesh.triangles.size(),
-                file.tree.leaves.size(), file.tree.depth, file.tree.branching, b.bake_seconds,
+                file.tree.leaves.size(), file.tree.depth, file.tree.branching, seconds,
                 b.uncovered_error * 1e3, b.protruding_error * 1e3,
                 static_cast<long long>(b.error_samples), b.target_error * 1e3,
                 met ? "met" : "NOT met (raise --max-leaves or --max-error)");
