@@ -90,6 +90,8 @@ int main(int argc, char** argv) {
       {"bowl", s::make_bowl(0.06, 0.006, 24)},            // concave
       {"mug", s::make_mug(0.04, 0.09, 0.006, 48)},        // a handle through the wall
       {"octahedron", s::make_octahedron(0.05)},           // sharp edges
+      {"table", s::make_box(vec3(0.60, 0.90, 0.03), 1)},  // the Unity sample's table top
+      {"stand", s::make_box(vec3(0.008, 0.008, 0.011814), 1)},  // holds the marble up there
   };
   tinygltf::TinyGLTF writer;
   for (const auto& o : objects) {
