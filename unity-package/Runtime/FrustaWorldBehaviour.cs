@@ -9,7 +9,8 @@ namespace Frusta.Unity
     /// Owns a Frusta <see cref="World"/>. It is created in Awake (before any hand or object of the
     /// scene registers: this component runs early; hands and objects may also come and go later,
     /// while it runs), runs on its own 1 kHz thread while enabled
-    /// (or is stepped from Update when <see cref="runOnOwnThread"/> is off), latches the newest
+    /// (or is stepped from Update when <see cref="runOnOwnThread"/> is off, or by a script when
+    /// <see cref="stepInUpdate"/> is off too), latches the newest
     /// step once per frame for the other components, and is disposed on destroy, on quit and
     /// before an editor domain reload.
     /// </summary>
@@ -22,6 +23,9 @@ namespace Frusta.Unity
         [SerializeField] double rateHz = 1000.0;
         [Tooltip("Run the world on its own thread; off: step it from Update, catching up with the frame time.")]
         [SerializeField] bool runOnOwnThread = true;
+        [Tooltip("With Run On Own Thread off: step the world from Update; off: a script steps it (World.Step) " +
+                 "before this component's Update, which then only latches the newest step.")]
+        [SerializeField] bool stepInUpdate = true;
         [Tooltip("Object slots.")]
         [SerializeField] int maxObjects = 64;
         [Tooltip("Hand slots (1..64): hands at once, a user's two, another user's, rigs spawned at run time.")]
@@ -33,6 +37,26 @@ namespace Frusta.Unity
         FrustaWorldState state;
         double pendingSteps;
         bool started;
+
+        /// <summary>Steps per second (Hz). Set before the component wakes (add it to an inactive
+        /// GameObject, set this, then activate it); later changes do not reach the world.</summary>
+        public double RateHz { get => rateHz; set => rateHz = value; }
+
+        /// <summary>Run the world on its own thread (else see <see cref="StepInUpdate"/>). Set before
+        /// the component wakes.</summary>
+        public bool RunOnOwnThread { get => runOnOwnThread; set => runOnOwnThread = value; }
+
+        /// <summary>Without its own thread: true, Update steps the world by the frame time; false, a
+        /// script steps it (<see cref="Frusta.Binding.World.Step()"/>, before this component's Update:
+        /// give it an earlier execution order) and Update only latches. Set before the component
+        /// starts.</summary>
+        public bool StepInUpdate { get => stepInUpdate; set => stepInUpdate = value; }
+
+        /// <summary>Gravity on dynamic objects, m/s², Unity frame. Set before the component wakes.</summary>
+        public Vector3 Gravity { get => gravity; set => gravity = value; }
+
+        /// <summary>Object slots. Set before the component wakes.</summary>
+        public int MaxObjects { get => maxObjects; set => maxObjects = value; }
 
         /// <summary>The world; null before Awake and after destruction.</summary>
         public World World => world;
@@ -78,7 +102,7 @@ namespace Frusta.Unity
         void Update()
         {
             if (world == null || !started) return;
-            if (!runOnOwnThread)
+            if (!runOnOwnThread && stepInUpdate)
             {
                 pendingSteps += Time.deltaTime * rateHz;
                 int steps = Math.Min((int)pendingSteps, (int)(0.1 * rateHz)); // at most 100 ms per frame
