@@ -18,9 +18,11 @@ Usage: tools/unity_grasp_scene.py [--check] OBJECTS_DIR
             anchors are unique, every script GUID it or an importer names is a .meta's of the
             package). ctest runs it as samples.unity_grasp_scene_is_current.
 
-The scene holds only what is safe to write without a Unity editor (Unity 2022.3's
-serialization of GameObject, Transform, Camera, Light and MonoBehaviour, as an editor saves
-them); it was never opened in a Unity editor here."""
+The scene holds only what is safe to write without a Unity editor: GameObject, Camera, Light,
+AudioListener, MonoBehaviour and the settings documents as a Unity 2022.2 project saves them,
+Transform (serializedVersion 2) with the root order in a SceneRoots document, as 2022.2 and
+later write it (unity-package/README.md names the scenes read for this). It was never opened
+in a Unity editor here."""
 import hashlib
 import math
 import os
