@@ -4,9 +4,12 @@
 // that answers it read back there. A simulated glove alternately curls its index into
 // a box and lets go; each change's latency is the time from the write of the first
 // sample carrying it to the first command showing it (brake on, brake off). The path
-// measured is the whole one: the device thread's read and decode, the world's 1 kHz
-// step (which plays inputs one period late, to smooth a glove's jitter), the device
-// feed, the output guard and the next command at the output rate.
+// measured is the whole one: the pty to the device thread, its read and decode, the wait
+// for the world's next 1 kHz tick, the step (which solves a glove's newest sample), the
+// device feed and its wake-up, the output guard, the command's write and the pty back.
+// Beside it, the parts: the device thread's own figures (sample set -> step published
+// -> command written) and a pty's one-way time, measured alone (a ping-pong). The load
+// average before and after says how busy the machine was.
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -15,6 +18,10 @@
 #include <memory>
 #include <string>
 #include <thread>
+#include <fcntl.h>
+#include <poll.h>
+#include <stdlib.h>
+#include <termios.h>
 #include <unistd.h>
 #include <vector>
 
@@ -116,9 +123,10 @@ GloveSide binary_side() {
 }
 
 struct Latency {
-  StepHistogram press, release;
+  StepHistogram press, release, all;
   int64_t missed = 0;
   double output_rate_hz = 0.0;
+  DeviceLinkStatus link;  // its own figures of the same run
 };
 
 Latency measure(const GloveSide& side, int transitions) {
@@ -172,7 +180,9 @@ Latency measure(const GloveSide& side, int transitions) {
         side.commands(&bytes, &brakes);
         for (int brake : brakes) {
           if (chunk.time_ns >= since && (brake == 1) == pressing) {
-            (pressing ? result.press : result.release).record(static_cast<double>(chunk.time_ns - since) / 1e3);
+            const double us = static_cast<double>(chunk.time_ns - since) / 1e3;
+            (pressing ? result.press : result.release).record(us);
+            result.all.record(us);
             seen = true;
             break;
           }
@@ -183,10 +193,73 @@ Latency measure(const GloveSide& side, int transitions) {
     if (!seen) ++result.missed;
     std::this_thread::sleep_for(std::chrono::milliseconds(20));  // rest in the new state
   }
-  result.output_rate_hz = link.status().output_rate_hz;
+  result.link = link.status();
+  result.output_rate_hz = result.link.output_rate_hz;
   link.close();
   world.stop();
   return result;
+}
+
+// One way over a pseudo-terminal, alone: bytes written on one side to their read on the
+// other by a thread blocked in ppoll, as the glove and the device thread are. Both
+// directions; microseconds.
+StepHistogram pty_one_way(int round_trips) {
+  StepHistogram one_way;
+  const int master = posix_openpt(O_RDWR | O_NOCTTY);
+  if (master < 0 || grantpt(master) != 0 || unlockpt(master) != 0) return one_way;
+  termios tty{};
+  tcgetattr(master, &tty);
+  cfmakeraw(&tty);
+  tcsetattr(master, TCSANOW, &tty);
+  const int slave = open(ptsname(master), O_RDWR | O_NOCTTY);
+  tcgetattr(slave, &tty);
+  cfmakeraw(&tty);
+  tcsetattr(slave, TCSANOW, &tty);
+  std::atomic<bool> stop{false};
+  std::atomic<int64_t> sent_ns{0};
+  // the far side answers each byte; the time it read it is one way out
+  std::thread echo([&] {
+    char b[64];
+    while (!stop) {
+      pollfd p{slave, POLLIN, 0};
+      const timespec wait{0, 50'000'000};
+      if (ppoll(&p, 1, &wait, nullptr) <= 0) continue;
+      const ssize_t n = read(slave, b, sizeof b);
+      if (n <= 0) continue;
+      one_way.record(static_cast<double>(now_ns() - sent_ns.load()) / 1e3);
+      sent_ns = now_ns();
+      if (write(slave, b, static_cast<size_t>(n)) != n) break;
+    }
+  });
+  char b[64] = {'x'};
+  for (int i = 0; i < round_trips; ++i) {
+    sent_ns = now_ns();
+    if (write(master, b, 1) != 1) break;
+    pollfd p{master, POLLIN, 0};
+    const timespec wait{0, 100'000'000};
+    if (ppoll(&p, 1, &wait, nullptr) <= 0) continue;
+    if (read(master, b, sizeof b) <= 0) break;
+    one_way.record(static_cast<double>(now_ns() - sent_ns.load()) / 1e3);
+    std::this_thread::sleep_for(std::chrono::microseconds(500));  // a glove's pace
+  }
+  stop = true;
+  echo.join();
+  close(slave);
+  close(master);
+  return one_way;
+}
+
+std::string load_average() {
+  double load[3] = {0, 0, 0};
+  if (getloadavg(load, 3) < 3) return "unknown";
+  char text[64];
+  std::snprintf(text, sizeof text, "%.2f %.2f %.2f", load[0], load[1], load[2]);
+  return text;
+}
+
+void print_histogram(const char* name, const StepHistogram& h, const char* end) {
+  std::printf("\"%s_p50\": %.0f, \"%s_p99\": %.0f, \"%s_max\": %.0f%s", name, h.percentile(0.5),
+              name, h.percentile(0.99), name, h.max(), end);
 }
 
 }  // namespace
@@ -195,17 +268,24 @@ Latency measure(const GloveSide& side, int transitions) {
 int main() {
   using namespace frusta;
   constexpr int kTransitions = 100;
-  std::printf("{\n\"suite\": \"devices\",\n\"transitions\": %d,\n\"latency_us\": [\n", kTransitions);
+  std::printf("{\n\"suite\": \"devices\",\n\"transitions\": %d,\n\"load_before\": \"%s\",\n"
+              "\"latency_us\": [\n",
+              kTransitions, load_average().c_str());
   const GloveSide sides[] = {opengloves_side(), binary_side()};
   for (size_t i = 0; i < std::size(sides); ++i) {
     const Latency l = measure(sides[i], kTransitions);
-    std::printf("  {\"protocol\": \"%s\", \"glove_rate_hz\": %.0f, \"output_rate_hz\": %.0f, "
-                "\"press_p50\": %.0f, \"press_p99\": %.0f, \"release_p50\": %.0f, "
-                "\"release_p99\": %.0f, \"missed\": %lld}%s\n",
-                sides[i].name, sides[i].glove_rate_hz, l.output_rate_hz, l.press.percentile(0.5),
-                l.press.percentile(0.99), l.release.percentile(0.5), l.release.percentile(0.99),
-                static_cast<long long>(l.missed), i + 1 < std::size(sides) ? "," : "");
+    std::printf("  {\"protocol\": \"%s\", \"glove_rate_hz\": %.0f, \"output_rate_hz\": %.0f, ",
+                sides[i].name, sides[i].glove_rate_hz, l.output_rate_hz);
+    print_histogram("glove_to_command", l.all, ", ");
+    print_histogram("press", l.press, ", ");
+    print_histogram("release", l.release, ",\n   ");
+    print_histogram("link_sample_to_step", l.link.sample_to_step, ", ");
+    print_histogram("link_step_to_command", l.link.step_to_command, ", ");
+    print_histogram("link_sample_to_command", l.link.sample_to_command, ", ");
+    std::printf("\"missed\": %lld}%s\n", static_cast<long long>(l.missed), i + 1 < std::size(sides) ? "," : "");
   }
-  std::printf("]\n}\n");
+  std::printf("],\n\"pty_one_way_us\": {");
+  print_histogram("one_way", pty_one_way(2000), "");
+  std::printf("},\n\"load_after\": \"%s\"\n}\n", load_average().c_str());
   return 0;
 }

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/base.h"
+#include "core/wakeup.h"
 
 namespace frusta {
 
@@ -25,8 +26,17 @@ class ByteStream {
   virtual void close() = 0;
   virtual bool is_open() const = 0;
   // Waits at most timeout_us for bytes, then returns what came (*received may be 0).
+  // A stream that wakes_on() a wakeup also returns early, with nothing, once it is
+  // signalled (and drains it).
   virtual IoStatus read(uint8_t* buffer, size_t capacity, int64_t timeout_us,
                         size_t* received) = 0;
+  // From now on read() returns when `wakeup` is signalled too, if this stream can wait
+  // on it and on the glove together (a serial port on POSIX): true then. Others wait
+  // their timeouts out, and the caller keeps a schedule of its own. Before the reads.
+  virtual bool wakes_on(const Wakeup* wakeup) {
+    (void)wakeup;
+    return false;
+  }
   // Writes all of data or reports the device gone. A device that cannot keep up
   // drops the command (counted by the caller), never blocks the thread.
   virtual IoStatus write(const uint8_t* data, size_t size, bool* dropped) = 0;

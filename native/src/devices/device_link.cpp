@@ -16,6 +16,9 @@ namespace {
 constexpr int64_t kNsPerSecond = 1000000000;
 constexpr int64_t kHeartbeatNs = 500000000;  // handshake retries and keep-alives
 constexpr int64_t kIdleSliceNs = 10000000;   // how often a disconnected thread looks up
+// woken by the step: a world that has not published this many output periods after the
+// last command gets the command anyway (the watchdog's, once the engine is stalled)
+constexpr int64_t kStaleCommandPeriods = 2;
 int64_t to_ns(double seconds) { return static_cast<int64_t>(seconds * 1e9); }
 
 }  // namespace
@@ -111,6 +114,11 @@ void DeviceLink::apply_capabilities(const DeviceCapabilities& announced) {
 void DeviceLink::run() {
   const FineTimerResolution fine_sleeps;
   uint8_t buffer[512];
+  // a stream that wakes on the step's publish sends each command as soon as the step is
+  // out (the sample it solved is then at most a period and a step old); others keep a
+  // schedule of their own, up to a period behind the step
+  const bool woken = stream_->wakes_on(&port_.feed_published());
+  const int64_t world_period_ns = static_cast<int64_t>(1e9 / port_.rate_hz());
   int64_t next_output = steady_ns();
   int64_t next_reconnect = 0;
   while (!stop_.load(std::memory_order_acquire)) {
@@ -130,8 +138,13 @@ void DeviceLink::run() {
           std::clamp<int64_t>(next_reconnect - now_ns_, 0, kIdleSliceNs)));
       continue;
     }
+    // due and woken: wait for the step (a stalled world's command goes out regardless,
+    // kStaleCommandPeriods after the last, so the watchdog can zero it)
+    int64_t until = next_output;
+    if (woken && now_ns_ >= next_output) until = last_command_ns_ + kStaleCommandPeriods * output_period_ns_;
+    until = std::min(until, next_heartbeat_ns_);
     size_t received = 0;
-    const int64_t wait_us = std::max<int64_t>(0, next_output - now_ns_) / 1000;
+    const int64_t wait_us = std::max<int64_t>(0, until - now_ns_) / 1000;
     if (stream_->read(buffer, sizeof buffer, wait_us, &received) == IoStatus::kDisconnected) {
       on_disconnected(steady_ns());
       next_reconnect = now_ns_ + to_ns(def_.reconnect_interval_s);
@@ -148,12 +161,23 @@ void DeviceLink::run() {
       write_bytes(false);
       next_heartbeat_ns_ = now_ns_ + kHeartbeatNs;
     }
-    if (now_ns_ >= next_output && stream_->is_open()) {
-      send_command(now_ns_);
+    if (now_ns_ < next_output || !stream_->is_open()) continue;
+    const DeviceFeed& feed = port_.read_feed();
+    const bool fresh = feed.step != sent_step_;
+    if (woken && !fresh && now_ns_ < last_command_ns_ + kStaleCommandPeriods * output_period_ns_)
+      continue;
+    send_command(now_ns_, feed);
+    if (woken && !fresh) {
+      next_output = now_ns_;  // the step is late: its command goes the moment it is out
+    } else if (woken) {
+      // paced by the steps: the first publish an output period on, whenever it comes
+      // (half a world period early is still the one due)
+      next_output = now_ns_ + std::max(output_period_ns_ / 2, output_period_ns_ - world_period_ns / 2);
+    } else {
       next_output += output_period_ns_;
       if (next_output <= now_ns_) next_output = now_ns_ + output_period_ns_;  // fell behind
-      publish_status(now_ns_);
     }
+    publish_status(now_ns_);
   }
   // leaving: the glove's last command releases it
   if (stream_->is_open()) {
@@ -202,8 +226,7 @@ WatchdogReason DeviceLink::check_watchdog(int64_t now, const DeviceFeed& feed) c
   return WatchdogReason::kNone;
 }
 
-void DeviceLink::send_command(int64_t now) {
-  const DeviceFeed& feed = port_.read_feed();
+void DeviceLink::send_command(int64_t now, const DeviceFeed& feed) {
   const WatchdogReason reason = check_watchdog(now, feed);
   if (reason != WatchdogReason::kNone) {
     if (working_.watchdog == WatchdogReason::kNone) ++working_.watchdog_trips;
@@ -214,9 +237,19 @@ void DeviceLink::send_command(int64_t now) {
   }
   working_.watchdog = reason;
   last_command_ns_ = now;
+  sent_step_ = feed.step;
   out_.clear();
   protocol_->encode(guard_.last(), working_.capabilities, &out_);
   write_bytes(true);
+  // the first command to answer a sample of this glove's (the input number restarts
+  // with each hand the port is opened to: a lower one is a new hand's)
+  if (feed.input_sequence != answered_input_ && feed.input_set_ns > 0 && !out_.empty()) {
+    answered_input_ = feed.input_sequence;
+    const int64_t written = steady_ns();
+    working_.sample_to_step.record(static_cast<double>(feed.published_ns - feed.input_set_ns) / 1e3);
+    working_.step_to_command.record(static_cast<double>(written - feed.published_ns) / 1e3);
+    working_.sample_to_command.record(static_cast<double>(written - feed.input_set_ns) / 1e3);
+  }
 }
 
 void DeviceLink::write_bytes(bool command) {

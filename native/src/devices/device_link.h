@@ -26,6 +26,7 @@
 #include "devices/output_guard.h"
 #include "devices/recording.h"
 #include "port/hand_port.h"
+#include "runtime/step_histogram.h"
 
 namespace frusta {
 
@@ -88,6 +89,10 @@ struct DeviceLinkStatus {
   DeviceCapabilities capabilities;  // as announced, under the def's limits
   DeviceCommand last_command;
   bool recording_failed = false;
+  // the first command to answer each new sample, microseconds: from when this thread
+  // set the sample to the publish of the step that solved it, from that publish to the
+  // command's write, and the whole way (the glove's line either side is not in these)
+  StepHistogram sample_to_step, step_to_command, sample_to_command;
 };
 
 class DeviceLink final : private ProtocolSink {
@@ -127,7 +132,7 @@ class DeviceLink final : private ProtocolSink {
   void run();
   void on_connected(int64_t now);
   void on_disconnected(int64_t now);
-  void send_command(int64_t now);
+  void send_command(int64_t now, const DeviceFeed& feed);
   WatchdogReason check_watchdog(int64_t now, const DeviceFeed& feed) const;
   void apply_capabilities(const DeviceCapabilities& announced);
   void publish_status(int64_t now);
@@ -157,6 +162,8 @@ class DeviceLink final : private ProtocolSink {
   RateMeter input_rate_;
   int64_t samples_taken_ = 0;  // since (re)connect: the number of a sample without one
   int64_t last_command_ns_ = 0;
+  uint64_t sent_step_ = 0;        // the step whose feed the last command carried
+  uint64_t answered_input_ = 0;   // the newest input a command has answered (its sequence)
   int64_t next_heartbeat_ns_ = 0;
   int64_t record_start_ns_ = 0;
   int64_t output_period_ns_ = 1000000;

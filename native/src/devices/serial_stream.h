@@ -34,6 +34,9 @@ class SerialStream final : public ByteStream {
   IoStatus read(uint8_t* buffer, size_t capacity, int64_t timeout_us, size_t* received) override;
   IoStatus write(const uint8_t* data, size_t size, bool* dropped) override;
   const std::string& name() const override { return name_; }
+#ifndef _WIN32
+  bool wakes_on(const Wakeup* wakeup) override;
+#endif
 
  private:
   std::string path_;
@@ -44,6 +47,7 @@ class SerialStream final : public ByteStream {
   uint32_t read_timeout_ms_ = 0;  // what the port's COMMTIMEOUTS hold now
 #else
   int fd_ = -1;
+  const Wakeup* wakeup_ = nullptr;  // open, or null
 #endif
 };
 

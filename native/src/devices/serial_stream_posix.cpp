@@ -83,12 +83,15 @@ IoStatus SerialStream::read(uint8_t* buffer, size_t capacity, int64_t timeout_us
                             size_t* received) {
   *received = 0;
   if (fd_ < 0) return IoStatus::kDisconnected;
-  pollfd p{fd_, POLLIN, 0};
+  // the glove's bytes, or the world's step (the command that answers them is due)
+  pollfd p[2] = {{fd_, POLLIN, 0}, {wakeup_ ? wakeup_->handle() : -1, POLLIN, 0}};
   const timespec timeout{static_cast<time_t>(timeout_us / 1000000),
                          static_cast<long>(timeout_us % 1000000) * 1000};
-  const int ready = ppoll(&p, 1, &timeout, nullptr);
+  const int ready = ppoll(p, wakeup_ ? 2 : 1, &timeout, nullptr);
   if (ready < 0) return errno == EINTR ? IoStatus::kOk : IoStatus::kDisconnected;
   if (ready == 0) return IoStatus::kOk;
+  if (wakeup_ && p[1].revents != 0) wakeup_->drain();
+  if (p[0].revents == 0) return IoStatus::kOk;
   const ssize_t n = ::read(fd_, buffer, capacity);
   if (n > 0) {
     *received = static_cast<size_t>(n);
@@ -98,6 +101,11 @@ IoStatus SerialStream::read(uint8_t* buffer, size_t capacity, int64_t timeout_us
   // poll said readable and nothing came (a hang-up), or the port failed (EIO when the
   // glove is unplugged or the other end of a pty closes)
   return IoStatus::kDisconnected;
+}
+
+bool SerialStream::wakes_on(const Wakeup* wakeup) {
+  wakeup_ = wakeup && wakeup->is_open() ? wakeup : nullptr;
+  return wakeup_ != nullptr;
 }
 
 IoStatus SerialStream::write(const uint8_t* data, size_t size, bool* dropped) {

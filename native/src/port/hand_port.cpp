@@ -73,6 +73,7 @@ frusta_result HandPort::write_input(const HandState& state, int64_t time_ns, Dri
   slot.set_ns = steady_ns();
   slot.time_ns = timed ? time_ns : slot.set_ns;
   slot.timed = timed;
+  slot.live = !timed && from == Driver::kDevice;
   slot.sequence = sequence_.fetch_add(1, std::memory_order_relaxed) + 1;
   // every sample in order for the step's playback; when a burst fills the queue, the
   // newest still reaches the step through the triple buffer
@@ -82,6 +83,9 @@ frusta_result HandPort::write_input(const HandState& state, int64_t time_ns, Dri
 }
 
 frusta_result HandPort::claim_for_device() {
+  // before device_ says a device drives the hand (the step signals only then); without
+  // one the device keeps its own schedule
+  feed_published_.open();
   bool expected = false;
   if (!device_.compare_exchange_strong(expected, true, std::memory_order_acq_rel))
     return fail(FRUSTA_ERROR_WRONG_STATE, "hand %d already has a glove: close it first", hand_);
@@ -93,6 +97,9 @@ void HandPort::release_device() { device_.store(false, std::memory_order_release
 void HandPort::publish_feed(const DeviceFeed& feed) {
   feed_.write_slot() = feed;
   feed_.publish();
+  // one non-blocking write: the device thread answers this step now, not on its own
+  // schedule up to a period later
+  if (device_driven()) feed_published_.signal();
 }
 
 }  // namespace frusta

@@ -21,6 +21,7 @@
 #include "core/base.h"
 #include "core/spsc_queue.h"
 #include "core/triple_buffer.h"
+#include "core/wakeup.h"
 #include "forces/device_outputs.h"
 #include "hand/kinematics.h"
 
@@ -36,6 +37,10 @@ struct TimedInput {
   int64_t time_ns = 0;    // the sample's time: the driver's (timed) or set_ns
   uint64_t sequence = 0;  // 1, 2, ... per hand in the port: the order they were set
   bool timed = false;     // the driver stamped it (set_input_at)
+  // a glove's unstamped sample: the step solves the newest as it is, with no jitter
+  // buffer's delay (a glove's thread reads its samples as they come, about one a
+  // period, and every period of delay is felt in the hand)
+  bool live = false;
 };
 
 // What a device thread reads at its own rate: its hand's device outputs and whether
@@ -47,6 +52,10 @@ struct DeviceFeed {
   bool solved = false;        // false until the hand's first valid haptic input
   DeviceOutputs device;       // clamped to the world's device limits; world frame
   glm::dquat haptic_palm_rotation{1.0, 0.0, 0.0, 0.0};  // of the input the step used
+  // the newest input the step had: its number (TimedInput::sequence, 0: none) and when
+  // it was set (steady clock, ns), so a device can tell which sample a command answers
+  uint64_t input_sequence = 0;
+  int64_t input_set_ns = 0;
 };
 
 class HandPort {
@@ -91,6 +100,9 @@ class HandPort {
   frusta_result claim_for_device();
   void release_device();
   bool device_driven() const { return device_.load(std::memory_order_acquire); }
+  // Signalled by publish_feed while a device drives the hand (opened by its first
+  // claim): its thread sends the command that answers a step as soon as it is out.
+  const Wakeup& feed_published() const { return feed_published_; }
 
   // The stepping thread: whether an input came since the last take, and the newest.
   bool input_fresh() const { return input_.fresh(); }
@@ -116,6 +128,7 @@ class HandPort {
   std::atomic<uint64_t> sequence_{0};
   std::atomic<int64_t> last_time_ns_{INT64_MIN};
   TripleBuffer<DeviceFeed> feed_;
+  Wakeup feed_published_;  // opened before device_ is first set; never closed
   std::atomic<bool> device_{false};
   // a driver counts itself in, then checks the generation; the host closes, then checks
   // the count (both sequentially consistent): either the driver sees the port closed,

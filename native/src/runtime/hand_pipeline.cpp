@@ -40,8 +40,10 @@ bool HandPipeline::step(const HandStepContext& context, SceneObjects& scene, Han
   if (playback_.empty()) return true;  // nothing to solve before the first input
   HandState haptic;
   bool late = false;
-  if (!context.paced && !playback_.newest().timed) {
-    // the host steps and sets untimed inputs: it paces both, and the newest is for now
+  if ((!context.paced || playback_.newest().live) && !playback_.newest().timed) {
+    // the host steps and sets untimed inputs: it paces both, and the newest is for now;
+    // a glove's untimed samples come about one a period from its own thread, and every
+    // period of delay is felt: the newest, as it is
     playback_.keep_newest();
     haptic = playback_.newest().state;
   } else {
@@ -135,6 +137,10 @@ void HandPipeline::publish_feed(const HandSnapshot& snap, uint64_t step, int64_t
   feed.solved = snap.solved;
   feed.device = snap.device;
   feed.haptic_palm_rotation = accepted_.palm_rotation;
+  if (!playback_.empty()) {
+    feed.input_sequence = playback_.newest().sequence;
+    feed.input_set_ns = playback_.newest().set_ns;
+  }
   port_.publish_feed(feed);
 }
 
