@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <functional>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <thread>
 #include <fcntl.h>
@@ -122,7 +123,51 @@ GloveSide binary_side() {
   return side;
 }
 
+// The engine's side of the line, stamped: when each read brought bytes and each write
+// went out, so a transition's time splits into the line in, the engine, the line out.
+class StampedStream final : public ByteStream {
+ public:
+  explicit StampedStream(std::unique_ptr<ByteStream> inner) : inner_(std::move(inner)) {}
+  frusta_result open() override { return inner_->open(); }
+  void close() override { inner_->close(); }
+  bool is_open() const override { return inner_->is_open(); }
+  IoStatus read(uint8_t* buffer, size_t capacity, int64_t timeout_us, size_t* received) override {
+    const IoStatus status = inner_->read(buffer, capacity, timeout_us, received);
+    if (*received > 0) stamp(reads_);
+    return status;
+  }
+  IoStatus write(const uint8_t* data, size_t size, bool* dropped) override {
+    const IoStatus status = inner_->write(data, size, dropped);
+    stamp(writes_);
+    return status;
+  }
+  const std::string& name() const override { return inner_->name(); }
+  bool wakes_on(const Wakeup* wakeup) override { return inner_->wakes_on(wakeup); }
+  // the first read at or after t, and the last write at or before t (0: none)
+  int64_t read_after(int64_t t) const { return find(reads_, t, true); }
+  int64_t write_before(int64_t t) const { return find(writes_, t, false); }
+
+ private:
+  void stamp(std::vector<int64_t>& into) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    into.push_back(now_ns());
+  }
+  int64_t find(const std::vector<int64_t>& in, int64_t t, bool after) const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (after) {
+      const auto it = std::lower_bound(in.begin(), in.end(), t);
+      return it == in.end() ? 0 : *it;
+    }
+    const auto it = std::upper_bound(in.begin(), in.end(), t);
+    return it == in.begin() ? 0 : *(it - 1);
+  }
+  std::unique_ptr<ByteStream> inner_;
+  mutable std::mutex mutex_;
+  std::vector<int64_t> reads_, writes_;
+};
+
 struct Latency {
+  StepHistogram line_in, engine, line_out;  // a transition's parts
   StepHistogram press, release, all;
   int64_t missed = 0;
   double output_rate_hz = 0.0;
@@ -153,7 +198,9 @@ Latency measure(const GloveSide& side, int transitions) {
   DeviceLinkDef def;
   def.host_timeout_s = 0.0;  // this host does not read snapshots
   def.rates.max_force_rate = 1e9;  // the first command after contact brakes at once
-  DeviceLink link(world.port(hand.slot), def, std::make_unique<SerialStream>(path, side.baud), side.protocol());
+  auto stamped = std::make_unique<StampedStream>(std::make_unique<SerialStream>(path, side.baud));
+  const StampedStream& line = *stamped;
+  DeviceLink link(world.port(hand.slot), def, std::move(stamped), side.protocol());
   link.open();
 
   Latency result;
@@ -183,6 +230,12 @@ Latency measure(const GloveSide& side, int transitions) {
             const double us = static_cast<double>(chunk.time_ns - since) / 1e3;
             (pressing ? result.press : result.release).record(us);
             result.all.record(us);
+            const int64_t read = line.read_after(since), wrote = line.write_before(chunk.time_ns);
+            if (read > 0 && wrote >= read) {
+              result.line_in.record(static_cast<double>(read - since) / 1e3);
+              result.engine.record(static_cast<double>(wrote - read) / 1e3);
+              result.line_out.record(static_cast<double>(chunk.time_ns - wrote) / 1e3);
+            }
             seen = true;
             break;
           }
@@ -279,6 +332,9 @@ int main() {
     print_histogram("glove_to_command", l.all, ", ");
     print_histogram("press", l.press, ", ");
     print_histogram("release", l.release, ",\n   ");
+    print_histogram("line_in", l.line_in, ", ");
+    print_histogram("engine", l.engine, ", ");
+    print_histogram("line_out", l.line_out, ",\n   ");
     print_histogram("link_sample_to_step", l.link.sample_to_step, ", ");
     print_histogram("link_step_to_command", l.link.step_to_command, ", ");
     print_histogram("link_sample_to_command", l.link.sample_to_command, ", ");
