@@ -8,7 +8,8 @@
  * glove's input every millisecond, applies the recording's events (the host lets go of
  * the marble once it is pinched, drops it once it has fallen), and reads the newest
  * step. At the end it prints a table: achieved rate, step time, wake-up jitter,
- * overruns, the deepest penetration, peak and mean force per finger, how far the
+ * overruns, the deepest penetration, peak and mean force per finger, force continuity
+ * (the largest step-to-step change of a finger's force, p99 and max), how far the
  * marble was carried. --trace writes one CSV row per host tick.
  *
  * Each sample is stamped with its time in the recording (frusta_world_set_haptic_at,
@@ -78,6 +79,12 @@ typedef struct tally {
   double marble_start_z, marble_top_z, marble_end_z;
   long ticks;
   long late_steps; /* latched steps whose input was extrapolated or held */
+  /* force continuity: the largest change of a finger's force from one step to the next
+     (latched steps one apart only), per latched step; newtons */
+  double* jumps;
+  long jump_count, jump_capacity;
+  double last_force[FRUSTA_FINGER_COUNT];
+  unsigned long long last_step;
 } tally;
 
 static const char* const kFingerNames[FRUSTA_FINGER_COUNT] = {"thumb", "index", "middle",
@@ -224,6 +231,16 @@ static int observe(frusta_world_id world, frusta_hand_id hand_id, const recordin
       ++t->touching[f];
     }
   }
+  if (t->last_step != 0 && state.step == t->last_step + 1 && t->jump_count < t->jump_capacity) {
+    double jump = 0.0;
+    for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
+      const double d = fabs(hand.finger_resistance[f] - t->last_force[f]);
+      if (d > jump) jump = d;
+    }
+    t->jumps[t->jump_count++] = jump;
+  }
+  for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) t->last_force[f] = hand.finger_resistance[f];
+  t->last_step = state.step;
   const double palm = norm3(hand.palm_force);
   if (palm > t->peak_palm) t->peak_palm = palm;
   t->late_steps += hand.input_late ? 1 : 0;
@@ -320,7 +337,9 @@ int main(int argc, char** argv) {
   const long tick_ns = (long)(1e9 / def.rate_hz);
   const long tick_count = (long)(duration * def.rate_hz) + 1;
   double* lateness = malloc(sizeof(double) * (size_t)tick_count);
-  int ok = lateness != NULL;
+  t.jumps = malloc(sizeof(double) * (size_t)tick_count);
+  t.jump_capacity = tick_count;
+  int ok = lateness != NULL && t.jumps != NULL;
   if (ok && !host_steps) ok = check(frusta_world_start(world), "frusta_world_start");
   struct timespec deadline;
   clock_gettime(CLOCK_MONOTONIC, &deadline);
@@ -374,6 +393,12 @@ int main(int argc, char** argv) {
            t.touching[f] ? t.sum[f] / (double)t.touching[f] : 0.0,
            (double)t.touching[f] * 1e-9 * (double)tick_ns);
   printf("  %-8s %10.3f\n", "palm", t.peak_palm);
+  if (t.jump_count > 0) {
+    qsort(t.jumps, (size_t)t.jump_count, sizeof(double), by_value);
+    printf("  force continuity: a finger's force changed by p99 %.3f N, max %.3f N from one step "
+           "to the next (%ld steps)\n",
+           t.jumps[t.jump_count * 99 / 100], t.jumps[t.jump_count - 1], t.jump_count);
+  }
   const double lifted = t.marble_top_z - t.marble_start_z;
   printf("\n  marble: carried %.1f cm up in the pinch, then fell to %.1f cm below where it lay\n",
          1e2 * lifted, 1e2 * (t.marble_start_z - t.marble_end_z));
@@ -383,6 +408,7 @@ int main(int argc, char** argv) {
   frusta_destroy_world(world);
   free(rec.frames);
   free(lateness);
+  free(t.jumps);
   if (!check_mode) return 0;
   int failed = 0;
   if (t.deepest > 1e-4) failed = fprintf(stderr, "check: the hand sank %.3f mm\n", 1e3 * t.deepest);
