@@ -10,16 +10,20 @@
 //    every path and depth: the force's change per step (max, p99) against the contact
 //    stiffness x the haptic move, its turn, the graphic fingertip's move per step against
 //    twice the haptic one, the step time and the penetration;
+//  - the step budget: every scenario and the 10^4-leaf grasp under the deadline the world
+//    gives a hand, then tighter ones: time, steps over it, and the forces' continuity;
 //  - with FRUSTA_WITH_MUJOCO, the same grasp in MuJoCo, side by side.
 // Prints one JSON document. Step times exclude the penetration checks. Arguments name
-// the sections to run (scenarios free edges forms leaves knobs threads; default all); flags such
+// the sections to run (scenarios free edges budget forms leaves knobs threads; default all); flags such
 // as tools/bench's --benchmark_format are ignored.
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -29,7 +33,9 @@
 #include "geometry/exact_distance.h"
 #include "hand/anthropometry.h"
 #include "hand/hand_model.h"
+#include "runtime/world_def.h"
 #include "bench_sections.h"
+#include "forces/contact_forces.h"
 #include "forces/force_params.h"
 #include "scenes/baked_objects.h"
 #include "scenes/edge_slides.h"
@@ -178,6 +184,78 @@ double sleep_round_trip_us() {
   return us;
 }
 
+// A scenario stepped as the world's own thread steps one hand: each step has the step
+// budget's deadline (kStepBudgetShare of a `period_us` period, or `budget_us` where
+// given), and the forces follow the solver's lag. Time against error: the step time
+// (solver and forces) and the steps over the budget, beside how often the budget bound,
+// how far the lag limit held a push back, how far a body's push changed beyond the
+// continuity bound where it bound, and the penetration.
+// This thread's CPU time, microseconds: what a step costs, without the time the OS gave
+// other work meanwhile (a shared machine preempts a bench for milliseconds).
+double thread_cpu_us() {
+  timespec now{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return 1e6 * static_cast<double>(now.tv_sec) + 1e-3 * static_cast<double>(now.tv_nsec);
+}
+
+struct Budgeted {
+  std::vector<double> step_us, cpu_us;  // wall and CPU time of each step
+  int32_t over = 0, lagged = 0;
+  double held_back_max_n = 0.0, continuity_excess_max_n = -INFINITY, penetration = 0.0;
+};
+
+Budgeted measure_budgeted(const scenes::HandScenario& s, double budget_us, int32_t hold, int32_t check_every) {
+  const HandModel model = make_hand_model(default_hand_def());
+  HandSolver solver(model, SolverParams{});
+  ContactForces forces;
+  Budgeted b;
+  const int32_t count = static_cast<int32_t>(s.objects.size());
+  std::array<vec3, kBodyCount> before{};
+  HandPose haptic_before;
+  const auto budget = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double, std::micro>(budget_us));
+  for (int32_t t = 0; t < s.steps + hold; ++t) {
+    StepStats stats;
+    ContactForceStats force_stats;
+    const double cpu_start = thread_cpu_us();
+    const Clock::time_point start = Clock::now();
+    if (solver.step(t < s.steps ? s.haptic(t) : s.held, s.objects.data(), count, &stats, start + budget) != FRUSTA_OK)
+      continue;
+    forces.update(solver.graphic_pose(), solver.target_pose(), solver.contacts().data(),
+                  static_cast<int32_t>(solver.contacts().size()), s.objects.data(), count, nullptr, &force_stats,
+                  stats.lagging);
+    const double us = micros(Clock::now() - start), cpu = thread_cpu_us() - cpu_start;
+    b.step_us.push_back(us);
+    b.cpu_us.push_back(cpu);
+    b.over += cpu > budget_us ? 1 : 0;
+    b.lagged += stats.lagging ? 1 : 0;
+    b.held_back_max_n = std::max(b.held_back_max_n, force_stats.held_back_by);
+    std::array<vec3, kBodyCount> push{};
+    for (const ContactForce& f : forces.forces()) push[static_cast<size_t>(f.body)] += f.normal_force;
+    if (t > 0 && (stats.lagging || force_stats.held_back > 0))
+      for (int body = 0; body < kBodyCount; ++body)
+        b.continuity_excess_max_n = std::max(
+            b.continuity_excess_max_n,
+            std::fabs(glm::length(push[static_cast<size_t>(body)]) - glm::length(before[static_cast<size_t>(body)])) -
+                kDefaultContactStiffness * scenes::body_move(model, haptic_before, solver.target_pose(), body));
+    before = push;
+    haptic_before = solver.target_pose();
+    if (t % check_every == 0)
+      b.penetration = std::max(b.penetration, scenes::deepest_penetration(model, solver.graphic_pose(), s.objects));
+  }
+  return b;
+}
+
+void print_budgeted(const Budgeted& b, double budget_us) {
+  std::printf("\"budget_us\": %.0f, \"steps\": %zu, \"cpu_p50_us\": %.2f, \"cpu_p99_us\": %.2f, "
+              "\"cpu_max_us\": %.2f, \"wall_max_us\": %.2f, \"steps_over_budget_cpu\": %d, "
+              "\"steps_budget_bound\": %d, \"push_held_back_max_n\": %.4f, "
+              "\"push_change_over_stiffness_x_move_max_n\": %s, \"max_penetration_mm\": %.6f",
+              budget_us, b.cpu_us.size(), percentile(b.cpu_us, 0.5), percentile(b.cpu_us, 0.99),
+              percentile(b.cpu_us, 1.0), percentile(b.step_us, 1.0), b.over, b.lagged, b.held_back_max_n,
+              std::isfinite(b.continuity_excess_max_n) ? std::to_string(b.continuity_excess_max_n).c_str() : "null",
+              b.penetration * 1e3);
+}
+
 }  // namespace
 }  // namespace frusta
 
@@ -268,6 +346,27 @@ int main(int argc, char** argv) {
                     i + 1 == shapes.size() && v + 1 == std::size(speeds) ? "" : ",");
       }
     std::printf("],\n");
+  }
+
+  // the step budget (issue 20, Build 3): every scenario and the 10^4-leaf deep grasp with
+  // the deadline the world's own thread gives one hand at 1 kHz; then budgets that bind
+  if (wanted("budget")) {
+    std::printf("\"budget\": [\n");
+    const double period_budget_us = 1e3 * kStepBudgetShare;
+    std::vector<std::pair<std::string, scenes::HandScenario>> runs;
+    for (const std::string& name : names) runs.emplace_back(name, scenes::make_hand_scenario(name));
+    runs.emplace_back("ball_grasp_10k_leaves", scenes::ball_grasp(scenes::ball_shell(10000, 0.04)));
+    for (const auto& [name, s] : runs) {
+      std::printf("  {\"name\": \"%s\", ", name.c_str());
+      print_budgeted(measure_budgeted(s, period_budget_us, 200, 5), period_budget_us);
+      std::printf("},\n");
+    }
+    for (double tight_us : {100.0, 30.0}) {
+      std::printf("  {\"name\": \"ball_grasp_10k_leaves\", ");
+      print_budgeted(measure_budgeted(runs.back().second, tight_us, 200, 5), tight_us);
+      std::printf("},\n");
+    }
+    std::printf("  {\"end\": true}\n],\n");
   }
 
   // the two constraint forms on the same scripts

@@ -213,11 +213,12 @@ std::vector<EdgeSlideStep> run_edge_slide(const HandScenario& s, const SolverPar
   for (int32_t t = 0; t < s.steps; ++t) {
     const HandState haptic = s.haptic(t);
     const Clock::time_point start = timed ? Clock::now() : Clock::time_point();
-    if (solver.step(haptic, s.objects.data(), object_count, nullptr) != FRUSTA_OK) break;
+    StepStats stats;
+    if (solver.step(haptic, s.objects.data(), object_count, &stats) != FRUSTA_OK) break;
     const std::vector<SolverContact>& contacts = solver.contacts();
     forces.update(solver.graphic_pose(), solver.target_pose(), contacts.data(),
                   static_cast<int32_t>(contacts.size()), s.objects.data(), object_count, nullptr,
-                  nullptr);
+                  nullptr, stats.lagging);
     EdgeSlideStep step;
     if (timed) step.step_us = std::chrono::duration<double, std::micro>(Clock::now() - start).count();
     vec3 force(0.0), friction(0.0);
@@ -228,6 +229,7 @@ std::vector<EdgeSlideStep> run_edge_slide(const HandScenario& s, const SolverPar
     const vec3 haptic_tip = solver.target_pose().fingers[kEdgeSlideFinger].joint[3];
     const vec3 graphic_tip = solver.graphic_pose().fingers[kEdgeSlideFinger].joint[3];
     step.force = glm::length(force);
+    step.lagging = stats.lagging;
     if (t > 0) {
       step.haptic_move = glm::length(haptic_tip - haptic_before);
       step.graphic_move = glm::length(graphic_tip - graphic_before);

@@ -45,6 +45,7 @@ struct EdgeSlideStep {
   double friction_change = 0.0;      // newtons, |f - f_last| of the summed friction
   double penetration = 0.0;          // metres, into the exact leaf set (when checked)
   double step_us = 0.0;              // solver step plus forces (when timed)
+  bool lagging = false;              // the sub-step cap stopped the hand short
 };
 
 // Steps a HandSolver (`params`) and ContactForces (the default material) through the

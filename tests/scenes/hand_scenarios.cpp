@@ -296,4 +296,28 @@ vec3 index_press_box_centre(const HandModel& model, double half, double gap) {
   return tip + toward * (model.fingers[kIndex].radius[3] + gap + half);
 }
 
+namespace {
+
+// The angle (radians) of the turn from rotation a to rotation b.
+double turn(const glm::dmat3& a, const glm::dmat3& b) {
+  const glm::dmat3 r = glm::transpose(a) * b;
+  return std::acos(std::clamp(0.5 * (r[0][0] + r[1][1] + r[2][2] - 1.0), -1.0, 1.0));
+}
+
+}  // namespace
+
+double body_move(const HandModel& model, const HandPose& a, const HandPose& b, int body) {
+  if (body == kPalmBody) {
+    double most = 0.0;
+    for (int k = 0; k < static_cast<int>(model.palm_spheres.size()); ++k)
+      most = std::max(most, glm::length(palm_sphere(model, a, k).center - palm_sphere(model, b, k).center) +
+                                turn(a.palm_rotation, b.palm_rotation) * model.palm_spheres[static_cast<size_t>(k)].radius);
+    return most;
+  }
+  const int f = body / FRUSTA_SEGMENTS_PER_FINGER, s = body % FRUSTA_SEGMENTS_PER_FINGER;
+  const FingerPose &fa = a.fingers[f], &fb = b.fingers[f];
+  const double ends = std::max(glm::length(fa.joint[s] - fb.joint[s]), glm::length(fa.joint[s + 1] - fb.joint[s + 1]));
+  return ends + turn(fa.segment_rotation[s], fb.segment_rotation[s]) * model.fingers[f].radius[s];
+}
+
 }  // namespace frusta::scenes

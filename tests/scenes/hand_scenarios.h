@@ -66,4 +66,9 @@ vec3 index_press_box_centre(const HandModel& model, double half, double gap);
 double deepest_penetration(const HandModel& model, const HandPose& pose,
                            const std::vector<SolverObject>& objects);
 
+// The most any point of hand body `body` (finger * 3 + segment, or kPalmBody) moves from
+// pose a to pose b, metres (a bound: its joints' or palm spheres' moves plus the turn
+// times the radius). The per-body continuity bound's move.
+double body_move(const HandModel& model, const HandPose& a, const HandPose& b, int body);
+
 }  // namespace frusta::scenes

@@ -844,7 +844,11 @@ typedef struct frusta_world_hand {
   int32_t pressing;             /* contacts whose haptic point lies inside */
   int32_t slipping;             /* pressing contacts sliding (friction at mu |F|) */
   int32_t substeps;             /* solver sub-steps this step */
-  int32_t lagging;              /* 1: the sub-step cap stopped the hand short */
+  int32_t lagging;              /* 1: the step budget (max_substeps, or the own
+                                   thread's share of the period) stopped the hand short:
+                                   each contact patch's push then changes at most its
+                                   stiffness times its move plus 0.02 N a step, until it
+                                   is its own again */
   int32_t infeasible;           /* 1: a contact QP had no point meeting every row it
                                    was given (nearly parallel or contradictory
                                    constraints); the hand stayed at its last safe

@@ -41,6 +41,8 @@ struct ContactForceStats {
   int32_t pressing = 0;  // contacts sharing a patch's push: its gap points out of the object
   int32_t slipping = 0;
   int32_t dropped = 0;  // contacts beyond the table's capacity, left out this step
+  int32_t held_back = 0;  // patches whose push the lag limit held back (or faded out)
+  double held_back_by = 0.0;  // newtons: the most a push was held back from its own
 };
 
 class ContactForces {
@@ -56,12 +58,21 @@ class ContactForces {
   // target_pose()). `objects` are the solver's objects, `materials` one per object (null:
   // ForceMaterial{} for all). The first `capacity` contacts in the solver's order are
   // kept, the rest counted in stats->dropped. stats may be null.
+  //
+  // `lagging`: the solver's step ended short of its target (StepStats::lagging). Its
+  // graphic hand is then behind the haptic one and a push worked out from it carries the
+  // lag (a contact that the catching-up hand makes or breaks in one step would jump by
+  // stiffness x lag), so from such a step until every push is its own again each patch's
+  // push changes a step by at most its stiffness times the move of its haptic point plus
+  // kLagForceSlack, and a patch that vanished fades out at that rate, applied at its last
+  // haptic point (an entry of forces() past the contacts', leaf -1).
+  static constexpr double kLagForceSlack = 0.02;  // newtons a step
   // Preconditions, which the solver's and the world's output meet and debug builds
   // assert: counts >= 0; both poses pass check_hand_pose, the contacts
   // check_solver_contacts, the objects and materials check_force_objects.
   void update(const HandPose& graphic, const HandPose& haptic, const SolverContact* contacts,
               int32_t contact_count, const SolverObject* objects, int32_t object_count,
-              const ForceMaterial* materials, ContactForceStats* stats);
+              const ForceMaterial* materials, ContactForceStats* stats, bool lagging = false);
 
   // Forget every patch (e.g. after a teleport): the next step starts every friction at 0.
   void reset();
@@ -70,7 +81,8 @@ class ContactForces {
   // unless set.
   frusta_result set_time_step(double seconds);
 
-  // The last step's forces, in the order of its contacts.
+  // The last step's forces, in the order of its contacts, then the fading pushes of
+  // patches that vanished while the lag limit held (see update).
   const std::vector<ContactForce>& forces() const { return forces_; }
 
  private:
@@ -79,10 +91,24 @@ class ContactForces {
     PatchKey key;
     FrictionAnchor friction;
     double depth;  // PatchPress::depth, metres
+    vec3 push;     // the normal force it gave, newtons
+    vec3 point;    // its mean haptic point, metres
+    vec3 normal;   // unit
   };
+
+  // A push `want` for a patch that gave `had`, its haptic point moved from `from` (on the
+  // last step's haptic hand) to `to`, within the lag limit; `held` is set when it binds.
+  vec3 limit(const ForceMaterial& material, const vec3& had, const vec3& want, const vec3& from,
+             const vec3& to, ContactForceStats& stats) const;
+  // A patch of the last step absent from this one: while the lag limit holds, its push
+  // fades out at the limit's rate as an entry of forces_ and it is kept for the next step.
+  void fade(const Patch& gone, const HandPose& haptic, const ForceMaterial& material,
+            int32_t object_count, ContactForceStats& stats);
 
   int32_t capacity_;
   double time_step_ = 1e-3;
+  bool limiting_ = false;  // the lag limit holds (update)
+  HandPose last_haptic_;   // the last step's haptic hand: how far a patch's point moved
   ContactPatches grouping_;          // this step's contacts by patch
   std::vector<Patch> patches_;       // sorted by key: the last step's
   std::vector<Patch> next_patches_;  // being built; swapped in at the end of a step

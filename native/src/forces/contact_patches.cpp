@@ -10,24 +10,21 @@
 
 namespace frusta {
 
-namespace {
-
-// P_ih: the graphic point in its body's frame on the graphic hand, placed by the same
-// body's frame on the haptic hand (frames are rotations: the transpose inverts them)
-vec3 same_point_on_haptic(const HandPose& graphic, const HandPose& haptic, int32_t body,
-                          const vec3& graphic_point) {
+// The point in its body's frame on `from`, placed by the same body's frame on `to`
+// (frames are rotations: the transpose inverts them)
+vec3 same_material_point(const HandPose& from, const HandPose& to, int32_t body, const vec3& point) {
   if (body == kPalmBody) {
-    const vec3 local =
-        glm::transpose(graphic.palm_rotation) * (graphic_point - graphic.palm_position);
-    return haptic.palm_position + haptic.palm_rotation * local;
+    const vec3 local = glm::transpose(from.palm_rotation) * (point - from.palm_position);
+    return to.palm_position + to.palm_rotation * local;
   }
   const int finger = body / FRUSTA_SEGMENTS_PER_FINGER;
   const int segment = body % FRUSTA_SEGMENTS_PER_FINGER;
-  const FingerPose& g = graphic.fingers[finger];
-  const vec3 local =
-      glm::transpose(g.segment_rotation[segment]) * (graphic_point - g.joint[segment]);
-  return segment_point(haptic, finger, segment, local);
+  const FingerPose& g = from.fingers[finger];
+  const vec3 local = glm::transpose(g.segment_rotation[segment]) * (point - g.joint[segment]);
+  return segment_point(to, finger, segment, local);
 }
+
+namespace {
 
 // How near a contact is: 1 touching (or a hair inside), 0 at `fade` and beyond,
 // straight in between.
@@ -69,7 +66,7 @@ void ContactPatches::group(const HandPose& graphic, const HandPose& haptic,
     const SolverContact& c = contacts[order_[k]];
     PatchContact& p = contacts_[k];
     p.index = order_[k];
-    p.haptic_point = same_point_on_haptic(graphic, haptic, c.body, c.hand_point);
+    p.haptic_point = same_material_point(graphic, haptic, c.body, c.hand_point);  // P_ih
     p.press = pressing(glm::dot(c.hand_point - p.haptic_point, c.normal), 0.5 * contact_distance_);
     p.weight = nearness(c.distance, contact_distance_) * p.press;
   }

@@ -29,6 +29,10 @@ inline bool precedes(const PatchKey& a, const PatchKey& b) {
   return std::tie(a.object, a.body) < std::tie(b.object, b.body);
 }
 
+// The point `point` of hand body `body` (finger * 3 + segment, or kPalmBody) as posed
+// by `from`, where the same material point lies on the hand posed by `to`.
+vec3 same_material_point(const HandPose& from, const HandPose& to, int32_t body, const vec3& point);
+
 // One contact of a patch.
 struct PatchContact {
   int32_t index = 0;       // into the contacts grouped

@@ -85,8 +85,10 @@ bool HandPipeline::step(const HandStepContext& context, SceneObjects& scene, Han
   const int32_t kept = std::min(snap.contact_count, context.max_contacts);
   const HandPose& haptic_pose = solver_.target_pose();
   forces_.update(solver_.graphic_pose(), haptic_pose, contacts.data(), kept, objects,
-                 object_count, materials, &snap.force_stats);
-  compute_device_outputs(haptic_pose, forces_.forces().data(), kept, objects, object_count,
+                 object_count, materials, &snap.force_stats, stats.lagging);
+  // the contacts' forces, and the pushes a lag fades out after them
+  compute_device_outputs(haptic_pose, forces_.forces().data(),
+                         static_cast<int32_t>(forces_.forces().size()), objects, object_count,
                          context.device_limits, &snap.device, reactions_.data());
   snap.force_stats.dropped = snap.contact_count - kept;
   for (int32_t i = 0; i < kept; ++i) {

@@ -12,9 +12,6 @@ namespace frusta {
 
 namespace {
 
-// the share of a period the hands' solves may take on the own thread; the rest is for
-// the forces, the objects and the snapshot
-constexpr double kStepBudget = 0.7;
 // after a stall of the world's own thread, the hands play 1 + 1/kCatchUpDivisor periods
 // of their inputs a step until they are input_delay behind again; beyond kMaxPlayLagNs
 // behind (a world stopped and started again), they jump
@@ -182,7 +179,7 @@ void World::step_once(double dt, bool paced, int64_t tick_ns) {
     // caught in a tangle of contacts lags for a step instead of stalling the thread
     context.deadline =
         paced ? start + std::chrono::duration_cast<HandSolver::Clock::duration>(std::chrono::duration<double>(
-                            kStepBudget * dt * static_cast<double>(h + 1) / static_cast<double>(present)))
+                            kStepBudgetShare * dt * static_cast<double>(h + 1) / static_cast<double>(present)))
               : HandSolver::Clock::time_point::max();
     if (!hand.step(context, scene_objects_, snap)) ++rejected_;
     hand.publish_feed(snap, step_ + 1, host_read_ns);

@@ -40,6 +40,9 @@ struct WorldDef {
 };
 // the largest input_delay and max_extrapolation: a hand's playback holds 256 samples
 constexpr double kMaxInputDelay = 0.1;
+// The step budget: the share of a period the hands' solves may take on the own thread
+// (the rest is for the forces, the objects and the snapshot), split among the hands.
+constexpr double kStepBudgetShare = 0.7;
 
 // An object as the host adds it. Kinematic objects go where the host puts them;
 // dynamic ones the world moves at its rate under the hands' reactions and gravity,

@@ -153,17 +153,31 @@ frusta_result HandSolver::step(const HandState& haptic, const SolverObject* obje
     started_ = true;
   }
   settled_.fill(false);
+  const bool timed = deadline != Clock::time_point::max();
+  Clock::time_point before = timed ? Clock::now() : Clock::time_point();
+  substep_cost_ -= substep_cost_ / 8;  // one slow sub-step (a preemption) fades in a few steps
   for (int32_t sub = 0; sub < params_.max_substeps; ++sub) {
+    // The step's last sub-step slides where it is cut short, as one the continuity
+    // bound cuts does: a straight cut leaves the hand in the air over a convex edge, its
+    // contacts and forces gone until a later step catches up. A sliding sub-step costs
+    // up to two plain ones, so on the clock it is the last when two would not fit.
+    const bool last = sub + 1 == params_.max_substeps ||
+                      (timed && before + 2 * substep_cost_ > deadline);
     bool moved = false;
-    const bool reached = substep(target, objects, object_count, stats, budget, moved);
+    const bool reached = substep(target, objects, object_count, last, stats, budget, moved);
     ++stats.substeps;
+    if (timed) {
+      const Clock::time_point now = Clock::now();
+      substep_cost_ = std::max(substep_cost_, now - before);
+      before = now;
+    }
     if (reached || !moved) break;
-    if (!(budget > kStandstill)) {
-      stats.rate_limited = true;
+    if (last) {  // before the budget: the last sub-step's slide spends all of it
+      stats.lagging = true;
       break;
     }
-    if (sub + 1 == params_.max_substeps || Clock::now() > deadline) {
-      stats.lagging = true;
+    if (!(budget > kStandstill)) {
+      stats.rate_limited = true;
       break;
     }
   }
@@ -210,7 +224,8 @@ bool HandSolver::overlaps(const SolverObject& object) {
 }
 
 bool HandSolver::substep(const HandState& target, const SolverObject* objects,
-                         int32_t object_count, StepStats& stats, double& budget, bool& moved) {
+                         int32_t object_count, bool last, StepStats& stats, double& budget,
+                         bool& moved) {
   const HandState start = graphic_;
   const PalmPlacement palm_from = placement(graphic_);
   const double whole_move = hand_motion(reach_, graphic_, target);
@@ -255,7 +270,7 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
   const double cap = std::min(0.5 * params_.prediction_margin, allowed);
   const PalmPlacement palm_to = placement(target);
   // this sub-step is the step's last whole one: a stage cut short now stays short
-  const bool budget_binds = !recovering && budget < params_.prediction_margin;
+  const bool budget_binds = !recovering && (last || budget < params_.prediction_margin);
   bool slid = false;
 
   // A part with candidates solves towards its full target and its stage stops at the

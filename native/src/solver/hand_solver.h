@@ -69,9 +69,11 @@ class HandSolver {
 
   // One step towards `haptic`, which must pass check_hand_state (its entry point
   // checked it). A hand that starts inside objects with no free placement near returns
-  // an error and stays unplaced. Objects stay put during a step. No sub-step
-  // starts after `deadline` (at least one always runs): a hand caught in a tangle of
-  // contacts then lags (stats->lagging) instead of stalling a real-time thread.
+  // an error and stays unplaced. Objects stay put during a step. The step budget: at
+  // most max_substeps sub-steps, and none started that its recent sub-steps' cost says
+  // would end after `deadline` (at least one always runs): a hand caught in a tangle of
+  // contacts then lags (stats->lagging) instead of stalling a real-time thread, its last
+  // sub-step sliding along what it touches so that it keeps its contacts.
   frusta_result step(const HandState& haptic, const SolverObject* objects, int32_t object_count,
                      StepStats* stats, Clock::time_point deadline = Clock::time_point::max());
 
@@ -95,9 +97,9 @@ class HandSolver {
  private:
   // One sub-step, moving no point further than `budget` (metres, less what it moved);
   // true when every part reached its own target (or stopped against objects) without
-  // hitting a motion cap.
+  // hitting a motion cap. The step's `last` one slides where it is cut short.
   bool substep(const HandState& target, const SolverObject* objects, int32_t object_count,
-               StepStats& stats, double& budget, bool& moved);
+               bool last, StepStats& stats, double& budget, bool& moved);
   // A stage built by make(slide) solved on the graphic hand; where `budget_binds` and the
   // stage was cut short, solved again sliding from where it started (slid is set).
   template <class MakeStage>
@@ -114,6 +116,7 @@ class HandSolver {
   HandState last_target_;      // the last step's target: how far the haptic hand moves
   double unfinished_ = 0.0;    // motion allowed but not made for the deadline, metres
   double recent_move_ = 0.0;   // how far the haptic hand moves a step, lately (follow_decay)
+  Clock::duration substep_cost_{0};  // the longest sub-step of steps with a deadline, fading
   PalmHeading heading_;        // this step's: the graphic palm does not go back against it
   CandidateSet candidates_;
   std::array<bool, FRUSTA_FINGER_COUNT> settled_{};  // per sub-step: reached or stopped

@@ -34,13 +34,15 @@ struct Worst {
   double deepest_force = 0.0;
 };
 
-void expect_continuous_over(const std::string& shape) {
+// `lagged` (if given) counts the steps the budget bound (the solver lagged) over every slide.
+void expect_continuous_over(const std::string& shape, const SolverParams& params = SolverParams{},
+                            int* lagged = nullptr) {
   for (const scenes::EdgePath path : scenes::kEdgePaths)
     for (const double speed : {0.1, 0.5, 1.0})
       for (int mm = 1; mm <= 5; ++mm) {
         const scenes::HandScenario s = scenes::edge_slide(shape, path, speed, mm * 1e-3);
         const std::vector<scenes::EdgeSlideStep> log =
-            scenes::run_edge_slide(s, SolverParams{}, true, false);
+            scenes::run_edge_slide(s, params, true, false);
         ASSERT_EQ(static_cast<int32_t>(log.size()), s.steps) << s.name << ": a solver step failed";
         Worst w;
         bool finite = true;
@@ -59,6 +61,7 @@ void expect_continuous_over(const std::string& shape) {
             w.force_step = static_cast<int32_t>(t);
           }
           w.penetration = std::max(w.penetration, k.penetration);
+          if (lagged && k.lagging) ++*lagged;
           w.deepest_force = std::max(w.deepest_force, k.force);
         }
         EXPECT_TRUE(finite) << s.name;
@@ -82,6 +85,32 @@ TEST(HandSolverEdges, FingertipOverABoxEdgeMovesAndPushesContinuously) {
 
 TEST(HandSolverEdges, FingertipOverAThirtyDegreeWedgeMovesAndPushesContinuously) {
   expect_continuous_over("wedge");
+}
+
+// Issue 20, Build 3: one sub-step a step, a budget that binds on most steps at 1 m/s (the
+// hand falls behind): the same bounds hold.
+SolverParams one_substep() {
+  SolverParams p;
+  p.max_substeps = 1;
+  return p;
+}
+
+TEST(HandSolverEdges, WhereTheBudgetBindsTheHexagonalPrismsEdgesStillPushContinuously) {
+  int lagged = 0;
+  expect_continuous_over("hex_prism", one_substep(), &lagged);
+  EXPECT_GT(lagged, 100) << "the budget is meant to bind";
+}
+
+TEST(HandSolverEdges, WhereTheBudgetBindsTheBoxEdgeStillPushesContinuously) {
+  int lagged = 0;
+  expect_continuous_over("edge_box", one_substep(), &lagged);
+  EXPECT_GT(lagged, 100) << "the budget is meant to bind";
+}
+
+TEST(HandSolverEdges, WhereTheBudgetBindsTheWedgeStillPushesContinuously) {
+  int lagged = 0;
+  expect_continuous_over("wedge", one_substep(), &lagged);
+  EXPECT_GT(lagged, 100) << "the budget is meant to bind";
 }
 
 }  // namespace

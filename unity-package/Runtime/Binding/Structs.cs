@@ -347,7 +347,8 @@ namespace Frusta.Binding
         /// <summary>false until the hand's first valid input.</summary>
         public readonly bool Solved => solved != 0;
 
-        /// <summary>true when the sub-step cap stopped the hand short of its input this step.</summary>
+        /// <summary>true when the step budget (the sub-step cap, or the world thread's share of the period) stopped
+        /// the hand short of its input this step; the pushes then change gradually until they are their own again.</summary>
         public readonly bool Lagging => lagging != 0;
 
         /// <summary>true when a contact QP had no point meeting every row it was given this

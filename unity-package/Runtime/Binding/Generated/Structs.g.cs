@@ -557,7 +557,13 @@ namespace Frusta.Binding
         public int Slipping;
         /// <summary>solver sub-steps this step</summary>
         public int Substeps;
-        /// <summary>1: the sub-step cap stopped the hand short</summary>
+        /// <summary>
+        /// 1: the step budget (max_substeps, or the own
+        /// thread's share of the period) stopped the hand short:
+        /// each contact patch's push then changes at most its
+        /// stiffness times its move plus 0.02 N a step, until it
+        /// is its own again
+        /// </summary>
         internal int lagging;
         /// <summary>
         /// 1: a contact QP had no point meeting every row it
