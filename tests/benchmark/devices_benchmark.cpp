@@ -33,7 +33,7 @@
 #include "devices/serial_stream.h"
 #include "hand/anthropometry.h"
 #include "hand/hand_model.h"
-#include "runtime/step_histogram.h"
+#include "core/step_histogram.h"
 #include "runtime/world.h"
 #include "scenes/binary_glove.h"
 #include "scenes/baked_objects.h"

@@ -26,7 +26,7 @@
 #include "forces/device_outputs.h"
 #include "hand/anthropometry.h"
 #include "hand/hand_model.h"
-#include "runtime/step_histogram.h"
+#include "core/step_histogram.h"
 #include "runtime/world.h"
 #include "bench_sections.h"
 #include "scenes/baked_objects.h"

@@ -28,7 +28,7 @@
 #include "runtime/world.h"
 #include "scenes/hand_scenarios.h"
 #include "scenes/jittery_host.h"
-#include "runtime/step_histogram.h"
+#include "core/step_histogram.h"
 #include "core/triple_buffer.h"
 
 namespace frusta {

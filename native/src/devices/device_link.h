@@ -26,7 +26,7 @@
 #include "devices/output_guard.h"
 #include "devices/recording.h"
 #include "port/hand_port.h"
-#include "runtime/step_histogram.h"
+#include "core/step_histogram.h"
 
 namespace frusta {
 

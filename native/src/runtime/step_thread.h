@@ -11,7 +11,7 @@
 #include <thread>
 
 #include "core/base.h"
-#include "runtime/step_histogram.h"
+#include "core/step_histogram.h"
 
 namespace frusta {
 

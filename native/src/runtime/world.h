@@ -35,7 +35,7 @@
 #include "runtime/host_hands.h"
 #include "runtime/host_objects.h"
 #include "runtime/scene_objects.h"
-#include "runtime/step_histogram.h"
+#include "core/step_histogram.h"
 #include "runtime/step_thread.h"
 #include "runtime/world_def.h"
 #include "runtime/world_snapshot.h"

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "runtime/step_histogram.h"
+#include "core/step_histogram.h"
 
 #include <gtest/gtest.h>
 
