@@ -23,7 +23,6 @@ AudioListener, MonoBehaviour and the settings documents as a Unity 2022.2 projec
 Transform (serializedVersion 2) with the root order in a SceneRoots document, as 2022.2 and
 later write it (unity-package/README.md names the scenes read for this). It was never opened
 in a Unity editor here."""
-import hashlib
 import math
 import os
 import re
@@ -35,12 +34,9 @@ SAMPLE_REL = "Samples~/GraspScene"
 SAMPLE = os.path.join(PACKAGE, SAMPLE_REL)
 RESOURCES_REL = "Resources/FrustaGraspScene"
 RECORDING = os.path.join(ROOT, "samples", "data", "demo_glove.frrec")
-TAIL = "  userData: \n  assetBundleName: \n  assetBundleVariant: \n"
-
-
-def guid_of(rel):
-    """The GUID of a package-relative path, as tests/dotnet/unity_meta.py makes them."""
-    return hashlib.md5(("com.frusta.engine/" + rel).encode()).hexdigest()
+sys.path.insert(0, os.path.join(ROOT, "tests", "dotnet"))
+import unity_meta  # noqa: E402  (the package's own .meta rule: GUIDs and importers)
+from unity_meta import TAIL, guid_of  # noqa: E402
 
 
 def meta_guid(path):
@@ -61,23 +57,17 @@ def trees():
 
 
 def meta(rel, is_dir):
-    head = f"fileFormatVersion: 2\nguid: {guid_of(rel)}\n"
-    if is_dir:
-        return head + "folderAsset: yes\nDefaultImporter:\n  externalObjects: {}\n" + TAIL
+    """unity_meta's .meta, and those of the scene and the trees it does not write."""
     ext = os.path.splitext(rel)[1]
-    if ext == ".cs":
-        return head + ("MonoImporter:\n  externalObjects: {}\n  serializedVersion: 2\n  defaultReferences: []\n"
-                       "  executionOrder: 0\n  icon: {instanceID: 0}\n") + TAIL
-    if ext == ".asmdef":
-        return head + "AssemblyDefinitionImporter:\n  externalObjects: {}\n" + TAIL
-    if ext == ".unity":
+    head = f"fileFormatVersion: 2\nguid: {guid_of(rel)}\n"
+    if ext == ".unity" and not is_dir:
         return head + "DefaultImporter:\n  externalObjects: {}\n" + TAIL
-    if ext == ".frtree":
+    if ext == ".frtree" and not is_dir:
         # the package's FrustaSphereTreeImporter imports it
         importer = meta_guid(os.path.join(PACKAGE, "Editor", "FrustaSphereTreeImporter.cs"))
         return head + ("ScriptedImporter:\n  internalIDToNameTable: []\n  externalObjects: {}\n  serializedVersion: 2\n"
                        + TAIL + f"  script: {{fileID: 11500000, guid: {importer}, type: 3}}\n")
-    return head + "TextScriptImporter:\n  externalObjects: {}\n" + TAIL  # .md, .bytes
+    return unity_meta.meta(rel, is_dir)  # .md, .bytes: text
 
 
 def look_rotation(forward, up=(0.0, 1.0, 0.0)):

@@ -15,9 +15,13 @@ TAIL = "  userData: \n  assetBundleName: \n  assetBundleVariant: \n"
 SKIP = {".so", ".dll", ".dylib", ".bundle", ".meta"}
 
 
+def guid_of(rel):
+    """The GUID of a package-relative path."""
+    return hashlib.md5(("com.frusta.engine/" + rel).encode()).hexdigest()
+
+
 def meta(rel, is_dir):
-    guid = hashlib.md5(("com.frusta.engine/" + rel).encode()).hexdigest()
-    head = f"fileFormatVersion: 2\nguid: {guid}\n"
+    head = f"fileFormatVersion: 2\nguid: {guid_of(rel)}\n"
     if is_dir:
         return head + "folderAsset: yes\nDefaultImporter:\n  externalObjects: {}\n" + TAIL
     ext = os.path.splitext(rel)[1]
