@@ -6,6 +6,10 @@
 //    writer idle and with it publishing flat out.
 //  - the world's step time with 1 and 2 hands (each grasping its own ball) among 1, 5
 //    and 20 objects, on the host's loop;
+//  - a room: one hand in the deep grasp of one ball among 1,000 props (4000-leaf balls
+//    spread over 10 x 10 x 3 m), beside the same grasp with that ball alone (in a world
+//    of the default 64 object slots and in one of the room's 1,000), the best of 3 runs
+//    each, and the room's ratio to the one-object scene (issue 21: within 10 %);
 //  - what hand slots cost: the step time with one hand present in worlds of 1, 8 and 64
 //    hand slots (a free hand, where the step's own plumbing shows, and a grasping one),
 //    and the bytes an empty slot holds;
@@ -120,6 +124,68 @@ void world_steps(int hands, int objects, bool last) {
               "\"p99_us\": %.2f, \"max_us\": %.2f, \"contacts_hand0\": %d}%s\n",
               hands, objects, kMeasured, steps.percentile(0.5), steps.percentile(0.99), steps.max(),
               s.hand(handles[0])->contact_count, last ? "" : ",");
+}
+
+struct StepFigures {
+  double p50 = INFINITY, p99 = INFINITY, max = INFINITY;
+  int32_t contacts = 0;
+};
+
+// One hand in ball_grasp's deep grasp of its ball, among `objects` - 1 props (a shared
+// 4000-leaf ball of 10 cm radius) on a 10 x 10 x 10 grid over a 10 x 10 x 3 m room, in
+// a world of `slots` object slots. Props are kinematic, as a room's furniture is.
+StepFigures room_steps(int objects, int slots) {
+  WorldDef def;
+  def.max_objects = slots;
+  def.command_capacity = std::max(def.command_capacity, objects + 16);
+  World world(def);
+  static const std::shared_ptr<const TreeFile> ball = scenes::ball_shell(2000, 0.04);
+  static const std::shared_ptr<const TreeFile> prop = scenes::ball_shell(4000, 0.10);
+  HandHandle hand;
+  world.add_hand(make_hand_model(default_hand_def()), &hand);
+  ObjectHandle handle;
+  world.add_object(ball, RigidPose{vec3(0.10, 0.0, -0.058), glm::dmat3(1.0)}, &handle);
+  // grid points 1 x 1 x 0.3 m apart, none nearer the hand than 0.7 m
+  for (int k = 1; k < objects; ++k) {
+    const vec3 at(-4.5 + k % 10, -4.5 + (k / 10) % 10, -1.35 + 0.3 * (k / 100));
+    world.add_object(prop, RigidPose{at, glm::dmat3(1.0)}, &handle);
+  }
+  const scenes::HandScenario grasp = scenes::ball_grasp(ball);
+  StepHistogram steps;
+  constexpr int kWarm = 300, kMeasured = 2000;
+  for (int t = 0; t < kWarm + kMeasured; ++t) {
+    world.set_haptic(hand, grasp.haptic(std::min(t, grasp.steps - 1)));
+    const Clock::time_point start = Clock::now();
+    world.step();
+    if (t >= kWarm) steps.record(std::chrono::duration<double, std::micro>(Clock::now() - start).count());
+  }
+  return {steps.percentile(0.5), steps.percentile(0.99), steps.max(),
+          world.read().hand(hand)->contact_count};
+}
+
+void room() {
+  struct Scene {
+    int objects, slots;
+    StepFigures best;
+  } rows[] = {{1, WorldDef{}.max_objects, {}}, {1, 1000, {}}, {1000, 1000, {}}};
+  // the best of 3 runs, the scenes taking turns, so a burst of load elsewhere on the
+  // machine does not land on one scene only
+  for (int run = 0; run < 3; ++run)
+    for (Scene& s : rows) {
+      const StepFigures f = room_steps(s.objects, s.slots);
+      s.best = {std::min(s.best.p50, f.p50), std::min(s.best.p99, f.p99),
+                std::min(s.best.max, f.max), f.contacts};
+    }
+  std::printf("\"room\": {\"scenes\": [\n");
+  for (const Scene& s : rows)
+    std::printf("  {\"objects\": %d, \"max_objects\": %d, \"steps\": 2000, \"runs\": 3, \"p50_us\": %.2f, "
+                "\"p99_us\": %.2f, \"max_us\": %.2f, \"contacts\": %d}%s\n",
+                s.objects, s.slots, s.best.p50, s.best.p99, s.best.max, s.best.contacts,
+                &s == &rows[2] ? "" : ",");
+  const StepFigures& one = rows[0].best;
+  const StepFigures& many = rows[2].best;
+  std::printf("], \"ratio_to_one_object\": {\"p50\": %.3f, \"p99\": %.3f, \"max\": %.3f}},\n",
+              many.p50 / one.p50, many.p99 / one.p99, many.max / one.max);
 }
 
 // One hand present, free or grasping a ball, in a world of `slots` hand slots.
@@ -237,6 +303,7 @@ int main() {
               sizeof(HandPort) + HandPort::kInputQueueCapacity * sizeof(TimedInput) + 3 * sizeof(HandSlot));
   std::printf("\"hand_playback_bytes\": %zu,\n", InputPlayback::kCapacity * sizeof(TimedInput));
   hand_add_remove();
+  room();
   std::printf("\"hand_slots\": [\n");
   for (bool grasping : {false, true})
     for (int slots : {1, 8, 64}) hand_slots(slots, grasping, grasping && slots == 64);
