@@ -61,7 +61,10 @@ bool HandPipeline::step(const HandStepContext& context, SceneObjects& scene, Han
       static_cast<int32_t>(own_list ? objects_.size() : scene.active().size());
   StepStats stats;
   bool placed = true;
-  if (solver_.step(haptic, objects, object_count, &stats, context.deadline) == FRUSTA_OK) {
+  // the scene's broad phase finds the present objects near the hand; the hand's own list
+  // (while it ignores some, rare) is looked at whole
+  const ObjectFinder* finder = own_list ? nullptr : &scene;
+  if (solver_.step(haptic, objects, object_count, &stats, context.deadline, finder) == FRUSTA_OK) {
     accepted_ = haptic;
   } else {
     placed = false;  // the graphic hand stays as it was, the forces follow the last good input
@@ -99,8 +102,13 @@ bool HandPipeline::step(const HandStepContext& context, SceneObjects& scene, Han
     snap.forces[k] = forces_.forces()[k];
     snap.forces[k].object = slot;
   }
-  for (int32_t a = 0; a < object_count; ++a)
-    scene.add_reaction(object_slot[a], reactions_[static_cast<size_t>(a)]);
+  // only objects a force names have a reaction: each added once (and cleared, so a
+  // second force on it adds nothing), not one per object in the scene
+  for (const ContactForce& c : forces_.forces()) {
+    ObjectWrench& reaction = reactions_[static_cast<size_t>(c.object)];
+    scene.add_reaction(object_slot[c.object], reaction);
+    reaction = ObjectWrench{};
+  }
   return placed;
 }
 
@@ -108,16 +116,24 @@ void HandPipeline::update_ignored(SceneObjects& scene) {
   const std::vector<SolverObject>& active = scene.active();
   const std::vector<int32_t>& active_slot = scene.active_slot();
   bool changed = false;
-  for (size_t a = 0; a < active.size(); ++a) {
+  auto look_at = [&](size_t a) {
     const int32_t slot = active_slot[a];
     uint8_t& ignored = ignored_[static_cast<size_t>(slot)];
-    if (!scene.placed(slot) && !ignored) continue;  // the common case: nothing to look at
+    if (!scene.placed(slot) && !ignored) return;  // the common case: nothing to look at
     const uint8_t now = solver_.overlaps(active[a]) ? 1 : 0;
-    if (now == ignored) continue;
+    if (now == ignored) return;
     ignored_count_ += now ? 1 : -1;
     ignored = now;
     scene.set_ignored(slot, slot_, now != 0);
     changed = true;
+  };
+  if (ignored_count_ > 0) {
+    for (size_t a = 0; a < active.size(); ++a) look_at(a);
+  } else {
+    // nothing ignored: only the objects placed since the last step can start to be (a
+    // room's props cost nothing)
+    for (int32_t slot : scene.placed_slots())
+      if (scene.active_index(slot) >= 0) look_at(static_cast<size_t>(scene.active_index(slot)));
   }
   if (ignored_count_ == 0 || (!changed && !scene.moved())) return;
   objects_.clear();  // within the capacity reserved at construction

@@ -185,7 +185,7 @@ void World::step_once(double dt, bool paced, int64_t tick_ns) {
     hand.publish_feed(snap, step_ + 1, host_read_ns);
     out.hands[slot] = HandSlot{true, hand_generation_[slot], &snap};
   }
-  scene_objects_.publish(out.objects);
+  scene_objects_.publish(out.objects, buffer);
   scene_objects_.end_step(def_.gravity, dt);
   out.commands_applied = applied_;
   out.step = ++step_;

@@ -75,9 +75,11 @@ double body_clearance(const HandModel& model, const HandPose& pose, const Candid
 }
 
 double bound_clearance(const HandReach& reach, const HandPose& pose, const SolverObject* objects,
-                       int32_t object_count) {
+                       int32_t object_count, const int32_t* only, int32_t only_count) {
   double clearance = INFINITY;
-  for (int32_t o = 0; o < object_count; ++o) {
+  const int32_t n = only ? only_count : object_count;
+  for (int32_t i = 0; i < n; ++i) {
+    const int32_t o = only ? only[i] : i;
     if (objects[o].tree->empty()) continue;
     const Sphere b = object_bound(objects[o]);
     clearance = std::min(clearance, glm::length(b.center - pose.palm_position) - b.radius - reach.hand);
@@ -87,15 +89,18 @@ double bound_clearance(const HandReach& reach, const HandPose& pose, const Solve
 
 void detect_candidates(const HandModel& model, const HandReach& reach, const HandPose& pose,
                        const SolverObject* objects, int32_t object_count, double margin,
-                       TreeCut cut, CandidateSet& out) {
+                       TreeCut cut, CandidateSet& out, const int32_t* only, int32_t only_count) {
   out.candidates.clear();
   out.tree_nodes_visited = 0;
   out.near_objects.clear();
   if (out.hits.empty()) out.hits.resize(256);
   const Sphere hand_bound{pose.palm_position, reach.hand};
-  for (int32_t o = 0; o < object_count; ++o)
+  const int32_t n = only ? only_count : object_count;
+  for (int32_t i = 0; i < n; ++i) {
+    const int32_t o = only ? only[i] : i;
     if (!objects[o].tree->empty() && bounds_meet(hand_bound, object_bound(objects[o]), margin))
       out.near_objects.push_back(o);
+  }
 
   auto add_hits = [&](int32_t object, int32_t count, int32_t part) {
     const SolverObject& obj = objects[object];

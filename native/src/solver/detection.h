@@ -60,10 +60,13 @@ Sphere object_bound(const SolverObject& object);
 
 // Fill `out` with every leaf within `margin` of the hand at `pose`, or with the nodes
 // where the cut stops standing in for theirs. The vector keeps its capacity
-// between calls, so a steady scene allocates nothing.
+// between calls, so a steady scene allocates nothing. `only` (null: every object) lists
+// the objects to look at, in increasing order: a broad phase's answer, which must hold
+// every object whose bound comes within `margin` of the hand's.
 void detect_candidates(const HandModel& model, const HandReach& reach, const HandPose& pose,
                        const SolverObject* objects, int32_t object_count, double margin,
-                       TreeCut cut, CandidateSet& out);
+                       TreeCut cut, CandidateSet& out, const int32_t* only = nullptr,
+                       int32_t only_count = 0);
 
 // How deep one body of the hand at `pose` sinks into its candidates, as a negative
 // exact gap; 0 when it touches none (callers compare it with thresholds <= 0 only, so
@@ -73,8 +76,10 @@ double body_clearance(const HandModel& model, const HandPose& pose, const Candid
                       int body);
 
 // The smallest gap between the hand's bound and any object's bound (infinite with no
-// objects): the hand can move that far without meeting anything.
+// objects): the hand can move that far without meeting anything. With `only` (null:
+// every object), among those objects: the same answer wherever it is below a
+// threshold, if `only` holds every object within that threshold of the hand's bound.
 double bound_clearance(const HandReach& reach, const HandPose& pose, const SolverObject* objects,
-                       int32_t object_count);
+                       int32_t object_count, const int32_t* only = nullptr, int32_t only_count = 0);
 
 }  // namespace frusta

@@ -124,7 +124,8 @@ frusta_result HandSolver::check_params(const SolverParams& p, const HandModel& m
 
 frusta_result HandSolver::step(const HandState& haptic, const SolverObject* objects,
                                int32_t object_count, StepStats* stats_out,
-                               Clock::time_point deadline) {
+                               Clock::time_point deadline, const ObjectFinder* finder) {
+  finder_ = finder;
   assert(check_hand_state(haptic, "haptic") == FRUSTA_OK);  // checked where it entered
   StepStats stats;
   const HandState target = aimed_at(model_, haptic);
@@ -230,9 +231,30 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
   const PalmPlacement palm_from = placement(graphic_);
   const double whole_move = hand_motion(reach_, graphic_, target);
 
+  // the objects a broad phase finds within reach of the whole move: every one that the
+  // clearance below could find within its threshold, and the detection within its margin
+  // (a smaller one), so both answer as they would over every object
+  const int32_t* only = nullptr;
+  int32_t only_count = 0;
+  if (finder_) {
+    const double reach = reach_.hand + whole_move + params_.prediction_margin;
+    const Aabb box{pose_.palm_position - reach, pose_.palm_position + reach};
+    if (near_.empty()) near_.resize(64);
+    only_count = finder_->find(box, near_.data(), static_cast<int32_t>(near_.size()));
+    if (only_count > static_cast<int32_t>(near_.size())) {
+      near_.resize(static_cast<size_t>(only_count) * 2);  // more objects near than ever before
+      only_count = finder_->find(box, near_.data(), static_cast<int32_t>(near_.size()));
+    }
+    // in index order, as a scan over every object meets them: the same candidates in the
+    // same order
+    std::sort(near_.begin(), near_.begin() + only_count);
+    only = near_.data();
+  }
+
   // nothing within reach of the whole move: go there at once (as far as the budget
   // allows; every point moves in proportion), detecting nothing
-  if (bound_clearance(reach_, pose_, objects, object_count) > whole_move + params_.prediction_margin) {
+  if (bound_clearance(reach_, pose_, objects, object_count, only, only_count) >
+      whole_move + params_.prediction_margin) {
     const double s = whole_move > budget ? budget / whole_move : 1.0;
     graphic_ = s < 1.0 ? interpolate(graphic_, target, s) : target;
     forward_kinematics(model_, graphic_, pose_);
@@ -244,7 +266,7 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
   }
 
   detect_candidates(model_, reach_, pose_, objects, object_count, params_.prediction_margin,
-                    TreeCut(params_.tree_level, params_.node_radius), candidates_);
+                    TreeCut(params_.tree_level, params_.node_radius), candidates_, only, only_count);
   stats.candidates = std::max(stats.candidates, static_cast<int32_t>(candidates_.candidates.size()));
   stats.tree_nodes_visited += candidates_.tree_nodes_visited;
   const StageInputs inputs{model_, reach_, params_, candidates_};

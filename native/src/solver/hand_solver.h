@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "solver/broad_phase.h"
 #include "solver/detection.h"
 #include "solver/palm_stage.h"
 #include "solver/solver_params.h"
@@ -73,9 +74,12 @@ class HandSolver {
   // most max_substeps sub-steps, and none started that its recent sub-steps' cost says
   // would end after `deadline` (at least one always runs): a hand caught in a tangle of
   // contacts then lags (stats->lagging) instead of stalling a real-time thread, its last
-  // sub-step sliding along what it touches so that it keeps its contacts.
+  // sub-step sliding along what it touches so that it keeps its contacts. `finder`
+  // (null: look at every object), a broad phase over `objects`: each sub-step looks only
+  // at the objects it finds near the hand, with the same result.
   frusta_result step(const HandState& haptic, const SolverObject* objects, int32_t object_count,
-                     StepStats* stats, Clock::time_point deadline = Clock::time_point::max());
+                     StepStats* stats, Clock::time_point deadline = Clock::time_point::max(),
+                     const ObjectFinder* finder = nullptr);
 
   // Whether the graphic hand now sinks into `object` (past the penetration tolerance).
   // False before the first step.
@@ -119,6 +123,8 @@ class HandSolver {
   Clock::duration substep_cost_{0};  // the longest sub-step of steps with a deadline, fading
   PalmHeading heading_;        // this step's: the graphic palm does not go back against it
   CandidateSet candidates_;
+  const ObjectFinder* finder_ = nullptr;  // this step's
+  std::vector<int32_t> near_;             // what it found for a sub-step, in index order
   std::array<bool, FRUSTA_FINGER_COUNT> settled_{};  // per sub-step: reached or stopped
   std::vector<QpRow> rows_;
   std::vector<SolverContact> contacts_;
