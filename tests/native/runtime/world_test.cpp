@@ -6,12 +6,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <glm/gtc/quaternion.hpp>
 
@@ -205,6 +207,76 @@ TEST(World, HapticRotationsAreUnitFromTheDoorOn) {
   const WorldSnapshot& s = world.read();
   EXPECT_NEAR(glm::length(s.hand(hand)->haptic.palm_rotation), 1.0, 1e-15);
   EXPECT_NEAR(glm::length(s.hand(hand)->graphic.palm_rotation), 1.0, 1e-15);
+}
+
+// Issue 21's broad phase: a hand grasping a ball among 400 props spread over a room
+// (one put there from across the room, one falling, half removed midway, one moved
+// nearer) meets exactly what it meets with the ball alone, bit for bit, and the
+// room's steps allocate nothing.
+TEST(World, FarObjectsChangeNothingTheHandMeets) {
+  const scenes::HandScenario grasp = scenes::ball_grasp(ball_tree());
+  World alone(WorldDef{});
+  const HandHandle hand_alone = add_hand(alone, right_hand());
+  ObjectHandle ball_alone;
+  ASSERT_EQ(alone.add_object(grasp.trees[0], kBallPose, &ball_alone), FRUSTA_OK);
+
+  WorldDef def;
+  def.max_objects = 512;
+  def.command_capacity = 1024;
+  def.gravity = vec3(0.0, 0.0, -9.81);  // for the falling prop; the ball is kinematic
+  World room(def);
+  const HandHandle hand = add_hand(room, right_hand());
+  ObjectHandle ball;
+  ASSERT_EQ(room.add_object(grasp.trees[0], RigidPose{vec3(4.0, 4.0, 1.0), glm::dmat3(1.0)}, &ball),
+            FRUSTA_OK);
+  std::vector<ObjectHandle> props(400);
+  for (int k = 0; k < 400; ++k) {
+    // 1 m apart, none nearer the hand than 0.7 m
+    const vec3 at(-4.5 + k % 10, -4.5 + (k / 10) % 10, -0.6 + 0.4 * (k / 100));
+    ASSERT_EQ(room.add_object(ball_tree(), RigidPose{at, glm::dmat3(1.0)}, &props[static_cast<size_t>(k)]),
+              FRUSTA_OK);
+  }
+  ASSERT_EQ(room.set_object_pose(ball, kBallPose), FRUSTA_OK);  // across the room, before any step
+  ASSERT_EQ(room.set_object_dynamic(props[399], true), FRUSTA_OK);  // falls through the room
+  ASSERT_EQ(ball.slot, ball_alone.slot);
+
+  int64_t allocations = 0;
+  for (int32_t t = 0; t < grasp.steps + 100; ++t) {
+    const HandState haptic = grasp.haptic(std::min(t, grasp.steps - 1));
+    if (t == 100) {
+      for (int k = 0; k < 200; ++k) {
+        ASSERT_EQ(room.remove_object(props[static_cast<size_t>(2 * k)]), FRUSTA_OK);
+      }
+    }
+    if (t == 150) {
+      ASSERT_EQ(room.set_object_pose(props[1], RigidPose{vec3(0.1, 0.6, -0.058), glm::dmat3(1.0)}), FRUSTA_OK);
+    }
+    alone.set_haptic(hand_alone, haptic);
+    room.set_haptic(hand, haptic);
+    alone.step();
+    const int64_t before = allocation_count();
+    room.step();
+    if (t > 200) allocations += allocation_count() - before;
+    const HandSnapshot& a = *alone.read().hand(hand_alone);
+    const WorldSnapshot& r = room.read();
+    const HandSnapshot& b = *r.hand(hand);
+    ASSERT_EQ(b.graphic.palm_position, a.graphic.palm_position) << "step " << t;
+    ASSERT_EQ(b.graphic.palm_rotation, a.graphic.palm_rotation) << "step " << t;
+    ASSERT_EQ(b.graphic.angles, a.graphic.angles) << "step " << t;
+    ASSERT_EQ(b.contact_count, a.contact_count) << "step " << t;
+    for (int32_t i = 0; i < std::min(b.contact_count, def.max_contacts_per_hand); ++i) {
+      const size_t k = static_cast<size_t>(i);
+      ASSERT_EQ(b.contacts[k].object, ball.slot);
+      ASSERT_EQ(b.contacts[k].distance, a.contacts[k].distance) << "step " << t << " contact " << i;
+    }
+    const ObjectSnapshot& held = r.objects[static_cast<size_t>(ball.slot)];
+    ASSERT_EQ(held.reaction.force, alone.read().objects[static_cast<size_t>(ball_alone.slot)].reaction.force);
+    ASSERT_EQ(r.objects[static_cast<size_t>(props[1].slot)].reaction.force, vec3(0.0));
+  }
+  EXPECT_GT(room.read().hand(hand)->contact_count, 0) << "the hand holds the ball";
+  EXPECT_LT(room.read().objects[static_cast<size_t>(props[399].slot)].pose.position.z, 0.5)
+      << "the dynamic prop fell from 0.6 m";
+  EXPECT_EQ(allocations, 0);
 }
 
 TEST(World, TwoHandsAndTwentyObjectsStepWithoutAllocating) {
