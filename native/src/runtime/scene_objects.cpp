@@ -59,7 +59,7 @@ int32_t SceneObjects::find(const Aabb& box, int32_t* out, int32_t capacity) cons
   return count;
 }
 
-void SceneObjects::apply(const WorldCommand& c) {
+bool SceneObjects::apply(const WorldCommand& c) {
   Slot& slot = slots_[static_cast<size_t>(c.slot)];
   const bool was_dynamic = slot.tree && slot.def.dynamic;
   auto place = [&] {
@@ -90,18 +90,27 @@ void SceneObjects::apply(const WorldCommand& c) {
       break;
     case CommandKind::kAddHand:
     case CommandKind::kRemoveHand:
-      return;  // the world's
+      return false;  // the world's
   }
   changed(c.slot);
   if (c.kind != CommandKind::kObjectDynamic) track(c.slot);
+  const bool rebuild = c.kind == CommandKind::kAddObject || c.kind == CommandKind::kRemoveObject;
+  // a host moving a held object each frame: its pose in the present list, not a rebuild
+  // of the list (until a rebuild, the list and active_index_ still agree)
+  const int32_t index = active_index_[static_cast<size_t>(c.slot)];
+  if (c.kind == CommandKind::kObjectPose && index >= 0) {
+    active_[static_cast<size_t>(index)].pose = slot.def.pose;
+    moved_ = true;
+  }
   // the dynamic list, kept in slot order so that objects move in the same order as
   // before it existed
   const bool is_dynamic = slot.tree && slot.def.dynamic;
-  if (is_dynamic == was_dynamic) return;
+  if (is_dynamic == was_dynamic) return rebuild;
   if (is_dynamic)
     dynamic_.insert(std::lower_bound(dynamic_.begin(), dynamic_.end(), c.slot), c.slot);
   else
     dynamic_.erase(std::lower_bound(dynamic_.begin(), dynamic_.end(), c.slot));
+  return rebuild;
 }
 
 void SceneObjects::set_ignored(int32_t slot, int32_t hand, bool ignored) {

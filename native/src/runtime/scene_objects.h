@@ -30,8 +30,9 @@ class SceneObjects final : public ObjectFinder {
   // at these instead of at every object.
   int32_t find(const Aabb& box, int32_t* out, int32_t capacity) const override;
 
-  // One queued object command, as the host side made it.
-  void apply(const WorldCommand& command);
+  // One queued object command, as the host side made it. Returns whether the present
+  // list must be rebuilt (an object came or went); a pose is changed in it in place.
+  bool apply(const WorldCommand& command);
   // The present objects again, after commands changed them.
   void rebuild_active();
 

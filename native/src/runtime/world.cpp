@@ -127,8 +127,7 @@ void World::apply_commands() {
           if (hand) hand->forget(c.slot);
         [[fallthrough]];
       default:
-        scene_objects_.apply(c);
-        objects_changed = true;
+        objects_changed |= scene_objects_.apply(c);
         break;
     }
   }
