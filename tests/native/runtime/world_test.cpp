@@ -43,12 +43,18 @@ std::shared_ptr<const TreeFile> ball_tree() {
 
 const RigidPose kBallPose{vec3(0.10, 0.0, -0.058), glm::dmat3(1.0)};
 
+// A right hand and the grasp's ball at kBallPose, in `world`.
+void add_hand_and_ball(World& world, const scenes::HandScenario& grasp, HandHandle* hand, ObjectHandle* ball) {
+  *hand = add_hand(world, right_hand());
+  ASSERT_EQ(world.add_object(grasp.trees[0], kBallPose, ball), FRUSTA_OK);
+}
+
 TEST(World, SolvesEachHandExactlyAsAStandaloneSolver) {
   const scenes::HandScenario grasp = scenes::ball_grasp(ball_tree());
   World world(WorldDef{});
-  const HandHandle hand = add_hand(world, right_hand());
+  HandHandle hand;
   ObjectHandle ball;
-  ASSERT_EQ(world.add_object(grasp.trees[0], kBallPose, &ball), FRUSTA_OK);
+  ASSERT_NO_FATAL_FAILURE(add_hand_and_ball(world, grasp, &hand, &ball));
   HandSolver alone(right_hand(), SolverParams{});
   for (int32_t t = 0; t < grasp.steps; ++t) {
     world.set_haptic(hand, grasp.haptic(t));
@@ -216,9 +222,9 @@ TEST(World, HapticRotationsAreUnitFromTheDoorOn) {
 TEST(World, FarObjectsChangeNothingTheHandMeets) {
   const scenes::HandScenario grasp = scenes::ball_grasp(ball_tree());
   World alone(WorldDef{});
-  const HandHandle hand_alone = add_hand(alone, right_hand());
+  HandHandle hand_alone;
   ObjectHandle ball_alone;
-  ASSERT_EQ(alone.add_object(grasp.trees[0], kBallPose, &ball_alone), FRUSTA_OK);
+  ASSERT_NO_FATAL_FAILURE(add_hand_and_ball(alone, grasp, &hand_alone, &ball_alone));
 
   WorldDef def;
   def.max_objects = 512;
