@@ -106,7 +106,7 @@ void ContactForces::update(const HandPose& graphic, const HandPose& haptic,
     const vec3 point = patch.weight_sum > 0.0 ? patch.haptic_sum / patch.weight_sum : vec3(0.0);
     if (limiting_ && patch.weight_sum > 0.0) {
       const vec3 had = before ? before->push : vec3(0.0);
-      const vec3 from = before ? same_material_point(haptic, last_haptic_, patch.key.body, point) : point;
+      const vec3 from = same_material_point(haptic, last_haptic_, patch.key.body, point);
       patch_force = limit(material, had, patch_force, from, point, counts);
     } else if (before) {
       fade(*before, haptic, material, object_count, counts);  // its contacts share nothing
