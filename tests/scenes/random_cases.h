@@ -89,6 +89,18 @@ inline std::uint64_t property_case_count(std::uint64_t fallback = 1000000) {
   return (end != text && n > 0) ? static_cast<std::uint64_t>(n) : fallback;
 }
 
+// Which of a scripted test's cases run: every one, or with env FRUSTA_SCENARIO_STRIDE=k
+// every k-th (the sanitizer run, where each case costs ~4x and the code is the same).
+// A test runs its case i (in its own order) when scenario_runs(i).
+inline std::uint64_t scenario_stride() {
+  const char* text = std::getenv("FRUSTA_SCENARIO_STRIDE");
+  if (text == nullptr || *text == '\0') return 1;
+  char* end = nullptr;
+  const unsigned long long k = std::strtoull(text, &end, 10);
+  return (end != text && k > 0) ? static_cast<std::uint64_t>(k) : 1;
+}
+inline bool scenario_runs(std::uint64_t index) { return index % scenario_stride() == 0; }
+
 class CaseGenerator {
  public:
   explicit CaseGenerator(std::uint64_t seed) : rng_(seed) {}

@@ -19,6 +19,7 @@
 
 #include "forces/force_params.h"
 #include "scenes/edge_slides.h"
+#include "scenes/random_cases.h"
 
 namespace frusta {
 namespace {
@@ -37,9 +38,11 @@ struct Worst {
 // `lagged` (if given) counts the steps the budget bound (the solver lagged) over every slide.
 void expect_continuous_over(const std::string& shape, const SolverParams& params = SolverParams{},
                             int* lagged = nullptr) {
+  std::uint64_t index = 0;
   for (const scenes::EdgePath path : scenes::kEdgePaths)
     for (const double speed : {0.1, 0.5, 1.0})
       for (int mm = 1; mm <= 5; ++mm) {
+        if (!scenes::scenario_runs(index++)) continue;
         const scenes::HandScenario s = scenes::edge_slide(shape, path, speed, mm * 1e-3);
         const std::vector<scenes::EdgeSlideStep> log =
             scenes::run_edge_slide(s, params, true, false);
@@ -89,6 +92,10 @@ TEST(HandSolverEdges, FingertipOverAThirtyDegreeWedgeMovesAndPushesContinuously)
 
 // Issue 20, Build 3: one sub-step a step, a budget that binds on most steps at 1 m/s (the
 // hand falls behind): the same bounds hold.
+// the slides' steps where it binds, at least (over all of a shape's slides; a share of them
+// where a sanitizer run takes one slide in FRUSTA_SCENARIO_STRIDE)
+int binds_on() { return static_cast<int>(100 / scenes::scenario_stride()); }
+
 SolverParams one_substep() {
   SolverParams p;
   p.max_substeps = 1;
@@ -98,19 +105,19 @@ SolverParams one_substep() {
 TEST(HandSolverEdges, WhereTheBudgetBindsTheHexagonalPrismsEdgesStillPushContinuously) {
   int lagged = 0;
   expect_continuous_over("hex_prism", one_substep(), &lagged);
-  EXPECT_GT(lagged, 100) << "the budget is meant to bind";
+  EXPECT_GT(lagged, binds_on()) << "the budget is meant to bind";
 }
 
 TEST(HandSolverEdges, WhereTheBudgetBindsTheBoxEdgeStillPushesContinuously) {
   int lagged = 0;
   expect_continuous_over("edge_box", one_substep(), &lagged);
-  EXPECT_GT(lagged, 100) << "the budget is meant to bind";
+  EXPECT_GT(lagged, binds_on()) << "the budget is meant to bind";
 }
 
 TEST(HandSolverEdges, WhereTheBudgetBindsTheWedgeStillPushesContinuously) {
   int lagged = 0;
   expect_continuous_over("wedge", one_substep(), &lagged);
-  EXPECT_GT(lagged, 100) << "the budget is meant to bind";
+  EXPECT_GT(lagged, binds_on()) << "the budget is meant to bind";
 }
 
 }  // namespace
