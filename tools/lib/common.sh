@@ -97,6 +97,23 @@ deb_src_sources() {
   done
 }
 
+# fetch_debian_source DIR PACKAGE=VERSION: a Debian source package's upstream tarball
+# (checked against the signed index) into DIR, through a private source list: the
+# machine's apt configuration is left as it was. The tarball only: the builds here
+# apply no Debian patch, and a mirror may lack the .debian.tar (embree's did)
+fetch_debian_source() {
+  local work="$1" package="$2"
+  mkdir -p "$work/apt/lists/partial" "$work/apt/sources"
+  deb_src_sources "$work/apt/sources"
+  local apt=(apt-get -qq -o Dir::Etc::SourceList=/dev/null -o Dir::Etc::SourceParts="$work/apt/sources"
+             -o Dir::State::Lists="$work/apt/lists" -o APT::Sandbox::User=root)
+  echo "frusta: fetching Debian's ${package%%=*} source to build it for Windows" >&2
+  # a repository of the machine's without sources fails its part only; apt-get source
+  # below says so if what it needs is missing
+  "${apt[@]}" update || echo "frusta: some deb-src indexes could not be fetched" >&2
+  (cd "$work" && "${apt[@]}" source --download-only --tar-only "$package" >/dev/null)
+}
+
 # build_windows_libraries PREFIX: hidapi (its Windows backend, with its own CMake) from
 # Debian's source package (bookworm's version, as on Linux), static, into PREFIX. Done
 # once per PREFIX.
@@ -104,16 +121,8 @@ build_windows_libraries() {
   local prefix="$1"
   [ -f "$prefix/lib/libhidapi.a" ] && return 0
   local work="$prefix/src"
-  rm -rf "$prefix" && mkdir -p "$work/apt/lists/partial" "$work/apt/sources"
-  # a private source list: the machine's apt configuration is left as it was
-  deb_src_sources "$work/apt/sources"
-  local apt=(apt-get -qq -o Dir::Etc::SourceList=/dev/null -o Dir::Etc::SourceParts="$work/apt/sources"
-             -o Dir::State::Lists="$work/apt/lists" -o APT::Sandbox::User=root)
-  echo "frusta: fetching Debian's hidapi source to build it for Windows" >&2
-  # a repository of the machine's without sources fails its part only; apt-get source
-  # below says so if what it needs is missing
-  "${apt[@]}" update || echo "frusta: some deb-src indexes could not be fetched" >&2
-  (cd "$work" && "${apt[@]}" source --download-only hidapi=0.13.1-1 >/dev/null)
+  rm -rf "$prefix" && mkdir -p "$work"
+  fetch_debian_source "$work" hidapi=0.13.1-1
   tar -xzf "$work/hidapi_0.13.1.orig.tar.gz" -C "$work"
   cmake -S "$work/hidapi-hidapi-0.13.1" -B "$work/hidapi-build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
         -DCMAKE_TOOLCHAIN_FILE="$FRUSTA_WINDOWS_TOOLCHAIN" -DBUILD_SHARED_LIBS=OFF \
@@ -123,6 +132,43 @@ build_windows_libraries() {
   # hidapi.h marks its functions dllexport on Windows unconditionally; linked into
   # frusta.dll they must stay inside it: drop the objects' export directives
   x86_64-w64-mingw32-objcopy --remove-section=.drectve "$prefix/lib/libhidapi.a"
+}
+
+# build_windows_embree PREFIX: Embree 3 for the Windows baker, from Debian's source
+# package (bookworm's 3.13.5, as on Linux), static, into PREFIX; done once per PREFIX.
+# Only what the baker calls (bake/mesh_queries.cpp: triangles, point queries, single
+# rays), with Embree's own task scheduler instead of TBB and SSE2 kernels alone: 69
+# build steps instead of the 276 of its defaults up to AVX2 (every geometry, ray
+# packets), ~320 CPU seconds (README, "Platforms").
+build_windows_embree() {
+  local prefix="$1"
+  [ -f "$prefix/lib/libembree3.a" ] && return 0
+  local work="$prefix/src"
+  rm -rf "$prefix" && mkdir -p "$work"
+  fetch_debian_source "$work" embree=3.13.5+dfsg-2
+  tar -xJf "$work/embree_3.13.5+dfsg.orig.tar.xz" -C "$work"
+  local src="$work/embree-3.13.5"
+  # Embree takes MSVC's flags for any Windows compiler whose front end CMake does not
+  # call GNU, and CMake names none for MinGW's g++: MinGW is GNU-like too
+  sed -i 's/^\(  ELSEIF(\)\${CMAKE_CXX_COMPILER_FRONTEND_VARIANT} MATCHES "GNU")/\1MINGW OR "${CMAKE_CXX_COMPILER_FRONTEND_VARIANT}" MATCHES "GNU")/' \
+    "$src/CMakeLists.txt"
+  grep -q '^  ELSEIF(MINGW OR ' "$src/CMakeLists.txt" ||
+    { echo "frusta: Embree's compiler test was not where expected: patch it anew" >&2; exit 1; }
+  # its version resource is UTF-16, which MinGW's windres cannot read
+  iconv -f UTF-16 -t UTF-8 "$src/kernels/embree.rc" >"$src/kernels/embree.rc.utf8"
+  mv "$src/kernels/embree.rc.utf8" "$src/kernels/embree.rc"
+  cmake -S "$src" -B "$work/embree-build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+        -DCMAKE_TOOLCHAIN_FILE="$FRUSTA_WINDOWS_TOOLCHAIN" -DCMAKE_INSTALL_PREFIX="$prefix" \
+        -DEMBREE_STATIC_LIB=ON -DEMBREE_TASKING_SYSTEM=INTERNAL -DEMBREE_MAX_ISA=SSE2 \
+        -DEMBREE_ISPC_SUPPORT=OFF -DEMBREE_TUTORIALS=OFF -DEMBREE_RAY_PACKETS=OFF \
+        -DEMBREE_FILTER_FUNCTION=OFF -DEMBREE_GEOMETRY_QUAD=OFF -DEMBREE_GEOMETRY_CURVE=OFF \
+        -DEMBREE_GEOMETRY_SUBDIVISION=OFF -DEMBREE_GEOMETRY_USER=OFF -DEMBREE_GEOMETRY_INSTANCE=OFF \
+        -DEMBREE_GEOMETRY_GRID=OFF -DEMBREE_GEOMETRY_POINT=OFF >/dev/null
+  echo "frusta: building Embree for Windows (minutes)" >&2
+  cmake --build "$work/embree-build" --parallel "$(nproc)" >/dev/null
+  # the headers, the static libraries and the CMake package ("lib" would add the
+  # documentation, whose PDF Debian's tarball leaves out)
+  cmake --install "$work/embree-build" --component devel >/dev/null
 }
 
 # build_windows_tree DIR BUILD_TYPE [cmake args...]: the runtime and tests for Windows
@@ -136,6 +182,20 @@ build_windows_tree() {
   build_tree "$dir" "$type" -DCMAKE_TOOLCHAIN_FILE="$FRUSTA_WINDOWS_TOOLCHAIN" \
     -DFRUSTA_WINDOWS_LIBS="$ROOT/build/windows-libs" -DFRUSTA_BUILD_BAKER=OFF \
     -DFRUSTA_BUILD_SAMPLES=OFF -DFRUSTA_BUILD_BENCHMARKS=OFF "$@"
+}
+
+# build_windows_baker_tree DIR BUILD_TYPE [cmake args...]: the baker for Windows x64
+# (frusta_bake.dll, with Embree linked in) and what tests it, in a tree of its own: the
+# runtime's tree (build_windows_tree) stays without Embree, whose build takes minutes
+# (README, "Platforms"). Pass host_objects' arguments. Builds $FRUSTA_BUILD_TARGETS.
+build_windows_baker_tree() {
+  local dir="$1" type="$2"
+  shift 2
+  build_windows_embree "$ROOT/build/windows-embree"
+  # the later -D wins over build_windows_tree's FRUSTA_BUILD_BAKER=OFF; no frusta-bake
+  # (tinygltf is not built for Windows): the editor bakes through the C ABI
+  build_windows_tree "$dir" "$type" -DFRUSTA_BUILD_BAKER=ON -DFRUSTA_BUILD_TOOLS=OFF \
+    -Dembree_DIR="$ROOT/build/windows-embree/lib/cmake/embree-3.13.5" "$@"
 }
 
 # start_wine: the Wine prefix of build/windows made (once), and one Wine server kept up
