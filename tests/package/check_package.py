@@ -9,9 +9,10 @@ one-plugin-per-(platform, CPU, file name) rule (unity_plugins.py); each library 
 architecture its folder names; and the libraries needing nothing outside the package
 but the operating system (objdump -p, ldd), with the newest glibc symbol version they
 ask for at most GLIBC_FLOOR.
-Usage: check_package.py TARBALL UNPACK_DIR [--release]   (UNPACK_DIR is emptied, then
-kept for the tests that load the libraries from it; --release: the manifest's links are
-required)"""
+Usage: check_package.py TARBALL UNPACK_DIR [--release] [--windows-baker]   (UNPACK_DIR is
+emptied, then kept for the tests that load the libraries from it; --release: the
+manifest's links are required; --windows-baker: so is the Windows editor's baker,
+tools/package --windows-baker)"""
 import json
 import os
 import re
@@ -40,6 +41,9 @@ ARCH = {"Linux/x86_64": ("elf", 62), "Linux/arm64": ("elf", 183), "Windows/x86_6
 
 failures = []
 RELEASE = "--release" in sys.argv[3:]
+WINDOWS_BAKER = "--windows-baker" in sys.argv[3:]
+# the bakers and what they load: the editors' alone, never a player's
+EDITOR_ONLY = ("libfrusta_bake.so", "libembree3.so.3", "libtbb.so.12", "frusta_bake.dll")
 
 
 def fail(message):
@@ -202,15 +206,23 @@ def main():
         print(r)
     for e in errors:
         fail(e)
-    # and the runtime is there for every editor and player the tarball serves
+    # and the runtime is there for every editor and player the tarball serves, the
+    # baker for the editors that can bake
     for version in ("2022.3", "2023.1", "6000.3"):
-        for want in (f"Unity {version} Linux64: Plugins/{'x86_64/' if version == '6000.3' else ''}libfrusta.so <- ",
-                     f"Unity {version} Win64: Plugins/x86_64/frusta.dll <- ",
-                     f"Unity {version} Editor Linux x86_64: libfrusta.so <- ",
-                     f"Unity {version} Editor Linux x86_64: libfrusta_bake.so <- ",
-                     f"Unity {version} Editor Windows x86_64: frusta.dll <- "):
+        wants = [f"Unity {version} Linux64: Plugins/{'x86_64/' if version == '6000.3' else ''}libfrusta.so <- ",
+                 f"Unity {version} Win64: Plugins/x86_64/frusta.dll <- ",
+                 f"Unity {version} Editor Linux x86_64: libfrusta.so <- ",
+                 f"Unity {version} Editor Linux x86_64: libfrusta_bake.so <- ",
+                 f"Unity {version} Editor Windows x86_64: frusta.dll <- "]
+        if WINDOWS_BAKER:
+            wants.append(f"Unity {version} Editor Windows x86_64: frusta_bake.dll <- ")
+        for want in wants:
             if not any(r.startswith(want) for r in rows):
                 fail(f"no plugin for {want[:-4]}")
+    for r in rows:
+        where = r.split(" <- ")[0]
+        if " Editor " not in where and where.endswith(EDITOR_ONLY):
+            fail(f"{r}: the baker and its libraries are for the editor only")
     check_libraries(package)
     size = os.path.getsize(tarball)
     print(f"{os.path.basename(tarball)}: {size / 1e6:.1f} MB; {len(failures)} failures")

@@ -223,6 +223,9 @@ namespace Frusta.Binding.Tests
             Plugin(Path.Combine("Linux", "x86_64"), "libfrusta.so", "Linux", "Linux64", "x86_64");
             Plugin(Path.Combine("Linux", "arm64"), "libfrusta.so", null, "Linux64", "ARM64");
             Plugin(Path.Combine("Windows", "x86_64"), "frusta.dll", "Windows", "Win64", "x86_64");
+            // the bakers serve their editors only
+            Plugin(Path.Combine("Linux", "x86_64"), "libfrusta_bake.so", "Linux", null, null);
+            Plugin(Path.Combine("Windows", "x86_64"), "frusta_bake.dll", "Windows", null, null);
         }
 
         [Fact]
