@@ -218,7 +218,7 @@
   X(frusta_object_state, reaction_force, 112, 24)     \
   X(frusta_object_state, reaction_torque, 136, 24) \
   X(frusta_object_state, ignoring_hands, 160, 4) \
-  X(frusta_object_state, reserved0, 164, 4) \
+  X(frusta_object_state, held, 164, 4) \
   X(frusta_device_id, index1, 0, 4) \
   X(frusta_device_id, world0, 4, 2) \
   X(frusta_device_id, generation, 6, 2) \

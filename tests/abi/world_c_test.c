@@ -1922,7 +1922,7 @@ static void test_ignored_objects(void) {
         "the hand it was put into ignores the box (%d), the other hand does not (%d), nor "
         "does anyone the far box (%d)",
         ignored, other_ignored, far_ignored);
-  check(get_object(world, box, &o) && o.ignoring_hands == 1 && o.reserved0 == 0,
+  check(get_object(world, box, &o) && o.ignoring_hands == 1 && o.held == 0,
         "the box's state counts one hand ignoring it (%d)", o.ignoring_hands);
   check(get_hand(world, hand, &h) && h.ignored_objects == 1 && h.contact_count == 0 &&
             h.input_late == 0,

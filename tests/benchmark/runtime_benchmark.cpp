@@ -17,7 +17,11 @@
 //    allocated here), remove_hand, and the read that frees it;
 //  - what timed input costs a step: the same free and grasping hand fed one stamped
 //    sample a step (set_haptic_at) against one untimed (set_haptic), and with a
-//    host that stalls 5-50 ms and catches up in bursts.
+//    host that stalls 5-50 ms and catches up in bursts;
+//  - objects on a table (runtime/object_contact.h): the step time of a marble, a 1 kg
+//    box and a box on a box dropped on the samples' table, while they fall and settle
+//    and once at rest, beside how far from the nominal height each rests; and one
+//    resting pair's contact walked (both trees) against answered from the contact cache.
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -29,7 +33,9 @@
 #include "hand/anthropometry.h"
 #include "hand/hand_model.h"
 #include "core/periodic_clock.h"
+#include "runtime/contact_cache.h"
 #include "runtime/world.h"
+#include "scenes/baked_objects.h"
 #include "scenes/hand_scenarios.h"
 #include "scenes/jittery_host.h"
 #include "core/step_histogram.h"
@@ -285,6 +291,74 @@ void hand_add_remove() {
               remove_us.percentile(0.99), read_us.percentile(0.5), read_us.percentile(0.99));
 }
 
+ObjectHandle drop(World& world, const char* tree, const vec3& at, double mass, bool dynamic) {
+  ObjectDef def;
+  def.pose.position = at;
+  def.dynamic = dynamic;
+  def.mass = mass;
+  def.inertia = vec3(mass * 0.03 * 0.03 / 6.0);
+  ObjectHandle handle;
+  world.add_object(scenes::sample_tree(tree), def, &handle);
+  return handle;
+}
+
+void objects_on_table() {
+  constexpr double kTop = 0.015;  // the table's top: 3 cm thick, centred at 0
+  struct Case {
+    const char* name;
+    const char* tree;
+    double mass, half_height;  // of the object on top
+    bool on_box;               // standing on a 1 kg box
+  } cases[] = {{"marble", "marble", 0.05, 0.0087, false},
+               {"box", "box", 1.0, 0.02, false},
+               {"box_on_box", "box", 0.2, 0.02, true}};
+  std::printf("\"objects_on_table\": {\"scenes\": [\n");
+  for (const Case& c : cases) {
+    WorldDef def;
+    def.gravity = vec3(0.0, 0.0, -9.81);
+    World world(def);
+    drop(world, "table", vec3(0.0), 1.0, false);
+    const double base = c.on_box ? kTop + 0.04 : kTop;
+    if (c.on_box) drop(world, "box", vec3(0.0, 0.0, kTop + 0.021), 1.0, true);
+    const ObjectHandle top = drop(world, c.tree, vec3(0.005, 0.0, base + c.half_height + 0.02), c.mass, true);
+    StepHistogram settling, resting;
+    for (int t = 0; t < 3000; ++t) {
+      const Clock::time_point start = Clock::now();
+      world.step();
+      const double us = std::chrono::duration<double, std::micro>(Clock::now() - start).count();
+      if (t < 1000) settling.record(us);
+      if (t >= 2000) resting.record(us);
+    }
+    const ObjectSnapshot& o = world.read().objects[static_cast<size_t>(top.slot)];
+    std::printf("  {\"scene\": \"%s\", \"settling_p50_us\": %.2f, \"settling_p99_us\": %.2f, "
+                "\"settling_max_us\": %.2f, \"resting_p50_us\": %.2f, \"resting_max_us\": %.2f, "
+                "\"rests_off_nominal_mm\": %.3f, \"speed_mm_s\": %.4f}%s\n",
+                c.name, settling.percentile(0.5), settling.percentile(0.99), settling.max(),
+                resting.percentile(0.5), resting.max(), 1e3 * (o.pose.position.z - base - c.half_height),
+                1e3 * glm::length(o.linear_velocity), &c == &cases[2] ? "" : ",");
+  }
+  // one pair at rest, the 1 kg box on the table: a walk of both trees against the cache
+  const std::shared_ptr<const TreeFile> table = scenes::sample_tree("table"), box = scenes::sample_tree("box");
+  ObjectDef on, under;
+  on.pose.position = vec3(0.0, 0.0, kTop + 0.02 - 0.0003);
+  on.mass = 1.0;
+  const ContactSide a{&box->tree, &on, 1.0}, b{&table->tree, &under, 0.0};
+  constexpr int kCalls = 2000;
+  ContactCache cache;
+  ObjectWrench wa, wb;
+  double t0 = thread_cpu_seconds();
+  for (int i = 0; i < kCalls; ++i) add_object_contact(a, b, 1e-3, &wa, &wb);
+  const double walked = (thread_cpu_seconds() - t0) / kCalls;
+  t0 = thread_cpu_seconds();
+  for (int i = 0; i < kCalls; ++i) {
+    cache.touch(0, 1, a, 1, 1, b, 1e-3, &wa, &wb);
+    cache.end_step();
+  }
+  const double cached = (thread_cpu_seconds() - t0) / kCalls;
+  std::printf("], \"box_on_table_pair_us\": {\"walked\": %.2f, \"cached\": %.2f, \"walks\": %lld}},\n",
+              1e6 * walked, 1e6 * cached, static_cast<long long>(cache.walks()));
+}
+
 }  // namespace
 }  // namespace frusta
 
@@ -303,6 +377,7 @@ int main() {
               sizeof(HandPort) + HandPort::kInputQueueCapacity * sizeof(TimedInput) + 3 * sizeof(HandSlot));
   std::printf("\"hand_playback_bytes\": %zu,\n", InputPlayback::kCapacity * sizeof(TimedInput));
   hand_add_remove();
+  objects_on_table();
   room();
   std::printf("\"hand_slots\": [\n");
   for (bool grasping : {false, true})

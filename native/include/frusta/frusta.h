@@ -889,12 +889,16 @@ typedef struct frusta_object_state {
   frusta_pose pose;             /* where the hands met it this step */
   double linear_velocity[3];    /* m/s */
   double angular_velocity[3];   /* rad/s */
-  double reaction_force[3];     /* from every hand, newtons: what a host engine applies */
+  double reaction_force[3];     /* from every hand, newtons: what a host engine applies;
+                                   while held, what carrying it takes */
   double reaction_torque[3];    /* about the pose position, newton-metres */
   int32_t ignoring_hands;       /* hands the object was put inside, which pass through
                                    it until they part (frusta_world_get_object_ignored_by
                                    names them) */
-  int32_t reserved0;            /* explicit padding */
+  int32_t held;                 /* 1: a dynamic object a hand's grasp holds: two of its
+                                   pads oppose and their friction bears its weight, so
+                                   it moves with that hand's palm until the squeeze
+                                   opens (the glove still feels every push) */
 } frusta_object_state;
 
 /** Defaults for frusta_create_world. Thread: any. */

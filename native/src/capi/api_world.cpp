@@ -450,7 +450,7 @@ FRUSTA_API frusta_result frusta_world_get_object(frusta_world_id world, frusta_o
   store(o->reaction.force, out->reaction_force);
   store(o->reaction.torque, out->reaction_torque);
   out->ignoring_hands = static_cast<int32_t>(std::bitset<64>(o->ignored_by).count());
-  out->reserved0 = 0;
+  out->held = o->held_by >= 0 ? 1 : 0;
   return FRUSTA_OK;
 }
 

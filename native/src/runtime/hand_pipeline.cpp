@@ -15,10 +15,14 @@ HandPipeline::HandPipeline(const HandModel& model, const SolverParams& params,
       port_(port),
       forces_(max_contacts),
       reactions_(static_cast<size_t>(max_objects)),
+      grasp_entry_(static_cast<size_t>(max_objects), -1),
       ignored_(static_cast<size_t>(max_objects), 0) {
   objects_.reserve(static_cast<size_t>(max_objects));
   object_slot_.reserve(static_cast<size_t>(max_objects));
   materials_.reserve(static_cast<size_t>(max_objects));
+  // a force names one object: as many objects as the table holds forces (fades included)
+  grasp_object_.reserve(forces_.forces().capacity());
+  grasp_pushes_.reserve(forces_.forces().capacity());
   for (HandSnapshot& snap : snapshots_) {
     snap.model = &solver_.model();
     snap.contacts.resize(static_cast<size_t>(max_contacts));
@@ -109,7 +113,34 @@ bool HandPipeline::step(const HandStepContext& context, SceneObjects& scene, Han
     scene.add_reaction(object_slot[c.object], reaction);
     reaction = ObjectWrench{};
   }
+  offer_grasps(scene, object_slot, materials);
   return placed;
+}
+
+void HandPipeline::offer_grasps(SceneObjects& scene, const int32_t* object_slot,
+                                const ForceMaterial* materials) {
+  for (const ContactForce& c : forces_.forces()) {
+    if (!scene.dynamic(object_slot[c.object])) continue;
+    int32_t& entry = grasp_entry_[static_cast<size_t>(c.object)];
+    if (entry < 0) {  // within the capacity: one entry per force at most
+      entry = static_cast<int32_t>(grasp_object_.size());
+      grasp_object_.push_back(c.object);
+      grasp_pushes_.push_back(BodyPushes{});
+    }
+    grasp_pushes_[static_cast<size_t>(entry)][static_cast<size_t>(c.body)] += c.normal_force;
+  }
+  // the haptic palm: a held object moves with the user's hand, and the graphic hand,
+  // kept out of it, with both (it cannot lead the graphic hand, which it blocks)
+  const HandPose& haptic = solver_.target_pose();
+  const RigidPose palm{haptic.palm_position, haptic.palm_rotation};
+  for (size_t e = 0; e < grasp_object_.size(); ++e) {
+    const int32_t object = grasp_object_[e];
+    scene.offer_grasp(object_slot[object], slot_,
+                      squeeze_load(grasp_pushes_[e], materials[object].friction), palm);
+    grasp_entry_[static_cast<size_t>(object)] = -1;
+  }
+  grasp_object_.clear();
+  grasp_pushes_.clear();
 }
 
 void HandPipeline::update_ignored(SceneObjects& scene) {

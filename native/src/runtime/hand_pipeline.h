@@ -16,6 +16,7 @@
 
 #include "forces/contact_forces.h"
 #include "forces/device_outputs.h"
+#include "forces/grasp.h"
 #include "port/hand_port.h"
 #include "runtime/input_playback.h"
 #include "runtime/scene_objects.h"
@@ -62,6 +63,10 @@ class HandPipeline {
   // which placed objects this hand now sinks into, which ignored ones it has left (each
   // change told to the objects), and the hand's object list without the ignored ones
   void update_ignored(SceneObjects& objects);
+  // this step's pushes on each dynamic object, per body: the squeeze offered to the scene
+  // (forces/grasp.h)
+  void offer_grasps(SceneObjects& scene, const int32_t* object_slot,
+                    const ForceMaterial* materials);
 
   HandSolver solver_;
   int32_t slot_;
@@ -71,6 +76,9 @@ class HandPipeline {
   HandState accepted_;            // the last haptic input the solver took
   ContactForces forces_;
   std::vector<ObjectWrench> reactions_;  // this hand's, per object of its list
+  std::vector<int32_t> grasp_entry_;     // per object of its list: its entry below, or -1
+  std::vector<int32_t> grasp_object_;    // the dynamic objects pushed this step
+  std::vector<BodyPushes> grasp_pushes_;  // and their pushes
   // objects that appeared inside this hand (added or put there by the host) are
   // ignored by it until they no longer overlap, so the hand is not trapped in them;
   // while any is, the hand sees its own object list (all sized up front)

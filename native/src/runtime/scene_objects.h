@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "forces/device_outputs.h"
+#include "runtime/contact_cache.h"
 #include "runtime/world_command.h"
 #include "runtime/world_snapshot.h"
 #include "solver/broad_phase.h"
@@ -57,12 +58,40 @@ class SceneObjects final : public ObjectFinder {
   void clear_reactions();
   void add_reaction(int32_t slot, const ObjectWrench& wrench);
 
+  // Holds (forces/grasp.h). A dynamic object whose squeeze by one hand bears its load,
+  // mass x (|gravity| + kGraspMargin), is held by that hand: it moves rigidly with the
+  // hand's haptic palm (the user's) instead of under the pushes (which do not balance), until the
+  // holder's squeeze bears less than kReleaseShare of that load (the share keeps a
+  // grasp from flickering). Let go, it starts with the hand's velocity and the hands'
+  // pushes on it come back over kReleaseRamp seconds, so that fingers still pressing
+  // deep do not fling it. The glove feels the pushes either way.
+  static constexpr double kGraspMargin = 2.0;    // m/s^2 of carrying on top of gravity
+  static constexpr double kReleaseShare = 0.5;
+  static constexpr double kReleaseRamp = 0.1;    // seconds
+  // Rest (see Slot::asleep): below both speeds for this long, a dynamic object sleeps.
+  static constexpr double kSleepSeconds = 0.3;
+  static constexpr double kSleepSpeed = 1e-3;  // m/s
+  static constexpr double kSleepTurn = 0.02;   // rad/s
+  bool dynamic(int32_t slot) const {
+    const Slot& s = slots_[static_cast<size_t>(slot)];
+    return s.tree && s.def.dynamic;
+  }
+  // The squeeze of `hand` on the dynamic object in `slot` this step: the load it bears
+  // (squeeze_load, newtons) and the hand's haptic palm.
+  void offer_grasp(int32_t slot, int32_t hand, double load, const RigidPose& palm);
+  // The hand holding the object in `slot`, or -1.
+  int32_t held_by(int32_t slot) const { return slots_[static_cast<size_t>(slot)].held_by; }
+
   // Every slot as the hands met it, into snapshot (one entry per slot), the one of
   // `buffer` (0..2) of the world's triple buffer: only the slots changed since that
   // buffer was last filled are copied.
   void publish(std::vector<ObjectSnapshot>& snapshot, int buffer);
   // Move the dynamic objects by dt (object_dynamics.h) and forget this step's placings.
   void end_step(const vec3& gravity, double dt);
+
+  // Object pairs whose contact was walked, and answered from the cache (contact_cache.h).
+  int64_t contact_walks() const { return contact_cache_.walks(); }
+  int64_t contact_reuses() const { return contact_cache_.reuses(); }
 
  private:
   struct Slot {
@@ -71,12 +100,39 @@ class SceneObjects final : public ObjectFinder {
     ObjectDef def;          // pose and velocities as the world moves it
     ObjectWrench reaction;  // this step's, from every hand
     uint64_t ignored_by = 0;  // bit h: the hand in slot h
+    // a hold: the holding hand (-1: none) and the object's pose in its haptic palm's frame
+    int32_t held_by = -1;
+    RigidPose in_palm;
+    double pushes_share = 1.0;  // of the hands' reaction that moves it: < 1 just after a hold
+    ObjectWrench carried;       // while held: what carrying it took (its reaction, published)
+    ObjectWrench contact;       // this step's from other objects (object_contact.h)
+    // at rest: a dynamic object that stayed still for kSleepSeconds is neither moved nor
+    // touched against others until something wakes it (a hand's push, a host command,
+    // an object that runs into it)
+    bool asleep = false;
+    double still_for = 0.0;  // seconds
+    // this step's squeezes: the holder's, and the best other hand's
+    double holder_load = 0.0;
+    RigidPose holder_palm;
+    int32_t offer_hand = -1;
+    double offer_load = 0.0;
+    RigidPose offer_palm;
   };
 
   // the slot's snapshot entry changed: each of the three buffers copies it when next filled
   void changed(int32_t slot);
   // the slot's object appeared, went or moved: its leaf in the broad phase follows
   void track(int32_t slot);
+  // one step of a dynamic object: held, taken hold of, let go, or free; then whether it
+  // falls asleep
+  void move_dynamic(Slot& slot, const vec3& gravity, double dt);
+  static void wake(Slot& slot) {
+    slot.asleep = false;
+    slot.still_for = 0.0;
+  }
+  // the contacts of the dynamic object in `slot` with the objects its bounds meet, added
+  // to both sides' contact wrench (a pair of dynamic objects once)
+  void touch_objects(int32_t slot, double dt);
 
   std::vector<Slot> slots_;
   std::vector<int32_t> active_index_;  // per slot: its index in active_, or -1
@@ -93,6 +149,7 @@ class SceneObjects final : public ObjectFinder {
   std::vector<ForceMaterial> active_material_;
   std::vector<uint8_t> placed_;
   bool moved_ = false;
+  ContactCache contact_cache_;  // the dynamic objects' contacts with others
 };
 
 }  // namespace frusta

@@ -55,6 +55,9 @@ struct ObjectSnapshot {
   // bit h: the hand in slot h ignores the object, which was put inside it, until they
   // part (hand_pipeline.h)
   uint64_t ignored_by = 0;
+  // the hand slot holding it in a grasp (scene_objects.h), or -1: while held, reaction is
+  // what carrying it takes, not the hand's pushes
+  int32_t held_by = -1;
 };
 
 struct WorldSnapshot {

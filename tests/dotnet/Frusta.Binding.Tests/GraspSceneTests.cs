@@ -37,12 +37,14 @@ namespace Frusta.Binding.Tests
             var state = new FrustaObjectState();
             var contacts = new FrustaWorldContact[world.MaxContactsPerHand];
             double top = double.NegativeInfinity, liftedAt = double.NaN, restedAt = double.NaN, deepest = 0;
+            int held = 0;
             Vector3d highest = start, end = start;
             int steps = (int)Math.Ceiling((recording.Duration + 0.5) * world.RateHz);
             for (int i = 0; i < steps; ++i)
             {
                 scenario.Step();
                 world.GetObject(marble, ref state);
+                if (state.Held) ++held;
                 Vector3d p = GraspScenario.ToRecording(state.Pose.Position);
                 if (p.Z > top) { top = p.Z; highest = p; }
                 if (double.IsNaN(liftedAt) && !scenario.IsResting(GraspScenario.Marble)) liftedAt = scenario.Time;
@@ -55,12 +57,14 @@ namespace Frusta.Binding.Tests
             double moved = Math.Sqrt(Math.Pow(end.X - start.X, 2) + Math.Pow(end.Y - start.Y, 2));
             output.WriteLine($"lifted at {liftedAt:F3} s, rose {1e2 * (top - start.Z):F1} cm, carried {1e2 * carried:F1} cm along, " +
                              $"at rest at {restedAt:F3} s, {1e2 * moved:F1} cm from the stand, bottom {1e3 * (end.Z - 0.0087 - GraspScenario.TableTop):F3} mm " +
-                             $"above the table; deepest contact {1e3 * deepest:F4} mm");
+                             $"above the table; deepest contact {1e3 * deepest:F4} mm; held {held} steps");
 
             // picked up once pinched (the recording lifts from 2.2 s) and carried 15 cm up, 11 cm along
             Assert.InRange(liftedAt, 1.8, 2.6);
             Assert.True(top - start.Z >= 0.10, $"the marble rose {1e2 * (top - start.Z):F1} cm, not 10");
             Assert.True(carried >= 0.08, $"the marble was carried {1e2 * carried:F1} cm along, not 8");
+            // in the pinch's grasp (FrustaObjectState.Held) for most of the carry (2.2 to 4.2 s)
+            Assert.True(held >= 1500, $"held for {held} steps");
             // let go (4.2 s), it fell onto the table and rests there, still, far from its stand
             Assert.InRange(restedAt, 4.2, 5.0);
             Assert.True(scenario.IsResting(GraspScenario.Marble));

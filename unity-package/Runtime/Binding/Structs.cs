@@ -440,6 +440,10 @@ namespace Frusta.Binding
     {
         /// <summary>true when the world integrates this object.</summary>
         public readonly bool Dynamic => dynamic != 0;
+
+        /// <summary>true while a hand's grasp holds this dynamic object: it moves with that
+        /// hand's palm, and <see cref="ReactionForce"/> is what carrying it takes.</summary>
+        public readonly bool Held => held != 0;
     }
 
     /// <remarks>From <see cref="Default"/>, then edited, then passed to

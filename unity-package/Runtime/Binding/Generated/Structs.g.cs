@@ -643,7 +643,10 @@ namespace Frusta.Binding
         public Vector3d LinearVelocity;
         /// <summary>rad/s</summary>
         public Vector3d AngularVelocity;
-        /// <summary>from every hand, newtons: what a host engine applies</summary>
+        /// <summary>
+        /// from every hand, newtons: what a host engine applies;
+        /// while held, what carrying it takes
+        /// </summary>
         public Vector3d ReactionForce;
         /// <summary>about the pose position, newton-metres</summary>
         public Vector3d ReactionTorque;
@@ -653,8 +656,13 @@ namespace Frusta.Binding
         /// names them)
         /// </summary>
         public int IgnoringHands;
-        /// <summary>explicit padding</summary>
-        internal int reserved0;
+        /// <summary>
+        /// 1: a dynamic object a hand's grasp holds: two of its
+        /// pads oppose and their friction bears its weight, so
+        /// it moves with that hand's palm until the squeeze
+        /// opens (the glove still feels every push)
+        /// </summary>
+        internal int held;
     }
 
     /// <summary>How a glove is opened; from frusta_default_device_def().</summary>

@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: MIT
+// Contact between two objects: a dynamic object resting on a table, dropped onto it, or
+// knocking another. The world had none (a marble let go of fell through the table).
+//
+// The model is one patch per pair of objects, as the hand's forces are one per patch
+// (forces/normal_force.h): the overlapping leaf pairs of the two trees give a depth (the
+// deepest pair's), a normal and a point (their depth-weighted means), so a body meets
+// one surface however finely the trees cover it. The patch pushes as a spring-damper
+// tuned to the pair's effective mass at the patch (turning included): natural frequency
+// kObjectContactHz (or rate / 4 rad/s where that is lower) and critically damped, so
+// any mass and shape settles without ringing, about g / omega^2 deep (0.28 mm at 30 Hz),
+// and the step stays stable at any rate. Friction opposes the patch's sliding, as the
+// same damping up to mu |F| (mu the geometric mean of the two materials'); a relative
+// turn (rolling, spinning) as well, up to kRollingLength |F|. An object at rest on a
+// level table stays put; on a slope it would creep (at g sin(theta) / (2 omega)), which
+// nothing here meets yet.
+#pragma once
+
+#include "forces/device_outputs.h"
+#include "runtime/world_def.h"
+#include "spheretree/sphere_tree.h"
+
+namespace frusta {
+
+constexpr double kObjectContactHz = 30.0;
+constexpr double kRollingLength = 2e-4;  // metres
+
+// One side of a pair: its tree, its state, and its mass (0: it does not yield, as a
+// static object or one a hand holds; its velocities still count).
+struct ContactSide {
+  const SphereTree* tree = nullptr;
+  const ObjectDef* def = nullptr;
+  double mass = 0.0;
+};
+
+// The patch of a pair's overlapping leaves, summed in a's frame as they are found.
+struct ContactPatchSums {
+  double deepest = 0.0, weight = 0.0;
+  vec3 normal_sum{0.0}, point_sum{0.0};
+  // a pair of leaves (both in a's frame); nothing where they do not overlap
+  void add(const Sphere& leaf_a, const Sphere& leaf_b);
+};
+
+// b's pose in a's frame.
+RigidPose relative_pose(const RigidPose& a, const RigidPose& b);
+
+// The wrenches a pair's patch puts on a and on b (each about its own pose position),
+// added to *on_a and *on_b; dt is the world's time step (seconds). Returns whether they
+// touch. At least one side has a mass.
+bool add_patch_wrench(const ContactPatchSums& patch, const ContactSide& a, const ContactSide& b,
+                      double dt, ObjectWrench* on_a, ObjectWrench* on_b);
+
+// The same from a walk of both trees (runtime/contact_cache.h walks less often).
+bool add_object_contact(const ContactSide& a, const ContactSide& b, double dt, ObjectWrench* on_a,
+                        ObjectWrench* on_b);
+
+}  // namespace frusta
