@@ -28,6 +28,7 @@
 #include "devices/frusta_protocol.h"
 #include "devices/recording.h"
 #include "hand/anthropometry.h"
+#include "meshes/meshes.h"
 #include "scenes/hand_scenarios.h"
 #include "tracking/joint_recording.h"
 #include "tracking/joints_from_hand.h"
@@ -39,6 +40,9 @@ using frusta::vec3;
 namespace scenes = frusta::scenes;
 
 constexpr double kFrameRate = 100.0;  // frames per second, as gloves commonly stream
+// the table top, under every point the recorded hand reaches (0.1 mm at the tile, 3.7 mm
+// under the marble's pinch)
+constexpr double kTableTop = -0.065;
 constexpr double kTrackedRate = 90.0;  // frames per second, as a Meta Quest tracks hands
 // the marble's part of the script: released at 4.2 s, fallen out of reach by 4.8 s
 constexpr double kTrackedSeconds = 5.0;
@@ -140,8 +144,18 @@ int main(int argc, char** argv) {
   pose = plate.objects[0].pose;
   pose.position += plate_at;
   object("tile", "tile", pose, 0, 0.1, 0.6, 0.0, 0.0);
-  std::fprintf(out, "event,2.000,dynamic,marble,1\n");  // the host lets go once it is pinched
-  std::fprintf(out, "event,4.800,remove,marble,0\n");   // fallen out of reach: the host drops it
+  // the table under all three stations and the stand the marble lies on, where the Unity
+  // sample has them (GraspScenario.cs: TableTop, the table's and the stand's poses)
+  const vec3 marble_centre = marble.objects[0].pose.position + marble_at;
+  frusta::RigidPose table;
+  table.position = vec3(0.15, 0.28, kTableTop - 0.015);  // samples/objects' table: 3 cm thick
+  object("table", "table", table, 0, 1.0, 0.6, 0.0, 0.0);
+  frusta::RigidPose stand;
+  const double stand_height = marble_centre.z - scenes::kMarbleRadius - kTableTop;
+  stand.position = vec3(marble_centre.x, marble_centre.y, kTableTop + 0.5 * stand_height);
+  object("stand", "stand", stand, 0, 1.0, 0.6, 0.0, 0.0);
+  // the host lets go once it is pinched; let go of by the hand, it falls onto the table
+  std::fprintf(out, "event,2.000,dynamic,marble,1\n");
 
   frusta::Recorder glove;
   std::vector<uint8_t> bytes;
