@@ -292,13 +292,8 @@ void hand_add_remove() {
 }
 
 ObjectHandle drop(World& world, const char* tree, const vec3& at, double mass, bool dynamic) {
-  ObjectDef def;
-  def.pose.position = at;
-  def.dynamic = dynamic;
-  def.mass = mass;
-  def.inertia = vec3(mass * 0.03 * 0.03 / 6.0);
   ObjectHandle handle;
-  world.add_object(scenes::sample_tree(tree), def, &handle);
+  world.add_object(scenes::sample_tree(tree), scenes::object_at(at, mass, dynamic), &handle);
   return handle;
 }
 

@@ -61,6 +61,15 @@ std::shared_ptr<const TreeFile> sample_tree(const std::string& name) {
   return load_once(FRUSTA_SAMPLE_OBJECTS_DIR, name, "frusta_sample_objects");
 }
 
+ObjectDef object_at(const vec3& at, double mass, bool dynamic) {
+  ObjectDef def;
+  def.pose.position = at;
+  def.dynamic = dynamic;
+  def.mass = mass;
+  def.inertia = vec3(mass * 0.03 * 0.03 / 6.0);
+  return def;
+}
+
 const std::vector<TestBox>& test_boxes() {
   static const std::vector<TestBox> boxes = {
       {"press_box", vec3(0.03), 0.0005},

@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "runtime/world_def.h"
 #include "spheretree/tree_file.h"
 
 namespace frusta::scenes {
@@ -22,6 +23,9 @@ namespace frusta::scenes {
 // The sample objects baked at build time (samples/objects): ball, marble, box, plate,
 // tile, bowl, mug, octahedron. Loaded once per process; a missing file throws.
 std::shared_ptr<const TreeFile> sample_tree(const std::string& name);
+// A def for an unrotated object at `at`: static, or dynamic of `mass` kg with the
+// inertia of a 3 cm cube (what a prop dropped on a table needs).
+ObjectDef object_at(const vec3& at, double mass, bool dynamic);
 
 struct TestBox {
   const char* name;

@@ -33,13 +33,9 @@ WorldDef falling_world() {
 }
 
 ObjectHandle add(World& world, const char* tree, const vec3& at, double mass, bool dynamic) {
-  ObjectDef def;
-  def.pose.position = at;
-  def.dynamic = dynamic;
-  def.mass = mass;
-  def.inertia = vec3(mass * 0.03 * 0.03 / 6.0);
   ObjectHandle handle;
-  EXPECT_EQ(world.add_object(scenes::sample_tree(tree), def, &handle), FRUSTA_OK);
+  EXPECT_EQ(world.add_object(scenes::sample_tree(tree), scenes::object_at(at, mass, dynamic), &handle),
+            FRUSTA_OK);
   return handle;
 }
 
