@@ -5,12 +5,12 @@
 // on the world's own step clock. The hand pinches the marble, lifts and carries it 15 cm up and
 // 11 cm along, and opens: the marble falls onto the table and rests there.
 //
-// Frusta has no contact between objects: a dynamic object meets hands only. The table's
-// support is the host's, here: an object resting on a support (the stand, the table, the box)
-// is kinematic until the hands pull it up harder than its weight, then the world moves it
-// (dynamic, under gravity and the hands); a dynamic object falling onto a support's top, with
-// no hand touching it, is put at rest on it. A game with its own physics engine does this part
-// with its engine instead.
+// The world does all of it: the table, the stand and the other fixed objects are kinematic
+// objects of the world, and the marble is dynamic from the start, resting on its stand by the
+// world's contact between objects (it sleeps once still); the pinch's grasp holds it while the
+// hand carries it (FrustaObjectState.Held), and let go it falls onto the table and comes to rest
+// there by the same contact. The host only feeds the recording and, when looping, puts the
+// marble back on its stand.
 using System;
 using System.Collections.Generic;
 using Frusta.Binding;
@@ -41,7 +41,8 @@ namespace Frusta.Samples
         public Vector3d Size { get; set; }
         /// <summary>Where it starts, recording frame.</summary>
         public FrustaPose Pose { get; set; }
-        /// <summary>Picked up by the hand: moved by the world once lifted (else it stays put).</summary>
+        /// <summary>Dynamic: moved by the world (gravity, the hands, the objects it rests on) and put
+        /// back where it started when the scene loops; else kinematic, where it is put.</summary>
         public bool Movable { get; set; }
         /// <summary>Kilograms.</summary>
         public double Mass { get; set; } = 0.1;
@@ -51,14 +52,15 @@ namespace Frusta.Samples
         public double NormalDamping { get; set; }
         /// <summary>N s/m (see frusta_object_def.tangential_damping).</summary>
         public double TangentialDamping { get; set; }
-        /// <summary>A movable object's height from its centre to its bottom, metres.</summary>
+        /// <summary>A movable object's height from its centre to its bottom, metres: its centre rests
+        /// this high over what it lies on.</summary>
         public double Bottom { get; set; }
     }
 
     /// <summary>
     /// The scene's world content and its clock: creates the objects in a world, plays the glove
-    /// recording into a hand at the world's step times, and keeps movable objects on their
-    /// supports. Deterministic: it never reads a wall clock.
+    /// recording into a hand at the world's step times, and puts movable objects back when it
+    /// loops. Deterministic: it never reads a wall clock.
     /// </summary>
     public sealed class GraspScenario
     {
@@ -114,11 +116,8 @@ namespace Frusta.Samples
         readonly FrustaHandId hand;
         readonly GloveRecording recording;
         readonly FrustaObjectId[] ids;
-        readonly bool[] resting;
-        readonly double[] lastBottom;
         readonly double[] angles = new double[FrustaConstants.HandJointCount];
         FrustaWorldState state;
-        FrustaObjectState objectState;
         long steps;
         double origin;      // the recording's time 0 on the world's step clock
         int next;           // the next sample to feed
@@ -155,22 +154,19 @@ namespace Frusta.Samples
             this.hand = hand;
             this.recording = recording ?? throw new ArgumentNullException(nameof(recording));
             ids = new FrustaObjectId[Objects.Count];
-            resting = new bool[Objects.Count];
-            lastBottom = new double[Objects.Count];
             for (int i = 0; i < Objects.Count; ++i)
             {
                 GraspSceneObject o = Objects[i];
                 FrustaObjectDef def = FrustaObjectDef.Default;
                 def.Pose = ToWorld(o.Pose);
                 def.Mass = o.Mass;
+                def.Dynamic = o.Movable;
                 def.Friction = o.Friction;
                 def.NormalDamping = o.NormalDamping;
                 def.TangentialDamping = o.TangentialDamping;
                 byte[] bytes = treeBytes(o.Tree) ?? throw new ArgumentException($"no tree \"{o.Tree}\" for {o.Name}", nameof(treeBytes));
                 using (SphereTree tree = SphereTree.LoadFromMemory(bytes))
                     ids[i] = world.CreateObject(tree, def);
-                resting[i] = o.Movable;  // on its support: kinematic until lifted
-                lastBottom[i] = o.Pose.Position.Z - o.Bottom;
             }
             origin = 1.0 / world.RateHz;  // the first step's time
         }
@@ -193,10 +189,6 @@ namespace Frusta.Samples
         /// <summary>An object's id in the world, by its index in <see cref="Objects"/>.</summary>
         /// <param name="index">0..<see cref="Objects"/>.Count - 1.</param>
         public FrustaObjectId GetObjectId(int index) => ids[index];
-
-        /// <summary>true while a movable object rests on a support (kinematic).</summary>
-        /// <param name="index">0..<see cref="Objects"/>.Count - 1.</param>
-        public bool IsResting(int index) => resting[index];
 
         /// <summary>A pose of the recording's frame in the world.</summary>
         /// <param name="pose">Recording frame.</param>
@@ -223,7 +215,7 @@ namespace Frusta.Samples
         }
 
         /// <summary>One step: the recording's samples up to the step's time go to the hand, the world
-        /// steps, and movable objects are lifted off or put down on their supports.</summary>
+        /// steps, and the step is latched (<see cref="World.Read"/>) for the caller's reads.</summary>
         public void Step()
         {
             double stepTime = (steps + 1) / world.RateHz;  // the world's step clock
@@ -231,8 +223,6 @@ namespace Frusta.Samples
             world.Step();
             ++steps;
             world.Read(ref state);
-            for (int i = 0; i < ids.Length; ++i)
-                if (Objects[i].Movable) Support(i);
         }
 
         // every sample whose time has come, stamped with it: the world plays them input_delay late
@@ -252,70 +242,14 @@ namespace Frusta.Samples
             }
         }
 
-        // the movable objects back where they started, at rest
+        // the movable objects back where they started, at rest (a pose command wakes them)
         void Reset()
         {
             for (int i = 0; i < ids.Length; ++i)
             {
                 if (!Objects[i].Movable) continue;
-                world.SetObjectDynamic(ids[i], false);
                 world.SetObjectPose(ids[i], ToWorld(Objects[i].Pose));
-                resting[i] = true;
-                lastBottom[i] = Objects[i].Pose.Position.Z - Objects[i].Bottom;
             }
-        }
-
-        // the host's support: lifted off when pulled up harder than its weight; caught by the
-        // highest support top it falls onto, when no hand touches it (a held object may dip)
-        void Support(int i)
-        {
-            GraspSceneObject o = Objects[i];
-            try
-            {
-                world.GetObject(ids[i], ref objectState);
-            }
-            catch (FrustaException e) when (e.Result == FrustaResult.StaleId)
-            {
-                return;  // created after the latched step
-            }
-            Vector3d position = ToRecording(objectState.Pose.Position);
-            Vector3d lift = RecordingToWorld.Rotation.Conjugate.Rotate(objectState.ReactionForce);
-            Vector3d velocity = RecordingToWorld.Rotation.Conjugate.Rotate(objectState.LinearVelocity);
-            double weight = -o.Mass * GravityZ;
-            double bottom = position.Z - o.Bottom;
-            if (resting[i])
-            {
-                if (lift.Z > weight)
-                {
-                    world.SetObjectDynamic(ids[i], true);
-                    resting[i] = false;
-                }
-            }
-            else if (objectState.Dynamic && velocity.Z <= 0 && objectState.ReactionForce.Length == 0 &&
-                     SupportTop(position, lastBottom[i], out double top) && bottom <= top)
-            {
-                world.SetObjectDynamic(ids[i], false);
-                var on = new FrustaPose(new Vector3d(position.X, position.Y, top + o.Bottom), Quaterniond.Identity);
-                world.SetObjectPose(ids[i], new FrustaPose(ToWorld(on).Position, objectState.Pose.Rotation));
-                resting[i] = true;
-                bottom = top;
-            }
-            lastBottom[i] = bottom;
-        }
-
-        // the highest top of an unrotated box under a point, at most `below` high (1 mm leeway)
-        static bool SupportTop(Vector3d point, double below, out double top)
-        {
-            top = double.NegativeInfinity;
-            foreach (GraspSceneObject s in Objects)
-            {
-                if (s.Movable || s.Shape != GraspShape.Box || !s.Pose.Rotation.Equals(Quaterniond.Identity)) continue;
-                Vector3d c = s.Pose.Position, half = 0.5 * s.Size;
-                double sTop = c.Z + half.Z;
-                if (Math.Abs(point.X - c.X) <= half.X && Math.Abs(point.Y - c.Y) <= half.Y && sTop <= below + 1e-3 && sTop > top)
-                    top = sTop;
-            }
-            return !double.IsNegativeInfinity(top);
         }
 
         static FrustaPose At(double x, double y, double z) => new FrustaPose(new Vector3d(x, y, z), Quaterniond.Identity);
