@@ -20,6 +20,14 @@ double hand_depth(const HandModel& model, const HandReach& reach, const HandPose
   return depth;
 }
 
+vec3 direction(int ray) {
+  // the rays in the order x, y, z over -1..1, the centre skipped
+  const int index = ray < 13 ? ray : ray + 1;
+  return glm::normalize(vec3(index / 9 - 1, index / 3 % 3 - 1, index % 3 - 1));
+}
+
+constexpr double kPrecision = 1e-6;  // metres: far below any tolerance
+
 }  // namespace
 
 bool hand_is_free(const HandModel& model, const HandReach& reach, const HandPose& pose,
@@ -28,71 +36,84 @@ bool hand_is_free(const HandModel& model, const HandReach& reach, const HandPose
   return hand_depth(model, reach, pose, objects, object_count, scratch) <= tolerance;
 }
 
-bool depenetrate(const HandModel& model, const HandReach& reach, const SolverObject* objects,
-                 int32_t object_count, double tolerance, CandidateSet& scratch, HandState& state) {
-  HandPose pose;
-  forward_kinematics(model, state, pose);
-  const double depth = hand_depth(model, reach, pose, objects, object_count, scratch);
-  if (depth <= tolerance) return true;
-  // nothing free lies further than the hand's and every object's extent
-  double far = 2.0 * reach.hand;
-  for (int32_t o = 0; o < object_count; ++o)
-    if (!objects[o].tree->empty()) far += 2.0 * object_bound(objects[o]).radius;
-  const double stride = std::max(0.002, far / 256.0);
-
+double PlacementSearch::depth_at(const HandModel& model, const HandReach& reach,
+                                 const SolverObject* objects, int32_t object_count,
+                                 CandidateSet& scratch, const HandState& state, int ray, double t) {
   HandState trial = state;
-  auto depth_at = [&](const vec3& direction, double t) {
-    trial.palm_position = state.palm_position + t * direction;
-    forward_kinematics(model, trial, pose);
-    return hand_depth(model, reach, pose, objects, object_count, scratch);
-  };
-  constexpr int kDirections = 26;  // a cube's faces, edges and corners
-  vec3 directions[kDirections];
-  int count = 0;
-  for (int x = -1; x <= 1; ++x)
-    for (int y = -1; y <= 1; ++y)
-      for (int z = -1; z <= 1; ++z)
-        if (x != 0 || y != 0 || z != 0) directions[count++] = glm::normalize(vec3(x, y, z));
+  trial.palm_position = state.palm_position + t * direction(ray);
+  HandPose pose;
+  forward_kinematics(model, trial, pose);
+  return hand_depth(model, reach, pose, objects, object_count, scratch);
+}
 
-  // Each ray marches out from the hand, nearest trial first across all rays, until one
-  // is free; then the rays that could still beat it. A move by s changes how deep any
-  // point sits in a leaf by s at most, so a placement `depth` deep is at least
-  // depth - tolerance from any free one: the march jumps that far (never less than the
-  // stride), and a hand 1.4 cm in costs a few trials a ray, not seven rings of them.
-  // The first free trial of a ray is bisected down to the surface.
-  constexpr double kPrecision = 1e-6;  // metres: far below any tolerance
-  const double start = std::max(stride, depth - tolerance);
-  double next[kDirections], inside[kDirections];
-  std::fill(std::begin(next), std::end(next), start);
-  std::fill(std::begin(inside), std::end(inside), 0.0);
-  double best = far;
-  vec3 best_direction(0.0);
-  for (;;) {
+PlacementSearch::Result PlacementSearch::run(const HandModel& model, const HandReach& reach,
+                                             const SolverObject* objects, int32_t object_count,
+                                             double tolerance, CandidateSet& scratch,
+                                             Clock::time_point deadline, HandState* state) {
+  if (phase_ == Phase::kIdle) {
+    HandPose pose;
+    forward_kinematics(model, *state, pose);
+    const double depth = hand_depth(model, reach, pose, objects, object_count, scratch);
+    if (depth <= tolerance) return Result::kFound;
+    // nothing free lies further than the hand's and every object's extent
+    best_ = 2.0 * reach.hand;
+    for (int32_t o = 0; o < object_count; ++o)
+      if (!objects[o].tree->empty()) best_ += 2.0 * object_bound(objects[o]).radius;
+    stride_ = std::max(0.002, best_ / 256.0);
+    // Each ray marches out from the hand, nearest trial first across all rays, until one
+    // is free; then the rays that could still beat it. A move by s changes how deep any
+    // point sits in a leaf by s at most, so a placement `depth` deep is at least
+    // depth - tolerance from any free one: the march jumps that far (never less than the
+    // stride), and a hand 1.4 cm in costs a few trials a ray, not seven rings of them.
+    // The first free trial of a ray is bisected down to the surface.
+    std::fill(std::begin(next_), std::end(next_), std::max(stride_, depth - tolerance));
+    std::fill(std::begin(inside_), std::end(inside_), 0.0);
+    best_ray_ = -1;
+    phase_ = Phase::kMarching;
+  }
+  // a run stops where its next trial would pass the deadline (judged by the dearest
+  // trial so far), after one trial at least
+  Clock::time_point before = Clock::now();
+  for (bool first = true;; first = false) {
+    if (!first) {
+      const Clock::time_point now = Clock::now();
+      trial_cost_ = std::max(trial_cost_, now - before);
+      before = now;
+      if (now + trial_cost_ > deadline) return Result::kPending;
+    }
+    if (phase_ == Phase::kBisecting) {
+      if (high_ - low_ > kPrecision) {
+        const double mid = 0.5 * (low_ + high_);
+        (depth_at(model, reach, objects, object_count, scratch, *state, ray_, mid) <= tolerance ? high_ : low_) = mid;
+        continue;
+      }
+      if (high_ < best_) {
+        best_ = high_;
+        best_ray_ = ray_;
+      }
+      next_[ray_] = INFINITY;  // this ray's nearest free placement is known
+      phase_ = Phase::kMarching;
+    }
     int ray = -1;
     for (int i = 0; i < kDirections; ++i)
-      if (next[i] < best && (ray < 0 || next[i] < next[ray])) ray = i;
+      if (next_[i] < best_ && (ray < 0 || next_[i] < next_[ray])) ray = i;
     if (ray < 0) break;
-    const double t = next[ray];
-    const double d = depth_at(directions[ray], t);
+    const double t = next_[ray];
+    const double d = depth_at(model, reach, objects, object_count, scratch, *state, ray, t);
     if (d > tolerance) {
-      inside[ray] = t;
-      next[ray] = t + std::max(stride, d - tolerance);
+      inside_[ray] = t;
+      next_[ray] = t + std::max(stride_, d - tolerance);
       continue;
     }
-    double low = inside[ray], high = t;
-    while (high - low > kPrecision) {
-      const double mid = 0.5 * (low + high);
-      (depth_at(directions[ray], mid) <= tolerance ? high : low) = mid;
-    }
-    if (high < best) {
-      best = high;
-      best_direction = directions[ray];
-    }
-    next[ray] = INFINITY;  // this ray's nearest free placement is known
+    phase_ = Phase::kBisecting;
+    ray_ = ray;
+    low_ = inside_[ray];
+    high_ = t;
   }
-  if (best_direction == vec3(0.0)) return false;
-  state.palm_position += best * best_direction;
-  return true;
+  phase_ = Phase::kIdle;
+  if (best_ray_ < 0) return Result::kNone;
+  state->palm_position += best_ * direction(best_ray_);
+  return Result::kFound;
 }
 
 }  // namespace frusta

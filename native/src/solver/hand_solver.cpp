@@ -11,7 +11,6 @@
 #include "core/validate.h"
 #include "geometry/contact_test.h"
 #include "geometry/exact_distance.h"
-#include "solver/depenetration.h"
 #include "solver/finger_stage.h"
 #include "solver/palm_stage.h"
 #include "solver/stage.h"
@@ -141,12 +140,23 @@ frusta_result HandSolver::step(const HandState& haptic, const SolverObject* obje
     heading_ = {graphic_.palm_position, glm::normalize(palm_move), params_.follow_slack};
 
   if (!started_) {
-    HandState start = target;
-    if (!depenetrate(model_, reach_, objects, object_count, params_.penetration_tolerance,
-                     candidates_, start))
-      return fail(FRUSTA_ERROR_OUT_OF_RANGE,
-                  "the haptic hand starts inside objects and no placement near it is free");
-    stats.depenetrated = start.palm_position != target.palm_position;
+    // placed where this search began: a search cut by the deadline goes on next step
+    // from the same hand, and the graphic hand follows the haptic one from there
+    if (!placement_.pending()) placing_ = target;
+    HandState start = placing_;
+    switch (placement_.run(model_, reach_, objects, object_count, params_.penetration_tolerance,
+                           candidates_, deadline, &start)) {
+      case PlacementSearch::Result::kPending:
+        stats.lagging = true;  // no graphic hand yet: nothing to touch or feel
+        if (stats_out) *stats_out = stats;
+        return FRUSTA_OK;
+      case PlacementSearch::Result::kNone:
+        return fail(FRUSTA_ERROR_OUT_OF_RANGE,
+                    "the haptic hand starts inside objects and no placement near it is free");
+      case PlacementSearch::Result::kFound:
+        break;
+    }
+    stats.depenetrated = start.palm_position != placing_.palm_position;
     graphic_ = start;
     forward_kinematics(model_, graphic_, pose_);
     unfinished_ = 0.0;

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "solver/broad_phase.h"
+#include "solver/depenetration.h"
 #include "solver/detection.h"
 #include "solver/palm_stage.h"
 #include "solver/solver_params.h"
@@ -86,7 +87,10 @@ class HandSolver {
   bool overlaps(const SolverObject& object);
 
   // Forget the graphic hand: the next step starts it afresh from the haptic hand.
-  void reset() { started_ = false; }
+  void reset() {
+    started_ = false;
+    placement_ = PlacementSearch{};
+  }
 
   bool started() const { return started_; }
   const HandState& graphic() const { return graphic_; }
@@ -114,6 +118,10 @@ class HandSolver {
   SolverParams params_;
   HandReach reach_;
   bool started_ = false;
+  // a hand that starts inside objects: the search for its placement, which may take
+  // several steps' budgets, and the haptic hand it places
+  PlacementSearch placement_;
+  HandState placing_;
   HandState graphic_;
   HandPose pose_;
   HandPose target_pose_;

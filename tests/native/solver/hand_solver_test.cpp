@@ -8,7 +8,9 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <string>
 
@@ -18,6 +20,7 @@
 #include "core/validate.h"
 #include "hand/anthropometry.h"
 #include "hand/hand_model.h"
+#include "solver/depenetration.h"
 #include "scenario_run.h"
 
 namespace frusta {
@@ -209,6 +212,53 @@ TEST(HandSolverScenario, HapticHandStartingInsideAnObjectIsPlacedOutside) {
   testing::RunLog log = testing::run(solver, s);
   EXPECT_LE(log.max_penetration, kMaxPenetration);
   expect_holds_and_rejects_bad_input(solver, s, log);
+}
+
+// Issue 20: the placement search costs tens of trials (40 and 11.6 ms in start_inside),
+// more than a step's budget. Cut at every trial by a deadline long past, it goes on over
+// the next steps, the hand not placed meanwhile, and places it exactly where the whole
+// search does.
+TEST(HandSolverScenario, APlacementCutByTheDeadlineGoesOnOverTheNextStepsToTheSamePlace) {
+  const HandScenario s = make_hand_scenario("start_inside");
+  const HandModel model = default_model();
+  const HandReach reach = hand_reach(model);
+  CandidateSet scratch;
+  HandState whole = s.haptic(0);
+  PlacementSearch search;
+  ASSERT_EQ(search.run(model, reach, s.objects.data(), 1, SolverParams{}.penetration_tolerance, scratch,
+                       PlacementSearch::Clock::time_point::max(), &whole),
+            PlacementSearch::Result::kFound);
+  ASSERT_FALSE(search.pending());
+  // one trial a run: the same trials in the same order, the same placement to the bit
+  HandState cut = s.haptic(0);
+  int runs = 1;
+  while (search.run(model, reach, s.objects.data(), 1, SolverParams{}.penetration_tolerance, scratch,
+                    PlacementSearch::Clock::time_point::min(), &cut) == PlacementSearch::Result::kPending)
+    ++runs;
+  EXPECT_EQ(cut.palm_position, whole.palm_position);
+  EXPECT_GT(runs, 20) << "the search is meant to take many trials";
+
+  HandSolver solver(model, SolverParams{});
+  const auto gone = HandSolver::Clock::now() - std::chrono::seconds(1);
+  int steps = 0;
+  StepStats stats;
+  do {
+    ASSERT_EQ(solver.step(s.haptic(0), s.objects.data(), 1, &stats, gone), FRUSTA_OK);
+    ++steps;
+    if (!solver.started()) {
+      EXPECT_TRUE(stats.lagging);
+      EXPECT_TRUE(solver.contacts().empty());
+    }
+  } while (!solver.started() && steps < 10000);
+  ASSERT_TRUE(solver.started());
+  std::printf("placed on step %d, one trial a step\n", steps);
+  EXPECT_EQ(steps, runs) << "a trial a step";
+  EXPECT_TRUE(stats.depenetrated);
+  // the step that placed it ran one sub-step from there: the palm's placement is the
+  // whole search's, moved by that sub-step at most Delta_r
+  EXPECT_LE(glm::length(solver.graphic().palm_position - whole.palm_position),
+            SolverParams{}.prediction_margin);
+  EXPECT_LE(scenes::deepest_penetration(solver.model(), solver.graphic_pose(), s.objects), kMaxPenetration);
 }
 
 TEST(HandSolverScenario, PalmPressedFlatOnABoxThenFingersClose) {
