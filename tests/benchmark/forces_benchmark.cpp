@@ -92,6 +92,8 @@ void time_forces(int32_t n, bool last) {
     moved.palm_position = vec3(0.0005 * std::sin(2.0 * M_PI * t / 200.0), 0.0, -0.001);
     haptic_hand_pose(model, moved, haptic);
     ContactForceStats stats;
+    // the objects no force names keep their reaction: zero, as the world keeps them
+    std::fill(reactions.begin(), reactions.end(), ObjectWrench{});
     const Clock::time_point t0 = Clock::now();
     forces.update(graphic, haptic, contacts.data(), n, objects.data(), kObjects, materials.data(),
                   &stats);

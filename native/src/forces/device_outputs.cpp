@@ -60,7 +60,7 @@ frusta_result check_contact_forces(const ContactForce* forces, int32_t count,
 }
 
 void compute_device_outputs(const HandPose& haptic, const ContactForce* forces, int32_t force_count,
-                            const SolverObject* objects, int32_t object_count,
+                            const SolverObject* objects, [[maybe_unused]] int32_t object_count,
                             const DeviceLimits& limits, DeviceOutputs* out,
                             ObjectWrench* reactions) {
   assert(out && force_count >= 0 && object_count >= 0 && (object_count == 0 || reactions));
@@ -72,7 +72,8 @@ void compute_device_outputs(const HandPose& haptic, const ContactForce* forces, 
   // each contact's force acts on the haptic hand (the user's) at its haptic point
   DeviceOutputs result{};
   std::array<vec3, FRUSTA_FINGER_COUNT> finger_force{};
-  for (int32_t i = 0; i < object_count; ++i) reactions[i] = ObjectWrench{};
+  // only the objects the forces name: a room of a thousand props costs nothing here
+  for (int32_t i = 0; i < force_count; ++i) reactions[forces[i].object] = ObjectWrench{};
   for (int32_t i = 0; i < force_count; ++i) {
     const ContactForce& c = forces[i];
     const vec3 total = c.normal_force + c.friction;

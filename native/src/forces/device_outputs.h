@@ -53,7 +53,8 @@ frusta_result check_contact_forces(const ContactForce* forces, int32_t count, in
 
 // From `forces` (a ContactForces' forces() after an update) and the haptic pose that
 // update used: fill `out`, and `reactions` (object_count entries, one per object of
-// `objects`; every one is written, untouched objects with zero).
+// `objects`): the entries of the objects a force names; the others are left as they
+// are (a caller that keeps them zero reads zero there).
 // Preconditions, which the world's own output meets and debug builds assert: out not
 // null, counts >= 0 (reactions not null when object_count > 0); `limits` pass
 // check_device_limits, `haptic` check_hand_pose, `forces` check_contact_forces, the
