@@ -12,10 +12,13 @@
 //    twice the haptic one, the step time and the penetration;
 //  - the step budget: every scenario and the 10^4-leaf grasp under the deadline the world
 //    gives a hand, then tighter ones: time, steps over it, and the forces' continuity;
+//  - detection alone (the tree walks) on the poses of the grasp and the over-budget
+//    scenarios, fingers and palm apart;
 //  - with FRUSTA_WITH_MUJOCO, the same grasp in MuJoCo, side by side.
 // Prints one JSON document. Step times exclude the penetration checks. Arguments name
-// the sections to run (scenarios free edges budget forms leaves knobs threads; default all); flags such
-// as tools/bench's --benchmark_format are ignored.
+// the sections to run (scenarios free edges budget detection forms leaves knobs threads;
+// default all); flags such as tools/bench's --benchmark_format are ignored, but for
+// --leaves=N, which keeps only that row of the leaves section (to profile one row).
 #include <algorithm>
 #include <array>
 #include <atomic>
@@ -23,6 +26,7 @@
 #include <condition_variable>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <mutex>
 #include <string>
@@ -270,6 +274,9 @@ void print_budgeted(const Budgeted& b, double budget_us) {
 int main(int argc, char** argv) {
   using namespace frusta;
   const bench::Sections sections(argc, argv);
+  int32_t only_leaves = 0;  // --leaves=N: that row of the leaves section alone
+  for (int i = 1; i < argc; ++i)
+    if (std::string(argv[i]).rfind("--leaves=", 0) == 0) only_leaves = std::atoi(argv[i] + 9);
   auto wanted = [&](const char* section) { return sections.wanted(section); };
   const SolverParams defaults;
   const std::vector<std::string> names = scenes::hand_scenario_names();
@@ -377,6 +384,63 @@ int main(int argc, char** argv) {
     std::printf("  {\"end\": true}\n],\n");
   }
 
+  // detection alone (issue 21): the tree walks of every body, timed on the graphic hands
+  // the grasp against 10^3..10^6 leaves and the over-budget scenarios step through, with
+  // the palm's share apart (the same walks on a hand without palm spheres); CPU time
+  if (wanted("detection")) {
+    std::printf("\"detection\": [\n");
+    std::vector<std::pair<std::string, scenes::HandScenario>> runs;
+    for (int32_t leaves : {1000, 10000, 100000, 1000000})
+      runs.emplace_back("ball_grasp_" + std::to_string(leaves) + "_leaves",
+                        scenes::ball_grasp(scenes::ball_shell(leaves, 0.04)));
+    for (const char* name : {"plate_teleport", "start_inside"})
+      runs.emplace_back(name, scenes::make_hand_scenario(name));
+    for (size_t r = 0; r < runs.size(); ++r) {
+      const scenes::HandScenario& s = runs[r].second;
+      const HandModel model = make_hand_model(default_hand_def());
+      HandModel fingers_only = model;
+      fingers_only.palm_spheres.clear();
+      const HandReach reach = hand_reach(model);
+      HandSolver solver(model, defaults);
+      std::vector<HandPose> poses;
+      for (int32_t t = 0; t < s.steps + 200; ++t)
+        if (solver.step(t < s.steps ? s.haptic(t) : s.held, s.objects.data(),
+                        static_cast<int32_t>(s.objects.size()), nullptr) == FRUSTA_OK)
+          poses.push_back(solver.graphic_pose());
+      CandidateSet set;
+      std::vector<double> whole_us, fingers_us;
+      int32_t most = 0, most_palm = 0;
+      double visited = 0.0;
+      for (int pass = 0; pass < 2; ++pass)  // the first warms the scratch buffers
+        for (const HandPose& pose : poses)
+          for (int palm = 1; palm >= 0; --palm) {
+            const double start = thread_cpu_us();
+            detect_candidates(palm ? model : fingers_only, reach, pose, s.objects.data(),
+                              static_cast<int32_t>(s.objects.size()), defaults.prediction_margin,
+                              TreeCut(defaults.tree_level, defaults.node_radius), set);
+            const double us = thread_cpu_us() - start;
+            if (pass == 0) continue;
+            (palm ? whole_us : fingers_us).push_back(us);
+            if (palm) {
+              most = std::max(most, static_cast<int32_t>(set.candidates.size()));
+              most_palm = std::max(most_palm, set.count(kPalmBody));
+              visited += set.tree_nodes_visited;
+            }
+          }
+      std::vector<double> palm_us(whole_us.size());
+      for (size_t i = 0; i < whole_us.size(); ++i) palm_us[i] = whole_us[i] - fingers_us[i];
+      std::printf("  {\"name\": \"%s\", \"poses\": %zu, \"cpu_p50_us\": %.2f, \"cpu_p99_us\": %.2f, "
+                  "\"cpu_max_us\": %.2f, \"fingers_cpu_p50_us\": %.2f, \"fingers_cpu_p99_us\": %.2f, "
+                  "\"palm_cpu_p50_us\": %.2f, \"palm_cpu_p99_us\": %.2f, \"max_candidates\": %d, "
+                  "\"max_palm_candidates\": %d, \"nodes_visited_per_call\": %.1f}%s\n",
+                  runs[r].first.c_str(), poses.size(), percentile(whole_us, 0.5), percentile(whole_us, 0.99),
+                  percentile(whole_us, 1.0), percentile(fingers_us, 0.5), percentile(fingers_us, 0.99),
+                  percentile(palm_us, 0.5), percentile(palm_us, 0.99), most, most_palm,
+                  visited / std::max(1.0, static_cast<double>(poses.size())), r + 1 < runs.size() ? "," : "");
+    }
+    std::printf("],\n");
+  }
+
   // the two constraint forms on the same scripts
   if (wanted("forms")) {
   std::printf("\"forms\": [\n");
@@ -398,6 +462,7 @@ int main(int argc, char** argv) {
   std::printf("\"grasp_by_leaves\": [\n");
   const int32_t counts[] = {100, 1000, 4000, 10000, 100000, 1000000};
   for (size_t i = 0; i < std::size(counts); ++i) {
+    if (only_leaves > 0 && counts[i] != only_leaves) continue;
     const std::shared_ptr<const TreeFile> ball = scenes::ball_shell(counts[i], 0.04);
     const scenes::HandScenario s = scenes::ball_grasp(ball);
     const Measured m = measure(s, defaults, 200, counts[i] >= 100000 ? 10 : 1);
