@@ -18,7 +18,8 @@
 // Prints one JSON document. Step times exclude the penetration checks. Arguments name
 // the sections to run (scenarios free edges budget detection forms leaves knobs threads;
 // default all); flags such as tools/bench's --benchmark_format are ignored, but for
-// --leaves=N, which keeps only that row of the leaves section (to profile one row).
+// --leaves=N and --scene=NAME, which keep one row of the leaves and budget sections (to
+// profile it).
 #include <algorithm>
 #include <array>
 #include <atomic>
@@ -274,9 +275,15 @@ void print_budgeted(const Budgeted& b, double budget_us) {
 int main(int argc, char** argv) {
   using namespace frusta;
   const bench::Sections sections(argc, argv);
-  int32_t only_leaves = 0;  // --leaves=N: that row of the leaves section alone
-  for (int i = 1; i < argc; ++i)
-    if (std::string(argv[i]).rfind("--leaves=", 0) == 0) only_leaves = std::atoi(argv[i] + 9);
+  // to profile one row: --leaves=N keeps the leaves section's N-leaf grasp alone (no
+  // node-radius row), --scene=NAME the budget section's scenario at the world's budget
+  int32_t only_leaves = 0;
+  std::string only_scene;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg.rfind("--leaves=", 0) == 0) only_leaves = std::atoi(arg.c_str() + 9);
+    if (arg.rfind("--scene=", 0) == 0) only_scene = arg.substr(8);
+  }
   auto wanted = [&](const char* section) { return sections.wanted(section); };
   const SolverParams defaults;
   const std::vector<std::string> names = scenes::hand_scenario_names();
@@ -372,11 +379,13 @@ int main(int argc, char** argv) {
     for (const std::string& name : names) runs.emplace_back(name, scenes::make_hand_scenario(name));
     runs.emplace_back("ball_grasp_10k_leaves", scenes::ball_grasp(scenes::ball_shell(10000, 0.04)));
     for (const auto& [name, s] : runs) {
+      if (!only_scene.empty() && name != only_scene) continue;
       std::printf("  {\"name\": \"%s\", ", name.c_str());
       print_budgeted(measure_budgeted(s, period_budget_us, 200, 5), period_budget_us);
       std::printf("},\n");
     }
     for (double tight_us : {100.0, 30.0}) {
+      if (!only_scene.empty()) break;
       std::printf("  {\"name\": \"ball_grasp_10k_leaves\", ");
       print_budgeted(measure_budgeted(runs.back().second, tight_us, 200, 5), tight_us);
       std::printf("},\n");
@@ -491,7 +500,7 @@ int main(int argc, char** argv) {
     }
 #endif
     std::printf("},\n");
-    if (counts[i] >= 10000)  // the same grasp with nodes of <= 0.5 mm standing in for their leaves
+    if (counts[i] >= 10000 && only_leaves == 0)  // the same grasp with nodes of <= 0.5 mm standing in for their leaves
       for (double radius : {0.0005}) {
         SolverParams p = defaults;
         p.node_radius = radius;
