@@ -63,9 +63,17 @@ double percentile(std::vector<double> v, double p) {
   return v[static_cast<size_t>(std::min<double>(static_cast<double>(v.size()) - 1.0, p * static_cast<double>(v.size())))];
 }
 
+// This thread's CPU time, microseconds: what a step costs, without the time the OS gave
+// other work meanwhile (a shared machine preempts a bench for milliseconds).
+double thread_cpu_us() {
+  timespec now{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return 1e6 * static_cast<double>(now.tv_sec) + 1e-3 * static_cast<double>(now.tv_nsec);
+}
+
 struct Measured {
   int32_t steps = 0, failed_steps = 0;
-  std::vector<double> step_us;
+  std::vector<double> step_us, cpu_us;  // wall and this thread's CPU time of each step
   int32_t max_contacts = 0, max_candidates = 0, max_substeps = 0;
   double qp_iterations = 0, iterations = 0, finger_solves = 0;
   double max_penetration = 0.0;  // metres
@@ -103,9 +111,11 @@ Measured measure(const scenes::HandScenario& s, const SolverParams& params, int3
   for (int32_t t = 0; t < total; ++t) {
     const HandState haptic = t < s.steps ? s.haptic(t) : s.held;
     StepStats stats;
+    const double cpu_start = thread_cpu_us();
     const Clock::time_point start = Clock::now();
     const frusta_result r = solver.step(haptic, s.objects.data(), static_cast<int32_t>(s.objects.size()), &stats);
     m.step_us.push_back(micros(Clock::now() - start));
+    m.cpu_us.push_back(thread_cpu_us() - cpu_start);
     ++m.steps;
     if (r != FRUSTA_OK) {
       ++m.failed_steps;
@@ -133,11 +143,13 @@ void print_measured(const Measured& m) {
               "\"max_contacts\": %d, \"max_candidates\": %d, \"max_substeps\": %d, "
               "\"qp_iterations_per_step\": %.2f, \"linearisations_per_step\": %.2f, "
               "\"finger_solves_per_step\": %.2f, \"lagged\": %s, \"infeasible_qp\": %s, "
-              "\"max_penetration_mm\": %.6f, \"max_standoff_mm\": %.4f",
+              "\"max_penetration_mm\": %.6f, \"max_standoff_mm\": %.4f, \"cpu_p50_us\": %.2f, "
+              "\"cpu_p99_us\": %.2f, \"cpu_max_us\": %.2f",
               m.steps, m.failed_steps, percentile(m.step_us, 0.5), percentile(m.step_us, 0.99),
               percentile(m.step_us, 1.0), m.max_contacts, m.max_candidates, m.max_substeps,
               m.qp_iterations / n, m.iterations / n, m.finger_solves / n, m.lagged ? "true" : "false",
-              m.infeasible ? "true" : "false", m.max_penetration * 1e3, m.max_standoff * 1e3);
+              m.infeasible ? "true" : "false", m.max_penetration * 1e3, m.max_standoff * 1e3,
+              percentile(m.cpu_us, 0.5), percentile(m.cpu_us, 0.99), percentile(m.cpu_us, 1.0));
 }
 
 // One finger's solve is microseconds: a hand-off to another thread and back is the
@@ -195,14 +207,6 @@ double sleep_round_trip_us() {
 // (solver and forces) and the steps over the budget, beside how often the budget bound,
 // how far the lag limit held a push back, how far a body's push changed beyond the
 // continuity bound where it bound, and the penetration.
-// This thread's CPU time, microseconds: what a step costs, without the time the OS gave
-// other work meanwhile (a shared machine preempts a bench for milliseconds).
-double thread_cpu_us() {
-  timespec now{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
-  return 1e6 * static_cast<double>(now.tv_sec) + 1e-3 * static_cast<double>(now.tv_nsec);
-}
-
 struct Budgeted {
   std::vector<double> step_us, cpu_us;  // wall and CPU time of each step
   int32_t over = 0, lagged = 0;
