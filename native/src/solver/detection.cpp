@@ -28,12 +28,89 @@ int32_t query_into(std::vector<TreeHit>& hits, Query query) {
   return stats.hits;
 }
 
+// Deal the hits of the walks for palm spheres [first, first + run) out to the spheres
+// that reach them, sphere by sphere, keeping their order (object, then node): the order
+// of one walk per sphere.
+void deal_out(const SolverObject* objects, int32_t first, int run, CandidateSet& out) {
+  int32_t count[kMaxProbes] = {};
+  for (const MaskedHit& h : out.masked_hits)
+    for (uint64_t rest = h.probes; rest != 0; rest &= rest - 1) ++count[lowest_bit(rest)];
+  int32_t next[kMaxProbes];
+  int32_t end = static_cast<int32_t>(out.candidates.size());
+  for (int k = 0; k < run; ++k) {
+    next[k] = end;
+    end += count[k];
+  }
+  out.candidates.resize(static_cast<size_t>(end));
+  for (const MaskedHit& h : out.masked_hits) {
+    // an inner node cut off by the level stands in for every leaf below it
+    const RigidPose& pose = objects[h.object].pose;
+    const Sphere world{pose.rotation * h.local.center + pose.position, h.local.radius};
+    for (uint64_t rest = h.probes; rest != 0; rest &= rest - 1) {
+      const int k = lowest_bit(rest);
+      out.candidates[static_cast<size_t>(next[k]++)] = {h.object, h.hit.leaf, first + k, world};
+    }
+  }
+}
+
+// The palm's candidates, in the order of one walk per palm sphere (sphere, then object,
+// then node order): each object's tree is walked once for up to 64 palm spheres,
+// skipping the nodes out of reach of the box around them all, and its hits are then
+// dealt out to the spheres that reach them.
+void detect_palm(const HandModel& model, const HandReach& reach, const HandPose& pose,
+                 const SolverObject* objects, double margin, TreeCut cut, CandidateSet& out) {
+  const int32_t palm_count = static_cast<int32_t>(model.palm_spheres.size());
+  const glm::dmat3 to_palm = glm::transpose(pose.palm_rotation);
+  Sphere world[kMaxProbes], local[kMaxProbes];
+  for (int32_t first = 0; first < palm_count; first += kMaxProbes) {
+    const int run = static_cast<int>(std::min<int32_t>(kMaxProbes, palm_count - first));
+    for (int k = 0; k < run; ++k) world[k] = palm_sphere(model, pose, first + k);
+    out.masked_hits.clear();
+    for (int32_t o : out.near_objects) {
+      const SolverObject& obj = objects[o];
+      const Sphere bound = object_bound(obj);
+      uint64_t spheres = 0;
+      for (int k = 0; k < run; ++k) {
+        if (!bounds_meet(world[k], bound, margin)) continue;
+        spheres |= uint64_t{1} << k;
+        local[k] = to_object_frame(obj.pose, world[k]);
+      }
+      if (spheres == 0) continue;
+      // a node's centre in the palm's frame: rotation * centre + shift; a node out of
+      // reach of the centres' box (with a micron to spare for rounding) is out of reach
+      // of every palm sphere, whose own test then fails
+      const glm::dmat3 rotation = to_palm * obj.pose.rotation;
+      const vec3 shift = to_palm * (obj.pose.position - pose.palm_position);
+      const double spare =
+          1e-6 + 1e-12 * (glm::length(shift) + glm::length(bound.center - obj.pose.position) + bound.radius);
+      auto near = [&](const Sphere& s) {
+        const vec3 p = rotation * s.center + shift;
+        const vec3 outside = glm::max(reach.palm_low - p, glm::max(vec3(0.0), p - reach.palm_high));
+        const double within = s.radius + reach.palm_radius + margin + spare;
+        return glm::dot(outside, outside) <= within * within;
+      };
+      const TreeQueryStats stats = walk_tree_masked(
+          *obj.tree, spheres, near, [&](int k, const Sphere& s) { return may_touch_sphere(local[k], s, margin); },
+          cut, [&](const TreeHit& hit, uint64_t reached, const Sphere& tested) {
+          out.masked_hits.push_back({o, hit, reached, tested});
+        });
+      out.tree_nodes_visited += stats.visited;
+    }
+    deal_out(objects, first, run, out);
+  }
+}
+
 }  // namespace
 
 HandReach hand_reach(const HandModel& model) {
   HandReach reach;
-  for (const Sphere& s : model.palm_spheres)
+  for (size_t k = 0; k < model.palm_spheres.size(); ++k) {
+    const Sphere& s = model.palm_spheres[k];
     reach.hand = std::max(reach.hand, glm::length(s.center) + s.radius);
+    reach.palm_low = k == 0 ? s.center : glm::min(reach.palm_low, s.center);
+    reach.palm_high = k == 0 ? s.center : glm::max(reach.palm_high, s.center);
+    reach.palm_radius = std::max(reach.palm_radius, s.radius);
+  }
   for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
     const FingerModel& finger = model.fingers[f];
     const double radius = *std::max_element(finger.radius.begin(), finger.radius.end());
@@ -134,20 +211,7 @@ void detect_candidates(const HandModel& model, const HandReach& reach, const Han
     }
   }
   out.begin[kPalmBody] = static_cast<int32_t>(out.candidates.size());
-  for (int32_t k = 0; k < static_cast<int32_t>(model.palm_spheres.size()); ++k) {
-    const Sphere world = palm_sphere(model, pose, k);
-    for (int32_t o : out.near_objects) {
-      const SolverObject& obj = objects[o];
-      if (!bounds_meet(world, object_bound(obj), margin)) continue;
-      const Sphere local = to_object_frame(obj.pose, world);
-      const int32_t count = query_into(out.hits, [&](TreeHit* hits, int32_t capacity) {
-        const TreeQueryStats stats = query_sphere(*obj.tree, local, margin, cut, hits, capacity);
-        out.tree_nodes_visited += stats.visited;
-        return stats;
-      });
-      add_hits(o, count, k);
-    }
-  }
+  detect_palm(model, reach, pose, objects, margin, cut, out);
   out.begin[kBodyCount] = static_cast<int32_t>(out.candidates.size());
 }
 

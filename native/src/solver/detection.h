@@ -29,6 +29,15 @@ struct Candidate {
   Sphere world;      // the leaf in world coordinates
 };
 
+// A node one walk for many probes reached (walk_tree_masked), with the probes that reach
+// it: palm spheres, bits of a run of 64.
+struct MaskedHit {
+  int32_t object = 0;
+  TreeHit hit{};
+  uint64_t probes = 0;
+  Sphere local;  // the leaf (or cut node) in the object's frame, as the walk read it
+};
+
 // Candidates grouped by body: body b owns [begin[b], begin[b + 1]).
 struct CandidateSet {
   std::vector<Candidate> candidates;
@@ -36,6 +45,7 @@ struct CandidateSet {
   int32_t tree_nodes_visited = 0;
   // scratch kept between calls
   std::vector<TreeHit> hits;
+  std::vector<MaskedHit> masked_hits;
   std::vector<int32_t> near_objects;
 
   int32_t count(int body) const { return begin[body + 1] - begin[body]; }
@@ -51,6 +61,9 @@ struct HandReach {
   std::array<double, FRUSTA_FINGER_COUNT> finger{};  // ... of the finger's first joint
   // how far a finger point can move per radian of each joint (lever arm bound)
   std::array<std::array<double, FRUSTA_JOINTS_PER_FINGER>, FRUSTA_FINGER_COUNT> lever{};
+  // the palm spheres' centres lie in this box of the palm's frame; none is larger
+  vec3 palm_low{0.0}, palm_high{0.0};
+  double palm_radius = 0.0;
 };
 
 HandReach hand_reach(const HandModel& model);

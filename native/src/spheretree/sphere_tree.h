@@ -8,6 +8,9 @@
 #include <vector>
 
 #include <glm/mat3x3.hpp>
+#if defined(_MSC_VER)
+#include <intrin.h>  // _BitScanForward64
+#endif
 
 #include "geometry/segment_frame.h"
 #include "geometry/types.h"
@@ -91,6 +94,62 @@ TreeQueryStats walk_tree(const SphereTree& tree, Touches touches, TreeCut cut, E
     }
     // children pushed last-first so they pop in array order
     for (int32_t c = n.count - 1; c >= 0; --c) stack[top++] = {n.first + c, e.level + 1};
+  }
+  return stats;
+}
+
+// Index of the lowest set bit of a non-zero mask.
+inline int lowest_bit(uint64_t mask) {
+#if defined(_MSC_VER)
+  unsigned long index;
+  _BitScanForward64(&index, mask);
+  return static_cast<int>(index);
+#else
+  return __builtin_ctzll(mask);
+#endif
+}
+
+// The most probes one walk_tree_masked carries: the bits of its masks.
+constexpr int kMaxProbes = 64;
+
+// walk_tree for up to kMaxProbes probes at once (a body made of many spheres): one descent
+// carrying, per node, the probes whose own walk would reach it. touches(k, sphere) is
+// probe k's test; `near(sphere)` a cheap test that must be false only where every
+// probe's is (a bound around them all), asked first so most far nodes cost one test.
+// emit(TreeHit, mask, sphere) gets every node that walk_tree(probe k) would emit, for each
+// k in mask, in node order, with the sphere tested (the leaf's, or the cut node's); `probes` are the ones to walk (their own bound tests passed).
+// `visited` counts nodes popped, as walk_tree's (one walk here, not one per probe).
+template <class Near, class Touches, class Emit>
+TreeQueryStats walk_tree_masked(const SphereTree& tree, uint64_t probes, Near near, Touches touches,
+                                TreeCut cut, Emit emit) {
+  TreeQueryStats stats;
+  if (tree.empty() || probes == 0) return stats;
+  struct Entry {
+    int32_t node, level;
+    uint64_t probes;  // those that reached the parent
+  };
+  Entry stack[kMaxTreeDepth * kMaxBranching + 1];
+  int top = 0;
+  stack[top++] = {0, 0, probes};
+  while (top > 0) {
+    const Entry e = stack[--top];
+    const TreeNode& n = tree.nodes[static_cast<size_t>(e.node)];
+    ++stats.visited;
+    const bool leaf = n.count == 0;
+    const Sphere sphere = leaf ? tree.leaves[static_cast<size_t>(n.first)] : tree.node_sphere(e.node);
+    if (!near(sphere)) continue;
+    uint64_t reached = 0;
+    for (uint64_t rest = e.probes; rest != 0; rest &= rest - 1) {
+      const int k = lowest_bit(rest);
+      if (touches(k, sphere)) reached |= uint64_t{1} << k;
+    }
+    if (reached == 0) continue;
+    if (leaf || e.level == cut.max_level || (cut.max_radius > 0.0 && n.radius <= cut.max_radius)) {
+      emit(TreeHit{e.node, leaf ? n.first : -1}, reached, sphere);
+      ++stats.hits;
+      continue;
+    }
+    for (int32_t c = n.count - 1; c >= 0; --c) stack[top++] = {n.first + c, e.level + 1, reached};
   }
   return stats;
 }

@@ -1,0 +1,157 @@
+// SPDX-License-Identifier: MIT
+// Contact prediction walks each tree once for many probes (issue 21): its candidates
+// must be those of one walk per finger segment and per palm sphere, in that order, bit
+// for bit, since the solver's answer depends on their order.
+#include <random>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "hand/anthropometry.h"
+#include "hand/hand_model.h"
+#include "scenes/hand_scenarios.h"
+#include "solver/detection.h"
+
+namespace frusta {
+namespace {
+
+bool bounds_meet(const Sphere& a, const Sphere& b, double margin) {
+  return glm::length(a.center - b.center) <= a.radius + b.radius + margin;
+}
+
+// Detection as it was: one walk per finger segment, then one per palm sphere, each from
+// the root of every near object's tree.
+std::vector<Candidate> walk_per_probe(const HandModel& model, const HandReach& reach,
+                                      const HandPose& pose, const std::vector<SolverObject>& objects,
+                                      double margin, TreeCut cut, int32_t begin[kBodyCount + 1],
+                                      std::vector<TreeHit>& hits) {
+  std::vector<Candidate> out;
+  std::vector<int32_t> near;
+  const Sphere hand_bound{pose.palm_position, reach.hand};
+  for (int32_t o = 0; o < static_cast<int32_t>(objects.size()); ++o)
+    if (!objects[o].tree->empty() && bounds_meet(hand_bound, object_bound(objects[o]), margin))
+      near.push_back(o);
+  const int32_t capacity = static_cast<int32_t>(hits.size());
+  auto add = [&](int32_t o, int32_t count, int32_t part) {
+    const SolverObject& obj = objects[static_cast<size_t>(o)];
+    for (int32_t h = 0; h < count; ++h) {
+      const TreeHit& hit = hits[static_cast<size_t>(h)];
+      const Sphere local = hit.leaf >= 0 ? obj.tree->leaves[static_cast<size_t>(hit.leaf)]
+                                         : obj.tree->node_sphere(hit.node);
+      out.push_back({o, hit.leaf, part, {obj.pose.rotation * local.center + obj.pose.position, local.radius}});
+    }
+  };
+  for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
+    const Sphere finger_bound{pose.fingers[f].joint[0], reach.finger[f]};
+    for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s) {
+      begin[f * FRUSTA_SEGMENTS_PER_FINGER + s] = static_cast<int32_t>(out.size());
+      for (int32_t o : near) {
+        const SolverObject& obj = objects[static_cast<size_t>(o)];
+        if (!bounds_meet(finger_bound, object_bound(obj), margin)) continue;
+        const SegmentFrame frame = make_segment_frame(to_object_frame(obj.pose, finger_segment(model, pose, f, s)));
+        const TreeQueryStats stats = query_segment(*obj.tree, frame, margin, cut, hits.data(), capacity);
+        EXPECT_LE(stats.hits, capacity);
+        add(o, stats.hits, 0);
+      }
+    }
+  }
+  begin[kPalmBody] = static_cast<int32_t>(out.size());
+  for (int32_t k = 0; k < static_cast<int32_t>(model.palm_spheres.size()); ++k) {
+    const Sphere world = palm_sphere(model, pose, k);
+    for (int32_t o : near) {
+      const SolverObject& obj = objects[static_cast<size_t>(o)];
+      if (!bounds_meet(world, object_bound(obj), margin)) continue;
+      const TreeQueryStats stats =
+          query_sphere(*obj.tree, to_object_frame(obj.pose, world), margin, cut, hits.data(), capacity);
+      EXPECT_LE(stats.hits, capacity);
+      add(o, stats.hits, k);
+    }
+  }
+  begin[kBodyCount] = static_cast<int32_t>(out.size());
+  return out;
+}
+
+// The objects' bits, compared exactly: an order or a rounding apart is a difference.
+void expect_same(const std::vector<Candidate>& expected, const int32_t* expected_begin,
+                 const CandidateSet& got, const std::string& what) {
+  for (int b = 0; b <= kBodyCount; ++b) ASSERT_EQ(expected_begin[b], got.begin[b]) << what << ", body " << b;
+  ASSERT_EQ(expected.size(), got.candidates.size()) << what;
+  for (size_t i = 0; i < expected.size(); ++i) {
+    const Candidate &e = expected[i], &g = got.candidates[i];
+    ASSERT_TRUE(e.object == g.object && e.leaf == g.leaf && e.part == g.part &&
+                e.world.center == g.world.center && e.world.radius == g.world.radius)
+        << what << ", candidate " << i << ": object " << e.object << "/" << g.object << ", leaf " << e.leaf
+        << "/" << g.leaf << ", part " << e.part << "/" << g.part;
+  }
+}
+
+glm::dmat3 random_rotation(std::mt19937_64& rng) {
+  std::normal_distribution<double> gauss;
+  return glm::mat3_cast(glm::normalize(glm::dquat{gauss(rng), gauss(rng), gauss(rng), gauss(rng)}));
+}
+
+// Hands closed by random amounts and moved about a ball, a box and a plate turned at
+// random, so that fingers and palm cross them at every depth; leaves and both cuts.
+void check_random_hands(const HandModel& model, int32_t draws, uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0), offset(-0.06, 0.06);
+  const HandReach reach = hand_reach(model);
+  const std::shared_ptr<const TreeFile> ball = scenes::ball_shell(4000, 0.04);
+  const std::shared_ptr<const TreeFile> box = scenes::sample_tree("box"), plate = scenes::sample_tree("plate");
+  const TreeCut cuts[] = {TreeCut(), TreeCut(2), TreeCut(-1, 0.0005)};
+  CandidateSet set;
+  std::vector<TreeHit> hits(1 << 16);
+  int64_t finger_candidates = 0, palm_candidates = 0;
+  for (int32_t draw = 0; draw < draws; ++draw) {
+    HandState state = scenes::open_hand();
+    const double closed = unit(rng);
+    for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) scenes::set_flexion(state, f, 1.6 * closed, 1.6 * closed, 1.6 * closed);
+    state.palm_rotation = glm::quat_cast(random_rotation(rng));
+    HandPose pose;
+    forward_kinematics(model, state, pose);
+    // each object near a random point of the hand: a fingertip, a knuckle or the palm
+    std::vector<SolverObject> objects;
+    for (const auto& tree : {ball, box, plate}) {
+      const int finger = static_cast<int>(unit(rng) * FRUSTA_FINGER_COUNT) % FRUSTA_FINGER_COUNT;
+      const vec3 at = unit(rng) < 0.4 ? pose.palm_position + pose.palm_rotation * vec3(0.05, 0.0, 0.0)
+                                      : pose.fingers[finger].joint[static_cast<int>(unit(rng) * 4) % 4];
+      const Sphere local = tree->tree.node_sphere(0);
+      const glm::dmat3 rotation = random_rotation(rng);
+      // the tree's surface within a few centimetres of that point
+      const vec3 toward = glm::normalize(vec3(offset(rng), offset(rng), offset(rng)) + vec3(1e-9));
+      objects.push_back({&tree->tree, {at - rotation * local.center + toward * local.radius * unit(rng), rotation}});
+    }
+    for (const TreeCut& cut : cuts)
+      for (double margin : {0.002, 0.0}) {
+        int32_t begin[kBodyCount + 1];
+        const std::vector<Candidate> expected = walk_per_probe(model, reach, pose, objects, margin, cut, begin, hits);
+        detect_candidates(model, reach, pose, objects.data(), static_cast<int32_t>(objects.size()), margin, cut, set);
+        expect_same(expected, begin, set,
+                    "draw " + std::to_string(draw) + ", level " + std::to_string(cut.max_level) + ", radius " +
+                        std::to_string(cut.max_radius) + ", margin " + std::to_string(margin));
+        if (testing::Test::HasFatalFailure()) return;
+        finger_candidates += set.begin[kPalmBody];
+        palm_candidates += set.count(kPalmBody);
+      }
+  }
+  // the draws put both the fingers and the palm into the objects, often
+  EXPECT_GT(finger_candidates, 100 * draws);
+  EXPECT_GT(palm_candidates, 100 * draws);
+}
+
+TEST(SolverDetection, OneWalkForManyProbesFindsWhatOneWalkPerProbeFindsInItsOrder) {
+  check_random_hands(make_hand_model(default_hand_def()), 300, 21);
+}
+
+// A palm of more spheres than one mask holds is walked in runs of 64.
+TEST(SolverDetection, APalmOfMoreThan64SpheresFindsWhatOneWalkPerSphereFinds) {
+  HandDef def = default_hand_def();
+  def.palm_thickness *= 0.5;
+  const HandModel model = make_hand_model(def);
+  ASSERT_GT(model.palm_spheres.size(), 64u);
+  check_random_hands(model, 60, 22);
+}
+
+}  // namespace
+}  // namespace frusta
