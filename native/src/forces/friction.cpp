@@ -14,8 +14,7 @@ PatchFriction patch_friction(const ForceMaterial& material, const RigidPose& obj
   // in the plane of the patch's mean normal. The motion is that of the body's frame, not
   // of the contacts' mean point, so leaves joining or leaving the patch move nothing
   const glm::dmat3 to_object = glm::transpose(object.rotation);
-  const RigidPose body_on_object{to_object * (body.position - object.position),
-                                 to_object * body.rotation};
+  const RigidPose body_on_object = relative_pose(object, body);
   vec3 stretch(0.0), before_held(0.0);
   if (before) {
     const vec3 local = glm::transpose(body.rotation) * (reference - body.position);

@@ -25,11 +25,6 @@ void ContactPatchSums::add(const Sphere& la, const Sphere& lb) {
   point_sum += depth * (lb.center + (lb.radius - 0.5 * depth) * n);
 }
 
-RigidPose relative_pose(const RigidPose& a, const RigidPose& b) {
-  const glm::dmat3 to_a = glm::transpose(a.rotation);
-  return {to_a * (b.position - a.position), to_a * b.rotation};
-}
-
 bool add_object_contact(const ContactSide& a, const ContactSide& b, double dt, ObjectWrench* on_a,
                         ObjectWrench* on_b) {
   ContactPatchSums patch;
@@ -54,17 +49,18 @@ bool add_patch_wrench(const ContactPatchSums& patch, const ContactSide& a, const
     return o.linear_velocity + glm::cross(o.angular_velocity, point - o.pose.position);
   };
   const vec3 slide = velocity_at(*a.def) - velocity_at(*b.def);
+  // a side's inverse inertia about a world axis (its moments are in its own frame)
+  auto turns = [](const ContactSide& side, const vec3& axis) {
+    const vec3 body = glm::transpose(side.def->pose.rotation) * axis;
+    return glm::dot(body, body / side.def->inertia);
+  };
   // how readily the pair gives at the patch along a direction: the effective mass's
   // inverse, turning included (a box pushed at its corner turns as much as it moves)
   auto give = [&](const vec3& direction) {
     double sum = 0.0;
-    for (const ContactSide* side : {&a, &b}) {
-      if (!(side->mass > 0.0)) continue;
-      const glm::dmat3& r = side->def->pose.rotation;
-      const vec3 arm = glm::cross(point - side->def->pose.position, direction);
-      const vec3 body = glm::transpose(r) * arm;
-      sum += 1.0 / side->mass + glm::dot(body, body / side->def->inertia);
-    }
+    for (const ContactSide* side : {&a, &b})
+      if (side->mass > 0.0)
+        sum += 1.0 / side->mass + turns(*side, glm::cross(point - side->def->pose.position, direction));
     return sum;
   };
   const double omega = std::min(2.0 * glm::pi<double>() * kObjectContactHz, 0.25 / dt);
@@ -88,11 +84,8 @@ bool add_patch_wrench(const ContactPatchSums& patch, const ContactSide& a, const
   if (rate > 0.0) {
     const vec3 u = turn_rate / rate;
     double turn_give = 0.0;
-    for (const ContactSide* side : {&a, &b}) {
-      if (!(side->mass > 0.0)) continue;
-      const vec3 body = glm::transpose(side->def->pose.rotation) * u;
-      turn_give += glm::dot(body, body / side->def->inertia);
-    }
+    for (const ContactSide* side : {&a, &b})
+      if (side->mass > 0.0) turn_give += turns(*side, u);
     torque = -std::min(kRollingLength * push, 2.0 * omega * rate / turn_give) * u;
   }
   on_a->force += force;

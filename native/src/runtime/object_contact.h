@@ -41,9 +41,6 @@ struct ContactPatchSums {
   void add(const Sphere& leaf_a, const Sphere& leaf_b);
 };
 
-// b's pose in a's frame.
-RigidPose relative_pose(const RigidPose& a, const RigidPose& b);
-
 // The wrenches a pair's patch puts on a and on b (each about its own pose position),
 // added to *on_a and *on_b; dt is the world's time step (seconds). Returns whether they
 // touch. At least one side has a mass.

@@ -276,9 +276,7 @@ void SceneObjects::move_dynamic(Slot& slot, const vec3& gravity, double dt) {
   if (taken) {
     slot.held_by = slot.offer_hand;
     slot.holder_palm = slot.offer_palm;
-    const glm::dmat3 to_palm = glm::transpose(slot.holder_palm.rotation);
-    slot.in_palm = {to_palm * (slot.def.pose.position - slot.holder_palm.position),
-                    to_palm * slot.def.pose.rotation};
+    slot.in_palm = relative_pose(slot.holder_palm, slot.def.pose);
   } else if (slot.held_by >= 0 && !(slot.holder_load >= kReleaseShare * load)) {
     slot.held_by = -1;  // let go: it keeps the hand's velocity, the pushes come back
     slot.pushes_share = 0.0;

@@ -17,6 +17,11 @@ Sphere SphereTree::node_sphere(int32_t node) const {
   return {vec3(n.center[0], n.center[1], n.center[2]), n.radius};
 }
 
+RigidPose relative_pose(const RigidPose& a, const RigidPose& b) {
+  const glm::dmat3 to_a = glm::transpose(a.rotation);
+  return {to_a * (b.position - a.position), to_a * b.rotation};
+}
+
 Segment to_object_frame(const RigidPose& pose, const Segment& world) {
   const glm::dmat3 inverse = glm::transpose(pose.rotation);
   return {inverse * (world.proximal - pose.position), inverse * (world.distal - pose.position),

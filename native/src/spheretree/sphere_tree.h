@@ -154,6 +154,9 @@ TreeQueryStats walk_tree_masked(const SphereTree& tree, uint64_t probes, Near ne
   return stats;
 }
 
+// b's pose in a's frame.
+RigidPose relative_pose(const RigidPose& a, const RigidPose& b);
+
 // Express a world segment in the object's frame (the tree is never rebuilt).
 Segment to_object_frame(const RigidPose& pose, const Segment& world);
 Sphere to_object_frame(const RigidPose& pose, const Sphere& world);
