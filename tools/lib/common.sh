@@ -6,7 +6,7 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 
 # Debian packages the build needs (docs: /work/shared/deps.md, README "Dependencies");
 # python3 runs the C# binding's generator and the test that it is up to date.
-FRUSTA_PACKAGES=(cmake ninja-build g++ pkg-config python3 libglm-dev libhidapi-dev
+FRUSTA_PACKAGES=(cmake ninja-build g++ pkg-config python3 ccache libglm-dev libhidapi-dev
                  libembree-dev libtinygltf-dev nlohmann-json3-dev libbenchmark-dev libgtest-dev)
 
 # ensure_packages [PACKAGE...]: those (default: FRUSTA_PACKAGES) installed
@@ -222,13 +222,19 @@ run_windows() {
 }
 
 # build_tree DIR BUILD_TYPE [extra cmake args...]: configure (once) and build (only
-# $FRUSTA_BUILD_TARGETS when set)
+# $FRUSTA_BUILD_TARGETS when set). Every tree compiles through ccache, so a tree that
+# compiles what another already did with the same flags (tools/test's build without the
+# tests, a rebuild after a checkout) reads the objects back: the cache keys on absolute
+# paths and not on the tree's directory, and lives in build/ccache unless CCACHE_DIR says.
 build_tree() {
   local dir="$1" type="$2"
   shift 2
   local werror=OFF
   [ "${CI:-}" = "true" ] && werror=ON
+  export CCACHE_DIR="${CCACHE_DIR:-$ROOT/build/ccache}" CCACHE_NOHASHDIR=1
+  export CCACHE_MAXSIZE="${CCACHE_MAXSIZE:-4G}"
   cmake -S "$ROOT" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE="$type" \
+        -DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache \
         -DFRUSTA_WARNINGS_AS_ERRORS="$werror" "$@" >/dev/null
   local targets=()
   [ -n "${FRUSTA_BUILD_TARGETS:-}" ] && targets=(--target ${FRUSTA_BUILD_TARGETS})
