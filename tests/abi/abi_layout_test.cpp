@@ -132,7 +132,7 @@
   X(frusta_world_def, spin_us, 16, 8)                 \
   X(frusta_world_def, gravity, 24, 24)                \
   X(frusta_world_def, prediction_margin, 48, 8)       \
-  X(frusta_world_def, node_radius, 56, 8)             \
+  X(frusta_world_def, lod_error, 56, 8)             \
   X(frusta_world_def, max_iterations, 64, 4)          \
   X(frusta_world_def, max_substeps, 68, 4)            \
   X(frusta_world_def, max_contacts_per_hand, 72, 4)   \
@@ -309,8 +309,8 @@
   X(frusta_device_status, 320, 8) \
   X(frusta_device_info, 268, 4)
 
-static_assert(FRUSTA_ABI_VERSION == 6,
-              "the layout table below is ABI 6: update it and the C# mirror with the ABI");
+static_assert(FRUSTA_ABI_VERSION == 7,
+              "the layout table below is ABI 7: update it and the C# mirror with the ABI");
 
 #define FRUSTA_CHECK_MEMBER(type, member, offset, size)                          \
   static_assert(offsetof(type, member) == (offset), #type "." #member " moved"); \

@@ -2349,7 +2349,7 @@ static const Field kWorldFields[] = {
     {WORLD_FIELD(spin_us), 1, 0, NAME_SCALAR, 0.0, 1000.0, 0},    /* one period at 1 kHz */
     {WORLD_FIELD(gravity), 3, 0, NAME_1D, -1e3, 1e3, 0},
     {WORLD_FIELD(prediction_margin), 1, 0, NAME_SCALAR, 1e-5, 0.1, 0},
-    {WORLD_FIELD(node_radius), 1, 0, NAME_SCALAR, 0.0, 1.0, 0},
+    {WORLD_FIELD(lod_error), 1, 0, NAME_SCALAR, 0.0, 1.0, 0},
     {WORLD_FIELD(max_fingertip_force), 1, 0, NAME_SCALAR, 0.0, 1e9, 0},
     {WORLD_FIELD(max_finger_resistance), 1, 0, NAME_SCALAR, 0.0, 1e9, 0},
     {WORLD_FIELD(max_joint_torque), 1, 0, NAME_SCALAR, 0.0, 1e9, 0},

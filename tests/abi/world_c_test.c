@@ -203,9 +203,9 @@ static void test_defaults(void) {
         w.rate_hz, w.spin_us);
   check(w.gravity[0] == 0.0 && w.gravity[1] == 0.0 && w.gravity[2] == 0.0,
         "world def: gravity off");
-  check(w.prediction_margin == 0.002 && w.node_radius == 0.0 && w.max_iterations == 2 &&
+  check(w.prediction_margin == 0.002 && w.lod_error == 0.0 && w.max_iterations == 2 &&
             w.max_substeps == 64,
-        "world def: prediction_margin 0.002, node_radius 0, max_iterations 2, max_substeps 64");
+        "world def: prediction_margin 0.002, lod_error 0, max_iterations 2, max_substeps 64");
   check(w.max_contacts_per_hand == 256 && w.command_capacity == 256 && w.max_hands == 8 &&
             w.reserved1 == 0,
         "world def: max_contacts_per_hand 256, command_capacity 256, max_hands 8");
@@ -319,9 +319,9 @@ static void test_create_errors(void) {
       {WORLD_FIELD(prediction_margin), 0.0, FRUSTA_ERROR_OUT_OF_RANGE, NULL},
       {WORLD_FIELD(prediction_margin), -0.001, FRUSTA_ERROR_OUT_OF_RANGE, "-0.001"},
       {WORLD_FIELD(prediction_margin), 0.2, FRUSTA_ERROR_OUT_OF_RANGE, "0.2"},
-      {WORLD_FIELD(node_radius), INFINITY, FRUSTA_ERROR_NOT_FINITE, "inf"},
-      {WORLD_FIELD(node_radius), -0.001, FRUSTA_ERROR_OUT_OF_RANGE, "-0.001"},
-      {WORLD_FIELD(node_radius), 2.0, FRUSTA_ERROR_OUT_OF_RANGE, "2"},
+      {WORLD_FIELD(lod_error), INFINITY, FRUSTA_ERROR_NOT_FINITE, "inf"},
+      {WORLD_FIELD(lod_error), -0.001, FRUSTA_ERROR_OUT_OF_RANGE, "-0.001"},
+      {WORLD_FIELD(lod_error), 2.0, FRUSTA_ERROR_OUT_OF_RANGE, "2"},
       {WORLD_FIELD(input_delay), NAN, FRUSTA_ERROR_NOT_FINITE, "nan"},
       {WORLD_FIELD(input_delay), -0.001, FRUSTA_ERROR_OUT_OF_RANGE, "-0.001"},
       {WORLD_FIELD(input_delay), 0.2, FRUSTA_ERROR_OUT_OF_RANGE, "0.2"},
@@ -383,7 +383,7 @@ static void test_create_errors(void) {
   def.spin_us = 10.0; /* one period */
   def.gravity[2] = -1000.0;
   def.prediction_margin = 0.1;
-  def.node_radius = 1.0;
+  def.lod_error = 1.0;
   def.max_iterations = 100;
   def.max_substeps = 1024;
   def.max_contacts_per_hand = 0;

@@ -79,7 +79,7 @@
 #define FRUSTA_VERSION \
   (FRUSTA_VERSION_MAJOR * 1000000 + FRUSTA_VERSION_MINOR * 1000 + FRUSTA_VERSION_PATCH)
 /** Bumped whenever a struct layout or a signature changes; see frusta_check_abi(). */
-#define FRUSTA_ABI_VERSION 6
+#define FRUSTA_ABI_VERSION 7
 
 /** The library's FRUSTA_VERSION. Thread: any. */
 FRUSTA_API int32_t frusta_version(void);
@@ -753,8 +753,11 @@ typedef struct frusta_world_def {
   double prediction_margin;     /* Delta_r, metres: detection margin and the most any
                                    hand point moves per sub-step; 1e-5..0.1 and below
                                    the smallest finger radius; default 0.002 */
-  double node_radius;           /* metres: tree nodes no larger stand in for their
-                                   leaves (0: leaves); default 0 */
+  double lod_error;             /* metres, the level-of-detail error budget: a tree
+                                   node whose sphere stands out of its leaves by no
+                                   more than this stands in for them, so a hand may
+                                   stop up to this far short of the leaves (0: the
+                                   leaves); 0..1; default 0 */
   int32_t max_iterations;       /* re-linearisations per solver stage, 1..100; default 2 */
   int32_t max_substeps;         /* per step, 1..1024; default 64 */
   int32_t max_contacts_per_hand;/* kept per hand per step, 0..65536; default 256 */

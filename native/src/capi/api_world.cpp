@@ -35,7 +35,7 @@ frusta_result read_world_def(const frusta_world_def& in, WorldDef* out) {
   def.max_contacts_per_hand = in.max_contacts_per_hand;
   def.command_capacity = in.command_capacity;
   def.solver.prediction_margin = in.prediction_margin;
-  def.solver.node_radius = in.node_radius;
+  def.solver.lod_error = in.lod_error;
   def.solver.max_iterations = in.max_iterations;
   def.solver.max_substeps = in.max_substeps;
   def.device_limits = {in.max_fingertip_force, in.max_finger_resistance, in.max_joint_torque,
@@ -153,7 +153,7 @@ FRUSTA_API frusta_world_def frusta_default_world_def(void) {
   def.spin_us = d.spin_us;
   store(d.gravity, def.gravity);
   def.prediction_margin = d.solver.prediction_margin;
-  def.node_radius = d.solver.node_radius;
+  def.lod_error = d.solver.lod_error;
   def.max_iterations = d.solver.max_iterations;
   def.max_substeps = d.solver.max_substeps;
   def.max_contacts_per_hand = d.max_contacts_per_hand;

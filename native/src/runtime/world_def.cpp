@@ -74,7 +74,7 @@ frusta_result check_world_def(const WorldDef& def) {
   if (frusta_result r = check_range(def.solver.prediction_margin, 1e-5, 0.1, false,
                                     "prediction_margin"))
     return r;
-  if (frusta_result r = check_range(def.solver.node_radius, 0.0, 1.0, false, "node_radius"))
+  if (frusta_result r = check_range(def.solver.lod_error, 0.0, 1.0, false, "lod_error"))
     return r;
   if (def.solver.max_iterations < 1 || def.solver.max_iterations > 100)
     return fail(FRUSTA_ERROR_OUT_OF_RANGE, "max_iterations is %d, must be 1..100",

@@ -99,8 +99,8 @@ frusta_result HandSolver::check_params(const SolverParams& p, const HandModel& m
                 p.contact_distance);
   if (!std::isfinite(p.convergence) || !(p.convergence > 0.0))
     return fail(FRUSTA_ERROR_OUT_OF_RANGE, "convergence is %g, must be > 0", p.convergence);
-  if (!std::isfinite(p.node_radius) || !(p.node_radius >= 0.0))
-    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "node_radius is %g m, must be >= 0", p.node_radius);
+  if (!std::isfinite(p.lod_error) || !(p.lod_error >= 0.0))
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "lod_error is %g m, must be >= 0", p.lod_error);
   if (!std::isfinite(p.follow_factor) || !(p.follow_factor >= 1.0))
     return fail(FRUSTA_ERROR_OUT_OF_RANGE,
                 "follow_factor is %g, must be >= 1 (the graphic hand keeps up with the haptic one)",
@@ -276,7 +276,7 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
   }
 
   detect_candidates(model_, reach_, pose_, objects, object_count, params_.prediction_margin,
-                    TreeCut(params_.tree_level, params_.node_radius), candidates_, only, only_count);
+                    TreeCut(params_.tree_level, params_.lod_error), candidates_, only, only_count);
   stats.candidates = std::max(stats.candidates, static_cast<int32_t>(candidates_.candidates.size()));
   stats.tree_nodes_visited += candidates_.tree_nodes_visited;
   const StageInputs inputs{model_, reach_, params_, candidates_};

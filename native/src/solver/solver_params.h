@@ -47,10 +47,11 @@ struct SolverParams {
   // leaves above it) instead: fewer, larger spheres, a hand stopping short of the
   // leaves by up to their excess. A time-against-error knob.
   int32_t tree_level = -1;
-  // 0: leaves. Otherwise an inner node no larger than this stands in for its leaves:
-  // it stands out of them by less than its radius, so this bounds how far short of
-  // the leaves a hand may stop; dense trees shed most candidates. The knob to use.
-  double node_radius = 0.0;
+  // 0: leaves. Otherwise the level-of-detail error budget, metres: an inner node that
+  // stands out of its leaves by no more than this (the tree's node_error) stands in for
+  // them, so a hand may stop up to about this far short of the leaves; dense trees shed
+  // most candidates. The knob to use.
+  double lod_error = 0.0;
 };
 
 }  // namespace frusta

@@ -30,6 +30,8 @@ struct TreeNode {
 struct SphereTree {
   std::vector<TreeNode> nodes;  // nodes[0] is the root; children follow their parent
   std::vector<Sphere> leaves;   // in the caller's numbering, never reordered
+  std::vector<float> node_error;  // per node, metres its sphere stands out of its leaves
+                                  // (compute_node_errors; 0 for a leaf)
   int32_t branching = 0;
   int32_t depth = 0;  // levels below the root; a lone leaf has depth 0
 
@@ -45,13 +47,18 @@ struct TreeHit {
 };
 
 // Where a walk stops descending: at a leaf, at max_level (-1: no level), or at an inner
-// node no larger than max_radius (0: none), which then stands in for its subtree. The
-// radius cut is the one that bounds the error: a node sphere stands out of its leaves
-// by less than its radius. A level converts to a cut, so callers may pass one.
+// node that stands out of its leaves by no more than max_error (0: none; the tree's
+// node_error), which then stands in for its subtree: the level of detail an error budget
+// buys. A level converts to a cut, so callers may pass one.
 struct TreeCut {
-  TreeCut(int32_t level = -1, double radius = 0.0) : max_level(level), max_radius(radius) {}  // NOLINT
+  TreeCut(int32_t level = -1, double error = 0.0) : max_level(level), max_error(error) {}  // NOLINT
   int32_t max_level;
-  double max_radius;
+  double max_error;
+
+  bool stops(const SphereTree& tree, int32_t node, int32_t level) const {
+    return level == max_level ||
+           (max_error > 0.0 && tree.node_error[static_cast<size_t>(node)] <= max_error);
+  }
 };
 
 struct TreeQueryStats {
@@ -87,7 +94,7 @@ TreeQueryStats walk_tree(const SphereTree& tree, Touches touches, TreeCut cut, E
     const bool leaf = n.count == 0;
     if (!touches(leaf ? tree.leaves[static_cast<size_t>(n.first)] : tree.node_sphere(e.node)))
       continue;
-    if (leaf || e.level == cut.max_level || (cut.max_radius > 0.0 && n.radius <= cut.max_radius)) {
+    if (leaf || cut.stops(tree, e.node, e.level)) {
       emit(TreeHit{e.node, leaf ? n.first : -1});
       ++stats.hits;
       continue;
@@ -144,7 +151,7 @@ TreeQueryStats walk_tree_masked(const SphereTree& tree, uint64_t probes, Near ne
       if (touches(k, sphere)) reached |= uint64_t{1} << k;
     }
     if (reached == 0) continue;
-    if (leaf || e.level == cut.max_level || (cut.max_radius > 0.0 && n.radius <= cut.max_radius)) {
+    if (leaf || cut.stops(tree, e.node, e.level)) {
       emit(TreeHit{e.node, leaf ? n.first : -1}, reached, sphere);
       ++stats.hits;
       continue;

@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/error.h"
+#include "spheretree/node_error.h"
 #include "spheretree/tree_limits.h"
 
 namespace frusta {
@@ -126,6 +127,7 @@ frusta_result build_sphere_tree(const std::vector<Sphere>& leaves, const TreeBui
   Builder builder{tree.leaves, options.branching, tree, std::vector<int32_t>(leaves.size()), {}};
   std::iota(builder.order.begin(), builder.order.end(), 0);
   builder.build(0, 0, leaves.size(), 0);
+  compute_node_errors(tree);
   *out = std::move(tree);
   return FRUSTA_OK;
 }

@@ -31,6 +31,7 @@
 
 #include "core/error.h"
 #include "core/file_read.h"
+#include "spheretree/node_error.h"
 #include "spheretree/tree_limits.h"
 
 namespace frusta {
@@ -255,6 +256,7 @@ frusta_result decode_tree_file(const uint8_t* data, size_t size, const char* nam
     t.leaves[i] = {vec3(v[0], v[1], v[2]), v[3]};
   }
   if (frusta_result r = check_structure(t, name)) return r;
+  compute_node_errors(t);  // not stored: derived, and a file could lie about it
   *out = std::move(f);
   return FRUSTA_OK;
 }

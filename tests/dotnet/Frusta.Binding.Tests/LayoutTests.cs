@@ -149,7 +149,7 @@ namespace Frusta.Binding.Tests
             Assert.Equal(200.0, w.SpinUs);
             Assert.Equal(Vector3d.Zero, w.Gravity);
             Assert.Equal(0.002, w.PredictionMargin);
-            Assert.Equal(0.0, w.NodeRadius);
+            Assert.Equal(0.0, w.LodError);
             Assert.Equal(2, w.MaxIterations);
             Assert.Equal(64, w.MaxSubsteps);
             Assert.Equal(256, w.MaxContactsPerHand);

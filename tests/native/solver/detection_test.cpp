@@ -129,7 +129,7 @@ void check_random_hands(const HandModel& model, int32_t draws, uint64_t seed) {
         detect_candidates(model, reach, pose, objects.data(), static_cast<int32_t>(objects.size()), margin, cut, set);
         expect_same(expected, begin, set,
                     "draw " + std::to_string(draw) + ", level " + std::to_string(cut.max_level) + ", radius " +
-                        std::to_string(cut.max_radius) + ", margin " + std::to_string(margin));
+                        std::to_string(cut.max_error) + ", margin " + std::to_string(margin));
         if (testing::Test::HasFatalFailure()) return;
         finger_candidates += set.begin[kPalmBody];
         palm_candidates += set.count(kPalmBody);

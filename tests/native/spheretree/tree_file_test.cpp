@@ -56,6 +56,9 @@ TEST(TreeFile, WriteThenReadIsLossless) {
   EXPECT_EQ(loaded.bake.triangle_count, 3456);
   EXPECT_EQ(loaded.bake.uncovered_error, 0.0009);
   EXPECT_EQ(loaded.tree.leaves.size(), 500u);
+  // not stored but derived on load, as the builder did
+  EXPECT_EQ(loaded.tree.node_error, original.tree.node_error);
+  EXPECT_EQ(loaded.tree.node_error.size(), loaded.tree.nodes.size());
   std::remove(path.c_str());
 }
 

@@ -371,10 +371,13 @@ namespace Frusta.Binding
         /// </summary>
         public double PredictionMargin;
         /// <summary>
-        /// metres: tree nodes no larger stand in for their
-        /// leaves (0: leaves); default 0
+        /// metres, the level-of-detail error budget: a tree
+        /// node whose sphere stands out of its leaves by no
+        /// more than this stands in for them, so a hand may
+        /// stop up to this far short of the leaves (0: the
+        /// leaves); 0..1; default 0
         /// </summary>
-        public double NodeRadius;
+        public double LodError;
         /// <summary>re-linearisations per solver stage, 1..100; default 2</summary>
         public int MaxIterations;
         /// <summary>per step, 1..1024; default 64</summary>
