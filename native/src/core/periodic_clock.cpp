@@ -1,19 +1,33 @@
 // SPDX-License-Identifier: MIT
 #include "core/periodic_clock.h"
 
+#include <algorithm>
 #include <thread>
 
 namespace frusta {
 
+using Clock = std::chrono::steady_clock;
+
 PeriodicClock::PeriodicClock(Clock::duration period, Clock::duration spin, int64_t max_burst)
     : period_(period), spin_(spin), max_burst_(max_burst) {}
+
+Clock::duration phase_correction(Clock::duration error, Clock::duration period) {
+  if (period <= Clock::duration::zero()) return Clock::duration::zero();
+  Clock::duration wrapped = error % period;  // (-period, period)
+  if (wrapped > period / 2) wrapped -= period;
+  if (wrapped <= -period / 2) wrapped += period;
+  const Clock::duration most = period / 50;
+  return -std::clamp<Clock::duration>(wrapped / 8, -most, most);
+}
 
 void PeriodicClock::start() {
   deadline_ = Clock::now() + period_;
   late_ = dropped_ = 0;
+  aligned_ = false;
 }
 
 PeriodicClock::Clock::duration PeriodicClock::wait() {
+  if (aligned_) deadline_ += phase_correction(deadline_ - anchor_, period_);
   Clock::time_point now = Clock::now();
   const auto behind = (now - deadline_) / period_;
   if (behind > max_burst_) {

@@ -9,6 +9,10 @@
 // pace with the glove's (a world that silently skipped ticks would see the hand move
 // two ticks' worth in one, and kick what it holds). Only a stall longer than
 // max_burst periods is given up on: those ticks are dropped.
+//
+// The ticks may be aligned to events (align): a glove's samples arrive on their own
+// clock, and a sample that just missed a tick waits a whole period for the next; ticks
+// that fall a little after the samples answer each within a fraction of one.
 #pragma once
 
 #include <chrono>
@@ -22,6 +26,13 @@ inline int64_t steady_ns() {
              std::chrono::steady_clock::now().time_since_epoch())
       .count();
 }
+
+// How far to move a deadline `error` after the point it should fall on (modulo the
+// period) so the ticks come to fall there over a few dozen ticks without a jump: an
+// eighth of the error wrapped into (-period/2, period/2], at most a fiftieth of a period
+// a tick (the ticks run within 2 % of their rate meanwhile; the steps' time does not).
+std::chrono::steady_clock::duration phase_correction(std::chrono::steady_clock::duration error,
+                                                     std::chrono::steady_clock::duration period);
 
 class PeriodicClock {
  public:
@@ -37,6 +48,13 @@ class PeriodicClock {
   // was; tick() is then the deadline this wake-up answers.
   Clock::duration wait();
 
+  // Move the coming deadlines, a little a tick, towards `when` plus whole periods; the
+  // newest call wins.
+  void align(Clock::time_point when) {
+    anchor_ = when;
+    aligned_ = true;
+  }
+
   Clock::time_point tick() const { return tick_; }
   Clock::time_point deadline() const { return deadline_; }
   // ticks that ran more than a period late (caught up), and ticks dropped outright
@@ -47,7 +65,8 @@ class PeriodicClock {
  private:
   Clock::duration period_, spin_;
   int64_t max_burst_;
-  Clock::time_point deadline_{}, tick_{};
+  Clock::time_point deadline_{}, tick_{}, anchor_{};
+  bool aligned_ = false;
   int64_t late_ = 0, dropped_ = 0;
 };
 

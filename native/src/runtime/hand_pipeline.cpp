@@ -50,6 +50,7 @@ bool HandPipeline::step(const HandStepContext& context, SceneObjects& scene, Han
     // period of delay is felt: the newest, as it is
     playback_.keep_newest();
     haptic = playback_.newest().state;
+    if (playback_.newest().live) live_sample_ns_ = playback_.newest().set_ns;
   } else {
     // where the driver's samples say the hand was input_delay before this step (a step
     // caught up after a stall asks for its own time, not now's)

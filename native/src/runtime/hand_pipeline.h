@@ -56,6 +56,9 @@ class HandPipeline {
   bool step(const HandStepContext& context, SceneObjects& objects, HandSnapshot& snap);
   // Publish the step's feed for the hand's device (step: the step being taken).
   void publish_feed(const HandSnapshot& snap, uint64_t step, int64_t host_read_ns);
+  // When the newest glove sample a step solved was set (steady clock, ns; 0: none yet):
+  // the world's ticks align to a glove's samples.
+  int64_t live_sample_ns() const { return live_sample_ns_; }
   // An object removed from the world is nobody's to ignore any more.
   void forget(int32_t slot);
 
@@ -74,6 +77,7 @@ class HandPipeline {
   std::array<HandSnapshot, 3> snapshots_;
   InputPlayback playback_;        // the inputs taken, played by their times
   HandState accepted_;            // the last haptic input the solver took
+  int64_t live_sample_ns_ = 0;    // live_sample_ns
   ContactForces forces_;
   std::vector<ObjectWrench> reactions_;  // this hand's, per object of its list
   std::vector<int32_t> grasp_entry_;     // per object of its list: its entry below, or -1

@@ -48,7 +48,8 @@ void StepThread::run(double rate_hz, double spin_us, const Step& step) {
     const int64_t tick_ns = duration_cast<nanoseconds>(clock.tick().time_since_epoch()).count();
     ++steps;
     achieved_rate_hz_ = static_cast<double>(steps) / duration<double>(steady_clock::now() - started).count();
-    step(1.0 / rate_hz, tick_ns);
+    if (const int64_t align_ns = step(1.0 / rate_hz, tick_ns); align_ns > 0)
+      clock.align(PeriodicClock::Clock::time_point(nanoseconds(align_ns)));
   }
 }
 

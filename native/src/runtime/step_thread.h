@@ -17,8 +17,10 @@ namespace frusta {
 
 class StepThread {
  public:
-  // What a tick runs: the period in seconds and the tick's time (steady clock, ns).
-  using Step = std::function<void(double dt, int64_t tick_ns)>;
+  // What a tick runs: the period in seconds and the tick's time (steady clock, ns); it
+  // returns a time (steady clock, ns) the coming ticks should fall on plus whole periods
+  // (PeriodicClock::align), or 0 for none.
+  using Step = std::function<int64_t(double dt, int64_t tick_ns)>;
 
   StepThread() = default;
   StepThread(const StepThread&) = delete;

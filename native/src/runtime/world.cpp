@@ -17,6 +17,9 @@ namespace {
 // behind (a world stopped and started again), they jump
 constexpr int64_t kCatchUpDivisor = 4;
 constexpr int64_t kMaxPlayLagNs = 500'000'000;
+// the own thread's ticks fall a fifth of a period after a glove's samples are set: room
+// for a sample set a little late to still make its tick (tools/bench devices)
+constexpr int64_t kTickAfterGloveDivisor = 5;
 
 }  // namespace
 
@@ -91,7 +94,7 @@ frusta_result World::start() { return start(def_.rate_hz, def_.spin_us); }
 
 frusta_result World::start(double rate_hz, double spin_us) {
   return thread_.start(rate_hz, spin_us,
-                       [this](double dt, int64_t tick_ns) { step_once(dt, true, tick_ns); });
+                       [this](double dt, int64_t tick_ns) { return step_once(dt, true, tick_ns); });
 }
 
 void World::stop() { thread_.stop(); }
@@ -138,7 +141,7 @@ void World::apply_commands() {
     if (hands_[slot]) present_hands_.push_back(static_cast<int32_t>(slot));
 }
 
-void World::step_once(double dt, bool paced, int64_t tick_ns) {
+int64_t World::step_once(double dt, bool paced, int64_t tick_ns) {
   const auto start = std::chrono::steady_clock::now();
   apply_commands();
   scene_objects_.clear_reactions();
@@ -170,6 +173,7 @@ void World::step_once(double dt, bool paced, int64_t tick_ns) {
   const int buffer = output_.write_index();
   for (HandSlot& slot : out.hands) slot = HandSlot{};
   const size_t present = present_hands_.size();
+  int64_t glove_sample_ns = 0;  // the first glove-driven hand's newest sample
   for (size_t h = 0; h < present; ++h) {
     const size_t slot = static_cast<size_t>(present_hands_[h]);
     HandPipeline& hand = *hands_[slot];
@@ -181,6 +185,7 @@ void World::step_once(double dt, bool paced, int64_t tick_ns) {
                             kStepBudgetShare * dt * static_cast<double>(h + 1) / static_cast<double>(present)))
               : HandSolver::Clock::time_point::max();
     if (!hand.step(context, scene_objects_, snap)) ++rejected_;
+    if (glove_sample_ns == 0) glove_sample_ns = hand.live_sample_ns();
     hand.publish_feed(snap, step_ + 1, host_read_ns);
     out.hands[slot] = HandSlot{true, hand_generation_[slot], &snap};
   }
@@ -201,6 +206,9 @@ void World::step_once(double dt, bool paced, int64_t tick_ns) {
   out.overruns = thread_.overruns();
   out.achieved_rate_hz = thread_.achieved_rate_hz();
   output_.publish();
+  // the ticks fall a fifth of a period after the first glove's samples arrive: a sample
+  // that just missed a tick waited a whole period (its ticks cannot follow two gloves)
+  return glove_sample_ns > 0 ? glove_sample_ns + period_ns / kTickAfterGloveDivisor : 0;
 }
 
 }  // namespace frusta

@@ -121,7 +121,8 @@ class World {
  private:
   // on the own thread `paced`, at the tick tick_ns (steady clock); inputs are played
   // input_delay behind the step's time
-  void step_once(double dt, bool paced, int64_t tick_ns);
+  // Returns when the coming ticks should fall (StepThread::Step), 0 for none.
+  int64_t step_once(double dt, bool paced, int64_t tick_ns);
   void apply_commands();
 
   WorldDef def_;

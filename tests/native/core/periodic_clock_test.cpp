@@ -63,5 +63,44 @@ TEST(PeriodicClock, ALongStallDropsAllButOneBurst) {
   EXPECT_LE(clock.tick(), after - 4 * milliseconds(1));
 }
 
+// The alignment's rule alone: a fraction of the phase error, wrapped to the nearer
+// tick, bounded per tick.
+TEST(PeriodicClock, APhaseCorrectionMovesTowardsTheNearerAlignedTickBoundedPerTick) {
+  using D = PeriodicClock::Clock::duration;
+  const D period = milliseconds(1);
+  EXPECT_EQ(phase_correction(D::zero(), period), D::zero());
+  EXPECT_EQ(phase_correction(microseconds(80), period), -microseconds(10));
+  EXPECT_EQ(phase_correction(microseconds(400), period), -microseconds(20));  // at most 2 %
+  EXPECT_EQ(phase_correction(microseconds(920), period), microseconds(10));   // 80 us early
+  EXPECT_EQ(phase_correction(-microseconds(80), period), microseconds(10));
+  EXPECT_EQ(phase_correction(5 * period + microseconds(80), period), -microseconds(10));
+  EXPECT_EQ(phase_correction(-7 * period - microseconds(80), period), microseconds(10));
+  EXPECT_EQ(phase_correction(microseconds(80), D::zero()), D::zero());
+}
+
+// Ticks aligned to an event come to fall on it plus whole periods, each tick within 2 %
+// of the period meanwhile. The deadlines do not depend on when the waits return (only
+// a stall of more than max_burst periods drops ticks, whole periods), so this is exact.
+TEST(PeriodicClock, AlignedTicksComeToFallOnTheEventPlusWholePeriods) {
+  PeriodicClock clock(milliseconds(1), microseconds(200));
+  clock.start();
+  const PeriodicClock::Clock::time_point event = clock.deadline() + microseconds(430);
+  clock.align(event);
+  PeriodicClock::Clock::time_point before = clock.deadline();
+  for (int i = 0; i < 80; ++i) {
+    clock.wait();
+    const PeriodicClock::Clock::duration gap = clock.tick() - before;
+    before = clock.tick();
+    if (i == 0) continue;  // the first tick's gap is from the unaligned deadline
+    const auto periods = (gap + microseconds(500)) / milliseconds(1);
+    const PeriodicClock::Clock::duration off = gap - periods * milliseconds(1);
+    EXPECT_LE(std::chrono::abs(off), microseconds(20)) << "tick " << i;
+  }
+  const PeriodicClock::Clock::duration phase = (clock.deadline() - event) % milliseconds(1);
+  EXPECT_TRUE(std::chrono::abs(phase) <= microseconds(1) ||
+              std::chrono::abs(phase) >= milliseconds(1) - microseconds(1))
+      << phase.count() << " ns";
+}
+
 }  // namespace
 }  // namespace frusta
