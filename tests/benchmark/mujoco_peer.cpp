@@ -234,8 +234,10 @@ PeerResult run_mujoco_grasp(const HandModel& model, const std::vector<Sphere>& l
   const QuietWarnings quiet;
   HandState start = haptic(0);
   clamp_to_limits(model, start);
-  ModelPtr m = load_xml(grasp_xml(model, leaves, start, kServo, capacity(leaves.size()), contact_time_constant),
-                        result.error);
+  const std::string xml = grasp_xml(model, leaves, start, kServo, capacity(leaves.size()), contact_time_constant);
+  const auto load_begin = std::chrono::steady_clock::now();
+  ModelPtr m = load_xml(xml, result.error);
+  result.load_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - load_begin).count();
   if (!m) return result;
   DataPtr d(mj_makeData(m.get()));
   if (!d) {

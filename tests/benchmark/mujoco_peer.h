@@ -21,6 +21,7 @@ struct PeerResult {
   double p50_us = 0, p99_us = 0, max_us = 0;  // wall time of mj_step per step, microseconds
   double max_penetration_mm = 0;  // deepest penetration over the run (see below)
   int32_t max_contacts = 0;       // most mjData::ncon in a step
+  double load_s = 0;              // mj_loadXML's wall time, seconds
 };
 
 // The deep grasp as a MuJoCo user would build it: the 15 finger phalanges as capsules on

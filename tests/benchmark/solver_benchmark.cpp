@@ -3,8 +3,9 @@
 //  - every scenario of the acceptance list: p50 / p99 / max step time, contacts, QP
 //    iterations, sub-steps, and the deepest penetration against the exact leaf set;
 //  - both constraint forms on every scenario (robustness: penetration, failures);
-//  - the deep grasp against balls of 10^2..10^6 leaves, and the time-against-error
-//    knobs (Delta_r, iteration cap, tree level) at 10^4 leaves;
+//  - the deep grasp against balls of 10^2..10^6 leaves, with MuJoCo beside each row;
+//    the level of detail's time against its error budget at 10^5 and 10^6 leaves; the
+//    time-against-error knobs (Delta_r, iteration cap, tree level, budget) at 10^4;
 //  - the thread question: a finger's solve against a thread hand-off, measured;
 //  - a fingertip slid over sharp edges (scenes/edge_slides.h), per shape and speed over
 //    every path and depth: the force's change per step (max, p99) against the contact
@@ -14,11 +15,11 @@
 //    gives a hand, then tighter ones: time, steps over it, and the forces' continuity;
 //  - detection alone (the tree walks) on the poses of the grasp and the over-budget
 //    scenarios, fingers and palm apart;
-//  - with FRUSTA_WITH_MUJOCO, the same grasp in MuJoCo, side by side.
+//  - with FRUSTA_WITH_MUJOCO, the same grasp in MuJoCo, side by side (in the grasp rows).
 // Prints one JSON document. Step times exclude the penetration checks. Arguments name
-// the sections to run (scenarios free edges budget detection forms leaves knobs threads;
+// the sections to run (scenarios free edges budget detection forms leaves lod knobs threads;
 // default all); flags such as tools/bench's --benchmark_format are ignored, but for
-// --leaves=N and --scene=NAME, which keep one row of the leaves and budget sections (to
+// --leaves=N and --scene=NAME, which keep one row of the leaves, lod and budget sections (to
 // profile it).
 #include <algorithm>
 #include <array>
@@ -430,7 +431,7 @@ int main(int argc, char** argv) {
             const double start = thread_cpu_us();
             detect_candidates(palm ? model : fingers_only, reach, pose, s.objects.data(),
                               static_cast<int32_t>(s.objects.size()), defaults.prediction_margin,
-                              TreeCut(defaults.tree_level, defaults.node_radius), set);
+                              TreeCut(defaults.tree_level, defaults.lod_error), set);
             const double us = thread_cpu_us() - start;
             if (pass == 0) continue;
             (palm ? whole_us : fingers_us).push_back(us);
@@ -482,20 +483,28 @@ int main(int argc, char** argv) {
     std::printf("  {\"leaves\": %d, \"tree_depth\": %d, ", counts[i], ball->tree.depth);
     print_measured(m);
 #ifdef FRUSTA_WITH_MUJOCO
-    if (counts[i] <= 10000) {
+    // MuJoCo's default contacts, then the stiffest stable at 1 ms (what a user tunes to);
+    // above 10^4 leaves only the latter (MuJoCo tests every leaf each step), and not at
+    // 10^6: MuJoCo 2.2.2 compiles a body's geoms in time quadratic in their number
+    // (mj_loadXML of one body's spheres: 0.3 s for 10^4, 1.1 s for 2x10^4, 5.0 s for
+    // 4x10^4), about 50 minutes for 10^6
+    if (counts[i] > 100000) {
+      std::printf(", \"mujoco_stiff_contacts\": {\"error\": \"not run: MuJoCo 2.2.2 loads one body of N "
+                  "spheres in time quadratic in N (5.0 s at 4x10^4; about 50 min at 10^6)\"}");
+    } else {
       std::vector<Sphere> world;
       for (const Sphere& leaf : ball->tree.leaves) world.push_back({leaf.center + s.objects[0].pose.position, leaf.radius});
-      // MuJoCo's default contacts, then the stiffest stable at 1 ms (what a user tunes to)
       for (double time_constant : {0.0, 0.002}) {
+        if (time_constant == 0.0 && counts[i] > 10000) continue;
         const bench::PeerResult peer = bench::run_mujoco_grasp(
             make_hand_model(default_hand_def()), world, s.steps + 200,
             [&](int32_t t) { return t < s.steps ? s.haptic(t) : s.held; }, time_constant);
         const char* key = time_constant > 0.0 ? "mujoco_stiff_contacts" : "mujoco";
         if (peer.ok)
           std::printf(", \"%s\": {\"p50_us\": %.2f, \"p99_us\": %.2f, \"max_us\": %.2f, \"max_contacts\": %d, "
-                      "\"max_penetration_mm\": %.6f, \"p50_ratio_mujoco_over_frusta\": %.2f, "
+                      "\"max_penetration_mm\": %.6f, \"load_s\": %.2f, \"p50_ratio_mujoco_over_frusta\": %.2f, "
                       "\"p99_ratio_mujoco_over_frusta\": %.2f}",
-                      key, peer.p50_us, peer.p99_us, peer.max_us, peer.max_contacts, peer.max_penetration_mm,
+                      key, peer.p50_us, peer.p99_us, peer.max_us, peer.max_contacts, peer.max_penetration_mm, peer.load_s,
                       peer.p50_us / std::max(1e-9, percentile(m.step_us, 0.5)),
                       peer.p99_us / std::max(1e-9, percentile(m.step_us, 0.99)));
         else
@@ -504,17 +513,28 @@ int main(int argc, char** argv) {
     }
 #endif
     std::printf("},\n");
-    if (counts[i] >= 10000 && only_leaves == 0)  // the same grasp with nodes of <= 0.5 mm standing in for their leaves
-      for (double radius : {0.0005}) {
-        SolverParams p = defaults;
-        p.node_radius = radius;
-        const Measured cut = measure(s, p, 200, counts[i] >= 100000 ? 10 : 1);
-        std::printf("  {\"leaves\": %d, \"node_radius_mm\": %g, ", counts[i], radius * 1e3);
-        print_measured(cut);
-        std::printf("},\n");
-      }
   }
   std::printf("  {\"end\": true}\n],\n");
+  }
+
+  // time against error: the same grasp with nodes that stand out of their leaves by no
+  // more than the budget standing in for them (the penetration is against the leaves)
+  if (wanted("lod")) {
+    std::printf("\"lod_curve\": [\n");
+    for (int32_t leaves : {100000, 1000000}) {
+      if (only_leaves > 0 && leaves != only_leaves) continue;
+      const std::shared_ptr<const TreeFile> ball = scenes::ball_shell(leaves, 0.04);
+      const scenes::HandScenario s = scenes::ball_grasp(ball);
+      for (double budget : {0.0, 0.00005, 0.0001, 0.0002, 0.0005, 0.001}) {
+        SolverParams p = defaults;
+        p.lod_error = budget;
+        const Measured m = measure(s, p, 200, 10);
+        std::printf("  {\"leaves\": %d, \"lod_error_mm\": %g, ", leaves, budget * 1e3);
+        print_measured(m);
+        std::printf("},\n");
+      }
+    }
+    std::printf("  {\"end\": true}\n],\n");
   }
 
   // the knobs, one at a time, on the 10^4-leaf grasp
@@ -544,8 +564,8 @@ int main(int argc, char** argv) {
   }
   for (double radius : {0.00025, 0.0005, 0.001}) {
     SolverParams p = defaults;
-    p.node_radius = radius;
-    knobs.push_back({"node_radius_mm", radius * 1e3, p});
+    p.lod_error = radius;
+    knobs.push_back({"lod_error_mm", radius * 1e3, p});
   }
   for (size_t i = 0; i < knobs.size(); ++i) {
     const Measured m = measure(grasp, knobs[i].params, 200, 1);

@@ -15,6 +15,7 @@
 #include "core/error.h"
 #include "geometry/contact_test.h"
 #include "meshes/meshes.h"
+#include "spheretree/node_error.h"
 #include "spheretree/tree_builder.h"
 
 namespace frusta {
@@ -86,16 +87,20 @@ void BM_GridBaselineByTargetError(benchmark::State& state) {
 }
 BENCHMARK(BM_GridBaselineByTargetError)->Arg(40)->Arg(20)->Arg(10)->Arg(5)->Iterations(1)->Unit(benchmark::kMillisecond);
 
-// A surface-like tree of N leaves: spheres on a 5 cm shell, sized to overlap.
-SphereTree shell_tree(int leaves) {
+// A surface-like object of N leaves: spheres on a 5 cm shell, sized to overlap.
+std::vector<Sphere> shell_leaves(int leaves) {
   std::mt19937_64 rng(leaves);
   std::normal_distribution<double> g;
   const double radius = 0.05, leaf = 2.0 * radius * std::sqrt(4.0 / leaves);
   std::vector<Sphere> spheres;
   for (int i = 0; i < leaves; ++i)
     spheres.push_back({(radius - leaf) * glm::normalize(vec3(g(rng), g(rng), g(rng))), leaf});
+  return spheres;
+}
+
+SphereTree shell_tree(int leaves) {
   SphereTree tree;
-  build_sphere_tree(spheres, {4}, &tree);
+  build_sphere_tree(shell_leaves(leaves), {4}, &tree);
   return tree;
 }
 
@@ -128,10 +133,32 @@ void BM_TreeQuerySegment(benchmark::State& state) {
   state.counters["hits_per_query"] = static_cast<double>(found) / static_cast<double>(state.iterations());
   state.counters["nodes_visited"] = static_cast<double>(visited) / static_cast<double>(state.iterations());
   state.counters["bytes_per_leaf"] =
-      static_cast<double>(tree.nodes.size() * sizeof(TreeNode) + tree.leaves.size() * sizeof(Sphere)) /
+      static_cast<double>(tree.nodes.size() * (sizeof(TreeNode) + sizeof(float)) +
+                          tree.leaves.size() * sizeof(Sphere)) /
       static_cast<double>(tree.leaves.size());
 }
 BENCHMARK(BM_TreeQuerySegment)->RangeMultiplier(10)->Range(100, 1000000)->Unit(benchmark::kMicrosecond);
+
+// Building a tree (the node errors included) against computing its node errors alone:
+// what the level of detail's error figures add to every tree built or loaded.
+void BM_TreeBuild(benchmark::State& state) {
+  const std::vector<Sphere> spheres = shell_leaves(static_cast<int>(state.range(0)));
+  for (auto _ : state) {
+    SphereTree tree;
+    build_sphere_tree(spheres, {4}, &tree);
+    benchmark::DoNotOptimize(tree.nodes.data());
+  }
+}
+BENCHMARK(BM_TreeBuild)->RangeMultiplier(10)->Range(1000, 1000000)->Unit(benchmark::kMillisecond);
+
+void BM_NodeErrors(benchmark::State& state) {
+  SphereTree tree = shell_tree(static_cast<int>(state.range(0)));
+  for (auto _ : state) {
+    compute_node_errors(tree);
+    benchmark::DoNotOptimize(tree.node_error.data());
+  }
+}
+BENCHMARK(BM_NodeErrors)->RangeMultiplier(10)->Range(1000, 1000000)->Unit(benchmark::kMillisecond);
 
 // the same queries scanning every leaf: the tree's speed-up is the ratio of the two
 void BM_BruteForceScanSegment(benchmark::State& state) {
