@@ -562,10 +562,10 @@ int main(int argc, char** argv) {
     p.tree_level = level;
     knobs.push_back({"tree_level", static_cast<double>(level), p});
   }
-  for (double radius : {0.00025, 0.0005, 0.001}) {
+  for (double budget : {0.00025, 0.0005, 0.001}) {
     SolverParams p = defaults;
-    p.lod_error = radius;
-    knobs.push_back({"lod_error_mm", radius * 1e3, p});
+    p.lod_error = budget;
+    knobs.push_back({"lod_error_mm", budget * 1e3, p});
   }
   for (size_t i = 0; i < knobs.size(); ++i) {
     const Measured m = measure(grasp, knobs[i].params, 200, 1);

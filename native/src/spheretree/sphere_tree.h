@@ -4,6 +4,7 @@
 // flat array with each node's children contiguous, so a query walks memory forward.
 #pragma once
 
+#include <cassert>
 #include <cstdint>
 #include <vector>
 
@@ -56,6 +57,7 @@ struct TreeCut {
   double max_error;
 
   bool stops(const SphereTree& tree, int32_t node, int32_t level) const {
+    assert(max_error <= 0.0 || tree.node_error.size() == tree.nodes.size());  // built or loaded
     return level == max_level ||
            (max_error > 0.0 && tree.node_error[static_cast<size_t>(node)] <= max_error);
   }
