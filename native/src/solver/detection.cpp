@@ -2,6 +2,7 @@
 #include "solver/detection.h"
 
 #include <algorithm>
+#include <cassert>
 
 #include <glm/geometric.hpp>
 
@@ -100,6 +101,10 @@ void detect_palm(const HandModel& model, const HandReach& reach, const HandPose&
   }
 }
 
+void copy_body(const CandidateSet& from, int body, CandidateSet& out) {
+  out.candidates.insert(out.candidates.end(), from.of(body), from.of(body) + from.count(body));
+}
+
 }  // namespace
 
 HandReach hand_reach(const HandModel& model) {
@@ -128,6 +133,19 @@ HandReach hand_reach(const HandModel& model) {
 Sphere object_bound(const SolverObject& object) {
   const Sphere local = object.tree->node_sphere(0);
   return {object.pose.rotation * local.center + object.pose.position, local.radius};
+}
+
+uint32_t bodies_unmoved(const HandPose& then, const HandPose& now) {
+  uint32_t bodies = 0;
+  for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
+    const FingerPose &a = then.fingers[f], &b = now.fingers[f];
+    for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s)
+      if (a.joint[s] == b.joint[s] && a.joint[s + 1] == b.joint[s + 1])
+        bodies |= 1u << (f * FRUSTA_SEGMENTS_PER_FINGER + s);
+  }
+  if (then.palm_position == now.palm_position && then.palm_rotation == now.palm_rotation)
+    bodies |= 1u << kPalmBody;
+  return bodies;
 }
 
 double body_clearance(const HandModel& model, const HandPose& pose, const CandidateSet& candidates,
@@ -166,7 +184,9 @@ double bound_clearance(const HandReach& reach, const HandPose& pose, const Solve
 
 void detect_candidates(const HandModel& model, const HandReach& reach, const HandPose& pose,
                        const SolverObject* objects, int32_t object_count, double margin,
-                       TreeCut cut, CandidateSet& out, const int32_t* only, int32_t only_count) {
+                       TreeCut cut, CandidateSet& out, const int32_t* only, int32_t only_count,
+                       DetectionReuse reuse) {
+  assert(reuse.last != &out);
   out.candidates.clear();
   out.tree_nodes_visited = 0;
   out.near_objects.clear();
@@ -196,6 +216,10 @@ void detect_candidates(const HandModel& model, const HandReach& reach, const Han
     for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s) {
       const int body = f * FRUSTA_SEGMENTS_PER_FINGER + s;
       out.begin[body] = static_cast<int32_t>(out.candidates.size());
+      if (reuse.has(body)) {
+        copy_body(*reuse.last, body, out);
+        continue;
+      }
       for (int32_t o : out.near_objects) {
         const SolverObject& obj = objects[o];
         if (!bounds_meet(finger_bound, object_bound(obj), margin)) continue;
@@ -211,7 +235,10 @@ void detect_candidates(const HandModel& model, const HandReach& reach, const Han
     }
   }
   out.begin[kPalmBody] = static_cast<int32_t>(out.candidates.size());
-  detect_palm(model, reach, pose, objects, margin, cut, out);
+  if (reuse.has(kPalmBody))
+    copy_body(*reuse.last, kPalmBody, out);
+  else
+    detect_palm(model, reach, pose, objects, margin, cut, out);
   out.begin[kBodyCount] = static_cast<int32_t>(out.candidates.size());
 }
 

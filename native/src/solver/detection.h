@@ -71,15 +71,31 @@ HandReach hand_reach(const HandModel& model);
 // World bound of an object's whole tree.
 Sphere object_bound(const SolverObject& object);
 
+// What a detection may copy from an earlier one instead of walking the trees again:
+// the candidates of `bodies` (bit b: body b) in `last`, which was detected with the
+// same objects, margin and cut, and with those bodies where they are now. A walk would
+// find the same spheres in the same order.
+struct DetectionReuse {
+  const CandidateSet* last = nullptr;
+  uint32_t bodies = 0;
+  bool has(int body) const { return last != nullptr && ((bodies >> body) & 1u) != 0; }
+};
+static_assert(kBodyCount <= 32, "a bit per body");
+
+// The bodies (bit b: body b) whose solid is exactly where it was: a segment whose two
+// joint centres, the palm whose position and rotation, are equal in both poses.
+uint32_t bodies_unmoved(const HandPose& then, const HandPose& now);
+
 // Fill `out` with every leaf within `margin` of the hand at `pose`, or with the nodes
 // where the cut stops standing in for theirs. The vector keeps its capacity
 // between calls, so a steady scene allocates nothing. `only` (null: every object) lists
 // the objects to look at, in increasing order: a broad phase's answer, which must hold
-// every object whose bound comes within `margin` of the hand's.
+// every object whose bound comes within `margin` of the hand's. `out` must not be
+// `reuse.last`.
 void detect_candidates(const HandModel& model, const HandReach& reach, const HandPose& pose,
                        const SolverObject* objects, int32_t object_count, double margin,
                        TreeCut cut, CandidateSet& out, const int32_t* only = nullptr,
-                       int32_t only_count = 0);
+                       int32_t only_count = 0, DetectionReuse reuse = {});
 
 // How deep one body of the hand at `pose` sinks into its candidates, as a negative
 // exact gap; 0 when it touches none (callers compare it with thresholds <= 0 only, so

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <utility>
 
 #include <glm/geometric.hpp>
 
@@ -164,6 +165,7 @@ frusta_result HandSolver::step(const HandState& haptic, const SolverObject* obje
     started_ = true;
   }
   settled_.fill(false);
+  detected_ = false;  // the objects may have moved since the last step
   const bool timed = deadline != Clock::time_point::max();
   Clock::time_point before = timed ? Clock::now() : Clock::time_point();
   substep_cost_ -= substep_cost_ / 8;  // one slow sub-step (a preemption) fades in a few steps
@@ -270,13 +272,19 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
     forward_kinematics(model_, graphic_, pose_);
     candidates_.candidates.clear();
     std::fill(std::begin(candidates_.begin), std::end(candidates_.begin), 0);
+    detected_ = false;
     budget = std::max(0.0, budget - s * whole_move);
     moved = s * whole_move > 0.0;
     return s == 1.0;
   }
 
+  std::swap(candidates_, last_candidates_);
+  const DetectionReuse reuse{detected_ ? &last_candidates_ : nullptr,
+                             detected_ ? bodies_unmoved(detected_pose_, pose_) : 0u};
   detect_candidates(model_, reach_, pose_, objects, object_count, params_.prediction_margin,
-                    TreeCut(params_.tree_level, params_.lod_error), candidates_, only, only_count);
+                    TreeCut(params_.tree_level, params_.lod_error), candidates_, only, only_count, reuse);
+  detected_pose_ = pose_;
+  detected_ = true;
   stats.candidates = std::max(stats.candidates, static_cast<int32_t>(candidates_.candidates.size()));
   stats.tree_nodes_visited += candidates_.tree_nodes_visited;
   const StageInputs inputs{model_, reach_, params_, candidates_};

@@ -131,6 +131,11 @@ class HandSolver {
   Clock::duration substep_cost_{0};  // the longest sub-step of steps with a deadline, fading
   PalmHeading heading_;        // this step's: the graphic palm does not go back against it
   CandidateSet candidates_;
+  // this step's last detection, made at detected_pose_: a sub-step copies the candidates
+  // of the bodies that have not moved since (objects stay put during a step)
+  CandidateSet last_candidates_;
+  HandPose detected_pose_;
+  bool detected_ = false;
   const ObjectFinder* finder_ = nullptr;  // this step's
   std::vector<int32_t> near_;             // what it found for a sub-step, in index order
   std::array<bool, FRUSTA_FINGER_COUNT> settled_{};  // per sub-step: reached or stopped

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Contact prediction walks each tree once for many probes (issue 21): its candidates
+// Contact prediction walks each tree once for many probes (issue 21), and copies the
+// candidates of the bodies that did not move since the last detection: its candidates
 // must be those of one walk per finger segment and per palm sphere, in that order, bit
 // for bit, since the solver's answer depends on their order.
 #include <random>
@@ -100,7 +101,7 @@ void check_random_hands(const HandModel& model, int32_t draws, uint64_t seed) {
   const std::shared_ptr<const TreeFile> ball = scenes::ball_shell(4000, 0.04);
   const std::shared_ptr<const TreeFile> box = scenes::sample_tree("box"), plate = scenes::sample_tree("plate");
   const TreeCut cuts[] = {TreeCut(), TreeCut(2), TreeCut(-1, 0.0005)};
-  CandidateSet set;
+  CandidateSet set, reused;
   std::vector<TreeHit> hits(1 << 16);
   int64_t finger_candidates = 0, palm_candidates = 0;
   for (int32_t draw = 0; draw < draws; ++draw) {
@@ -122,17 +123,34 @@ void check_random_hands(const HandModel& model, int32_t draws, uint64_t seed) {
       const vec3 toward = glm::normalize(vec3(offset(rng), offset(rng), offset(rng)) + vec3(1e-9));
       objects.push_back({&tree->tree, {at - rotation * local.center + toward * local.radius * unit(rng), rotation}});
     }
+    // then one finger bent further at its middle joint, and half the time the palm
+    // moved too: a detection copies what did not move from the one before
+    HandState moved_state = state;
+    const int bent = static_cast<int>(unit(rng) * FRUSTA_FINGER_COUNT) % FRUSTA_FINGER_COUNT;
+    moved_state.angles[bent * FRUSTA_JOINTS_PER_FINGER + 2] += 0.01;
+    if (unit(rng) < 0.5) moved_state.palm_position.x += 0.001;
+    HandPose moved;
+    forward_kinematics(model, moved_state, moved);
+    const uint32_t unmoved = bodies_unmoved(pose, moved);
+    EXPECT_EQ(unmoved & (1u << (bent * FRUSTA_SEGMENTS_PER_FINGER + 2)), 0u) << "its distal segment moved";
+    EXPECT_EQ((unmoved >> kPalmBody) & 1u, moved_state.palm_position == state.palm_position ? 1u : 0u);
     for (const TreeCut& cut : cuts)
       for (double margin : {0.002, 0.0}) {
+        const std::string what = "draw " + std::to_string(draw) + ", level " + std::to_string(cut.max_level) +
+                                 ", radius " + std::to_string(cut.max_error) + ", margin " + std::to_string(margin);
         int32_t begin[kBodyCount + 1];
         const std::vector<Candidate> expected = walk_per_probe(model, reach, pose, objects, margin, cut, begin, hits);
         detect_candidates(model, reach, pose, objects.data(), static_cast<int32_t>(objects.size()), margin, cut, set);
-        expect_same(expected, begin, set,
-                    "draw " + std::to_string(draw) + ", level " + std::to_string(cut.max_level) + ", radius " +
-                        std::to_string(cut.max_error) + ", margin " + std::to_string(margin));
+        expect_same(expected, begin, set, what);
         if (testing::Test::HasFatalFailure()) return;
         finger_candidates += set.begin[kPalmBody];
         palm_candidates += set.count(kPalmBody);
+        const std::vector<Candidate> expected_moved =
+            walk_per_probe(model, reach, moved, objects, margin, cut, begin, hits);
+        detect_candidates(model, reach, moved, objects.data(), static_cast<int32_t>(objects.size()), margin, cut,
+                          reused, nullptr, 0, {&set, unmoved});
+        expect_same(expected_moved, begin, reused, what + ", moved");
+        if (testing::Test::HasFatalFailure()) return;
       }
   }
   // the draws put both the fingers and the palm into the objects, often
