@@ -21,14 +21,14 @@ double finger_motion(const HandReach& reach, int finger, const FingerAngles& fro
 }
 
 FingerStage::FingerStage(const StageInputs& inputs, int finger, const FingerAngles& target,
-                         double motion_cap, bool slide, HandState& state, HandPose& pose)
+                         double motion_cap, FingerBound bound, HandState& state, HandPose& pose)
     : StageEstimate(state, pose),
       inputs_(inputs),
       finger_(finger),
       target_(target),
       start_(angles(state)),
       motion_cap_(motion_cap),
-      slide_(slide) {
+      bound_(bound) {
   // never worse than the start, which a rounding or a curvature may have left a hair deep
   floor_ = std::min(-inputs.params.penetration_tolerance, clearance(pose));
 }
@@ -88,15 +88,21 @@ int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights) con
   return count;
 }
 
+double FingerStage::row_bound_now() const {
+  // trusting: the cap itself, a hair inside so that rounding cannot refuse the step
+  if (bound_ == FingerBound::kTrust) return (1.0 - 1e-9) * motion_cap_;
+  // sliding: half the cap's rest, the rest left for the next linearisations to press
+  // back onto a surface this one stepped off
+  const double moved = finger_motion(inputs_.reach, finger_, start_, angles(state_));
+  return moved + 0.5 * std::max(0.0, motion_cap_ - moved);
+}
+
 int32_t FingerStage::bound_rows(QpRow* rows) const {
-  if (!slide_) return 0;
+  if (bound_ == FingerBound::kHalve) return 0;
   // finger_motion(start, now + d) <= bound exactly: sum_j lever_j s_j (now_j + d_j -
-  // start_j) <= bound for every choice of signs s. The bound takes half the cap's rest,
-  // the rest left for the next linearisations to press back onto a surface this one
-  // stepped off.
+  // start_j) <= bound for every choice of signs s
   const FingerAngles now = angles(state_);
-  const double moved = finger_motion(inputs_.reach, finger_, start_, now);
-  const double bound = moved + 0.5 * std::max(0.0, motion_cap_ - moved);
+  const double bound = row_bound_now();
   int32_t count = 0;
   for (int signs = 0; signs < (1 << FRUSTA_JOINTS_PER_FINGER); ++signs) {
     QpRow& row = rows[count++];
@@ -125,10 +131,13 @@ double FingerStage::try_step(const double* d, double s) {
   FingerAngles next = angles(state_);
   for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j)
     next[j] = std::clamp(next[j] + s * d[j], finger.joint_min[j], finger.joint_max[j]);
-  if (finger_motion(inputs_.reach, finger_, start_, next) > motion_cap_) {
+  const double motion = finger_motion(inputs_.reach, finger_, start_, next);
+  if (motion > motion_cap_) {
     capped_ = true;
     return -INFINITY;
   }
+  // a step the rows stopped at the cap: the stage did not reach its target
+  if (bound_ == FingerBound::kTrust && motion >= (1.0 - 1e-6) * motion_cap_) capped_ = true;
   trial_state_ = state_;
   std::copy(next.begin(), next.end(), trial_state_.angles.begin() + finger_ * FRUSTA_JOINTS_PER_FINGER);
   return trial_clearance();

@@ -360,8 +360,12 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
       continue;
     }
     forward_kinematics(model_, graphic_, pose_);
+    // a target beyond the cap: the best step the cap allows (FingerBound::kTrust)
+    const FingerBound bound = move > finger_cap ? FingerBound::kTrust : FingerBound::kHalve;
     const StageStats finger_stats = solve_within_budget(
-        [&](bool slide) { return FingerStage(inputs, f, to, finger_cap, slide, graphic_, pose_); },
+        [&](bool slide) {
+          return FingerStage(inputs, f, to, finger_cap, slide ? FingerBound::kSlide : bound, graphic_, pose_);
+        },
         budget_binds, slid);
     add(finger_stats);
     settled_[f] = !finger_stats.capped;

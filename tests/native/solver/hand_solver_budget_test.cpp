@@ -76,5 +76,32 @@ TEST(HandSolverBudget, ADeepGraspOfTenThousandLeavesPushesContinuouslyWhereTheBu
   EXPECT_LE(deepest, kMaxPenetration);
 }
 
+// A glove that jumps from open to a curled index in one sample, its step cut short: the
+// finger closes the 2 mm gap to the box in its first three sub-steps and touches it, so the
+// step's forces (and the glove's brake) answer the press at once. A finger stage aimed
+// past its cap stepped straight towards its target cut short, along rows linearised for
+// that far target: the index slid sideways (its first joint bent back) and touched the
+// box only in the fifth sub-step, a period late when the budget ended the step before.
+TEST(HandSolverBudget, AFingerJumpingIntoABoxTouchesItWithinTheStepsFirstSubSteps) {
+  const HandModel model = make_hand_model(default_hand_def());
+  const auto box = scenes::test_box("press_box");
+  SolverObject object{&box->tree, {}};
+  object.pose.position =
+      scenes::index_press_box_centre(model, 0.5 * scenes::test_box_spec("press_box").size.x, 0.002);
+  HandState open = scenes::open_hand(), curled = open;
+  scenes::set_flexion(curled, FRUSTA_FINGER_INDEX, 0.84, 0.94, 0.73);  // 0.6 of a fist
+  for (const int32_t substeps : {3, 4}) {
+    SolverParams params;
+    params.max_substeps = substeps;
+    HandSolver solver(model, params);
+    ASSERT_EQ(solver.step(open, &object, 1, nullptr), FRUSTA_OK);
+    StepStats stats;
+    ASSERT_EQ(solver.step(curled, &object, 1, &stats), FRUSTA_OK);
+    EXPECT_TRUE(stats.lagging) << substeps;
+    EXPECT_FALSE(solver.contacts().empty()) << "after " << substeps << " sub-steps";
+    EXPECT_LE(scenes::deepest_penetration(model, solver.graphic_pose(), {object}), kMaxPenetration);
+  }
+}
+
 }  // namespace
 }  // namespace frusta
