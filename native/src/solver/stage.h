@@ -81,9 +81,11 @@ inline double row_bound(const SolverParams& params, double value, double reach) 
 //     -infinity when that moves the hand further than the stage allows;
 //   double try_between(double s): the same for the trial a fraction s of the way from
 //     the last estimate save() kept to the current one;
-//   int32_t bound_rows(QpRow* rows): when sliding, rows (at most kMaxBoundRows) that keep
-//     the next step within the stage's motion bound; else none;
-//   bool capped(): whether some trial was refused for moving too far;
+//   int32_t bound_rows(QpRow* rows): rows (at most kMaxBoundRows) that keep the next
+//     step within the stage's motion bound, for a stage that steps within them (one
+//     sliding, a finger aimed beyond its cap); else none;
+//   bool capped(): whether some trial was refused for moving too far (or, stepping
+//     within bound rows, stopped at the cap by them);
 //   void commit(): make the last trial the current estimate;
 //   void save() / restore(): keep / return to an estimate that meets floor().
 //
