@@ -26,7 +26,7 @@ void PeriodicClock::start() {
   aligned_ = false;
 }
 
-PeriodicClock::Clock::duration PeriodicClock::wait() {
+PeriodicClock::Clock::duration PeriodicClock::wait(const Wakeup* early, Clock::duration window) {
   if (aligned_) deadline_ += phase_correction(deadline_ - anchor_, period_);
   Clock::time_point now = Clock::now();
   const auto behind = (now - deadline_) / period_;
@@ -36,12 +36,26 @@ PeriodicClock::Clock::duration PeriodicClock::wait() {
     deadline_ += (behind - max_burst_) * period_;
   }
   if (now > deadline_ + period_) ++late_;
-  if (deadline_ - now > spin_) std::this_thread::sleep_until(deadline_ - spin_);
-  while ((now = Clock::now()) < deadline_) {
+  bool woken = false;
+  if (early != nullptr && early->is_open() && deadline_ - now > spin_) {
+    if (deadline_ - window > now) {
+      // a signal from before the window answers an earlier tick: ticks that took it
+      // would come a period ahead of their events, for good
+      std::this_thread::sleep_until(deadline_ - window);
+      early->drain();
+    }
+    woken = early->wait_until(deadline_ - spin_);
+  }
+  if (woken) {
+    now = Clock::now();
+  } else {
+    if (deadline_ - Clock::now() > spin_) std::this_thread::sleep_until(deadline_ - spin_);
+    while ((now = Clock::now()) < deadline_) {
+    }
   }
   tick_ = deadline_;
   deadline_ += period_;
-  return now - tick_;
+  return std::max(now - tick_, Clock::duration::zero());
 }
 
 }  // namespace frusta

@@ -12,11 +12,16 @@
 //
 // The ticks may be aligned to events (align): a glove's samples arrive on their own
 // clock, and a sample that just missed a tick waits a whole period for the next; ticks
-// that fall a little after the samples answer each within a fraction of one.
+// that fall a little after the samples answer each within a fraction of one. A tick may
+// also come early on an event (wait with a Wakeup): from a window before its deadline
+// on, a signal runs it at once, so a sample is answered when it lands, and one that
+// comes late still finds its tick waiting.
 #pragma once
 
 #include <chrono>
 #include <cstdint>
+
+#include "core/wakeup.h"
 
 namespace frusta {
 
@@ -46,7 +51,13 @@ class PeriodicClock {
 
   // Wait for the next deadline (none if it is past). Returns how late the wake-up
   // was; tick() is then the deadline this wake-up answers.
-  Clock::duration wait();
+  Clock::duration wait() { return wait(nullptr, Clock::duration::zero()); }
+  // The same, but a signal on `early` from `window` before the deadline on ends the wait
+  // at once (a signal that came before the window is dropped as it opens; one that came
+  // while the caller was away after the window opened stands). tick() is still the
+  // deadline the tick answers, and an early tick counts as on time (0). Without a Wakeup
+  // that is open, wait() exactly.
+  Clock::duration wait(const Wakeup* early, Clock::duration window);
 
   // Move the coming deadlines, a little a tick, towards `when` plus whole periods; the
   // newest call wins.

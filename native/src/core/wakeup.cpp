@@ -2,10 +2,12 @@
 #include "core/wakeup.h"
 
 #if defined(__linux__)
+#include <poll.h>
 #include <sys/eventfd.h>
 #include <unistd.h>
 #elif !defined(_WIN32)
 #include <fcntl.h>
+#include <poll.h>
 #include <unistd.h>
 #endif
 
@@ -58,6 +60,23 @@ void Wakeup::drain() const {
   uint64_t bytes[8];
   while (::read(read_fd_, bytes, sizeof bytes) > 0 && read_fd_ != write_fd_) {
   }
+#endif
+}
+
+bool Wakeup::wait_until(std::chrono::steady_clock::time_point until) const {
+#if !defined(_WIN32)
+  if (read_fd_ < 0) return false;
+  const auto left = until - std::chrono::steady_clock::now();
+  const int64_t ns = left.count() > 0 ? std::chrono::duration_cast<std::chrono::nanoseconds>(left).count() : 0;
+  pollfd p{read_fd_, POLLIN, 0};
+  const timespec timeout{static_cast<time_t>(ns / 1000000000), static_cast<long>(ns % 1000000000)};
+  // an interrupted wait counts as no signal: the caller's schedule goes on
+  if (ppoll(&p, 1, &timeout, nullptr) <= 0 || p.revents == 0) return false;
+  drain();
+  return true;
+#else
+  (void)until;
+  return false;
 #endif
 }
 

@@ -5,12 +5,17 @@
 // of its own (up to a period later). It is a kernel counter (Linux: an eventfd, other
 // POSIX: a pipe) so that a stream can wait on it and on the glove together.
 //
+// The same nudge runs the other way: a glove's thread signals the world's thread when
+// it sets a sample, and the tick that was waiting for it runs at once (wait_until).
+//
 // Threads: open() on the host, before the signalling thread can see the wakeup is in
-// use (the port opens it before a device claims it); signal() from the stepping thread,
-// one non-blocking write, never a wait; drain() and handle() from the waiting thread.
-// Windows: not opened (its serial reads wait on COMMTIMEOUTS alone); the device thread
-// then keeps its own schedule.
+// use (the port opens it before a device claims it); signal() from the signalling
+// thread, one non-blocking write, never a wait; drain(), handle() and wait_until() from
+// the waiting thread. Windows: not opened (its serial reads wait on COMMTIMEOUTS alone);
+// the device thread then keeps its own schedule, and the world's thread its ticks.
 #pragma once
+
+#include <chrono>
 
 namespace frusta {
 
@@ -33,6 +38,9 @@ class Wakeup {
   // clear it after waking.
   int handle() const { return read_fd_; }
   void drain() const;
+  // Waiting thread: block until a signal (true, drained) or `until` on the steady clock
+  // (false). Not open: false at once, without waiting.
+  bool wait_until(std::chrono::steady_clock::time_point until) const;
 
  private:
   int read_fd_ = -1, write_fd_ = -1;  // the same eventfd on Linux

@@ -6,8 +6,8 @@
 
 namespace frusta {
 
-HandPort::HandPort(int32_t hand, double rate_hz)
-    : input_(TimedInput{}), feed_(DeviceFeed{}), hand_(hand), rate_hz_(rate_hz) {}
+HandPort::HandPort(int32_t hand, double rate_hz, const Wakeup* sample_arrived)
+    : input_(TimedInput{}), feed_(DeviceFeed{}), sample_arrived_(sample_arrived), hand_(hand), rate_hz_(rate_hz) {}
 
 void HandPort::open(uint32_t generation) {
   input_.reset(TimedInput{});
@@ -78,7 +78,9 @@ frusta_result HandPort::write_input(const HandState& state, int64_t time_ns, Dri
   // every sample in order for the step's playback; when a burst fills the queue, the
   // newest still reaches the step through the triple buffer
   queue_.push(slot);
+  const bool live = slot.live;
   input_.publish();
+  if (live && sample_arrived_ != nullptr) sample_arrived_->signal();
   return FRUSTA_OK;
 }
 

@@ -63,8 +63,10 @@ class HandPort {
   enum class Driver : uint8_t { kHost, kDevice };
 
   // hand: the hand slot in its world (for messages); rate_hz: the world's step rate,
-  // which a device paces its commands by. Closed until open().
-  HandPort(int32_t hand, double rate_hz);
+  // which a device paces its commands by; sample_arrived (may be null, must outlive the
+  // port): signalled as a device sets a live sample, so the world's thread answers it at
+  // once. Closed until open().
+  HandPort(int32_t hand, double rate_hz, const Wakeup* sample_arrived = nullptr);
   HandPort(const HandPort&) = delete;
   HandPort& operator=(const HandPort&) = delete;
 
@@ -129,6 +131,7 @@ class HandPort {
   std::atomic<int64_t> last_time_ns_{INT64_MIN};
   TripleBuffer<DeviceFeed> feed_;
   Wakeup feed_published_;  // opened before device_ is first set; never closed
+  const Wakeup* sample_arrived_;
   std::atomic<bool> device_{false};
   // a driver counts itself in, then checks the generation; the host closes, then checks
   // the count (both sequentially consistent): either the driver sees the port closed,

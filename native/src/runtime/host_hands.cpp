@@ -7,14 +7,14 @@
 
 namespace frusta {
 
-HostHands::HostHands(const WorldDef& def, HostCommands& commands)
+HostHands::HostHands(const WorldDef& def, HostCommands& commands, const Wakeup* sample_arrived)
     : def_(def),
       commands_(commands),
       ids_(def.max_hands),
       pipelines_(static_cast<size_t>(def.max_hands)),
       removed_at_(static_cast<size_t>(def.max_hands), 0) {
   for (int32_t slot = 0; slot < def.max_hands; ++slot)
-    ports_.push_back(std::make_unique<HandPort>(slot, def.rate_hz));
+    ports_.push_back(std::make_unique<HandPort>(slot, def.rate_hz, sample_arrived));
 }
 
 frusta_result HostHands::check_live(HandHandle hand) const {

@@ -26,7 +26,8 @@ namespace frusta {
 
 class HostHands {
  public:
-  HostHands(const WorldDef& def, HostCommands& commands);
+  // sample_arrived: given to every port (HandPort)
+  HostHands(const WorldDef& def, HostCommands& commands, const Wakeup* sample_arrived);
 
   // The world's solver settings are checked against the hand first.
   // FRUSTA_ERROR_CAPACITY when every slot is taken or still being let go of, or the

@@ -17,9 +17,6 @@ namespace {
 // behind (a world stopped and started again), they jump
 constexpr int64_t kCatchUpDivisor = 4;
 constexpr int64_t kMaxPlayLagNs = 500'000'000;
-// the own thread's ticks fall a fifth of a period after a glove's samples are set: room
-// for a sample set a little late to still make its tick (tools/bench devices)
-constexpr int64_t kTickAfterGloveDivisor = 5;
 
 }  // namespace
 
@@ -27,7 +24,7 @@ World::World(const WorldDef& def)
     : def_(def),
       commands_(def.command_capacity),
       host_objects_(def.max_objects, commands_),
-      host_hands_(def, commands_),
+      host_hands_(def, commands_, sample_arrived_.open() ? &sample_arrived_ : nullptr),
       scene_objects_(def.max_objects),
       hands_(static_cast<size_t>(def.max_hands), nullptr),
       hand_generation_(static_cast<size_t>(def.max_hands), 0) {
@@ -93,8 +90,9 @@ frusta_result World::step() {
 frusta_result World::start() { return start(def_.rate_hz, def_.spin_us); }
 
 frusta_result World::start(double rate_hz, double spin_us) {
-  return thread_.start(rate_hz, spin_us,
-                       [this](double dt, int64_t tick_ns) { return step_once(dt, true, tick_ns); });
+  return thread_.start(
+      rate_hz, spin_us, [this](double dt, int64_t tick_ns) { return step_once(dt, true, tick_ns); },
+      &sample_arrived_);
 }
 
 void World::stop() { thread_.stop(); }
@@ -206,9 +204,8 @@ int64_t World::step_once(double dt, bool paced, int64_t tick_ns) {
   out.overruns = thread_.overruns();
   out.achieved_rate_hz = thread_.achieved_rate_hz();
   output_.publish();
-  // the ticks fall a fifth of a period after the first glove's samples arrive: a sample
-  // that just missed a tick waited a whole period (its ticks cannot follow two gloves)
-  return glove_sample_ns > 0 ? glove_sample_ns + period_ns / kTickAfterGloveDivisor : 0;
+  // the ticks follow the first glove's samples (StepThread; they cannot follow two)
+  return glove_sample_ns;
 }
 
 }  // namespace frusta

@@ -128,6 +128,7 @@ class World {
   WorldDef def_;
   HostCommands commands_;       // the host's side
   HostObjects host_objects_;
+  Wakeup sample_arrived_;  // a glove's sample set: before the ports, which signal it
   HostHands host_hands_;
   SceneObjects scene_objects_;  // the stepping thread's
   std::vector<HandPipeline*> hands_;          // by slot: the hand's pipeline, or null

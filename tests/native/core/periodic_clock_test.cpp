@@ -63,6 +63,47 @@ TEST(PeriodicClock, ALongStallDropsAllButOneBurst) {
   EXPECT_LE(clock.tick(), after - 4 * milliseconds(1));
 }
 
+// A tick may come early on a signal, but only within its window: the deadlines stay on
+// their grid either way. Periods are long so that nothing here depends on how soon a
+// thread is scheduled (a machine that stalls for seconds could only make it pass late).
+TEST(PeriodicClock, ASignalWithinTheWindowRunsTheTickAtOnceOnItsDeadline) {
+  using Clock = PeriodicClock::Clock;
+  Wakeup early;
+  ASSERT_TRUE(early.open());
+  PeriodicClock clock(std::chrono::seconds(30), microseconds(200));
+  clock.start();
+  const Clock::time_point first = clock.deadline();
+  early.signal();  // a sample already there when the wait begins, in the window
+  EXPECT_EQ(clock.wait(&early, std::chrono::seconds(30)), Clock::duration::zero()) << "on time";
+  EXPECT_LT(Clock::now(), first) << "ran at once, not at its deadline";
+  EXPECT_EQ(clock.tick(), first) << "the tick still answers its deadline";
+  EXPECT_EQ(clock.deadline(), first + std::chrono::seconds(30));
+  // and a signal that comes while the tick waits (in a window that opened a period ago:
+  // this one opens only at `first`, and would drop a signal from before)
+  std::thread glove([&early] { early.signal(); });
+  clock.wait(&early, std::chrono::seconds(60));
+  glove.join();
+  EXPECT_LT(Clock::now(), first + std::chrono::seconds(30));
+  EXPECT_EQ(clock.tick(), first + std::chrono::seconds(30));
+}
+
+// A signal that came before the window answered an earlier tick: taken, the ticks would
+// come a period ahead of their samples from then on.
+TEST(PeriodicClock, ASignalFromBeforeTheWindowIsDroppedAsItOpens) {
+  using Clock = PeriodicClock::Clock;
+  Wakeup early;
+  ASSERT_TRUE(early.open());
+  PeriodicClock clock(milliseconds(300), microseconds(0));
+  clock.start();
+  early.signal();
+  clock.wait(&early, milliseconds(50));
+  EXPECT_GE(Clock::now(), clock.tick()) << "waited for its deadline";
+  // without a Wakeup, or with one that is not open, wait() as ever
+  Wakeup closed;
+  clock.wait(&closed, milliseconds(300));
+  EXPECT_GE(Clock::now(), clock.tick());
+}
+
 // The alignment's rule alone: a fraction of the phase error, wrapped to the nearer
 // tick, bounded per tick.
 TEST(PeriodicClock, APhaseCorrectionMovesTowardsTheNearerAlignedTickBoundedPerTick) {

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <limits>
 #include <string>
 
@@ -68,6 +69,28 @@ TEST(HandPort, OneDeviceAtATimeAndTheHostWaitsForItsRelease) {
   EXPECT_FALSE(port.device_driven());
   EXPECT_EQ(port.set_input(valid_state(), HandPort::Driver::kHost, kHand), FRUSTA_OK);
   EXPECT_EQ(port.claim_for_device(), FRUSTA_OK);
+}
+
+// A glove's sample wakes the world's thread (its tick answers the sample as it lands);
+// the host's, played a delay behind, do not.
+TEST(HandPort, AGlovesLiveSampleSignalsTheWorldsThreadAndTheHostsDoNot) {
+  Wakeup sample_arrived;
+  ASSERT_TRUE(sample_arrived.open());
+  HandPort port(1, 1000.0, &sample_arrived);
+  port.open(kHand);
+  const auto now = std::chrono::steady_clock::now;
+  ASSERT_EQ(port.set_input(valid_state(), HandPort::Driver::kHost, kHand), FRUSTA_OK);
+  ASSERT_EQ(port.set_input_at(valid_state(), 5, HandPort::Driver::kHost, kHand), FRUSTA_OK);
+  EXPECT_FALSE(sample_arrived.wait_until(now()));
+  ASSERT_EQ(port.claim_for_device(), FRUSTA_OK);
+  HandState refused = valid_state();
+  refused.angles[2] = std::numeric_limits<double>::infinity();
+  ASSERT_NE(port.set_input(refused, HandPort::Driver::kDevice, kHand), FRUSTA_OK);
+  EXPECT_FALSE(sample_arrived.wait_until(now())) << "a refused sample is nothing to answer";
+  ASSERT_EQ(port.set_input(valid_state(), HandPort::Driver::kDevice, kHand), FRUSTA_OK);
+  EXPECT_TRUE(port.take_input().live);
+  EXPECT_TRUE(sample_arrived.wait_until(now()));
+  EXPECT_FALSE(sample_arrived.wait_until(now())) << "drained by the wait that saw it";
 }
 
 TEST(HandPort, AHandGoneFromItsPortIsRefusedToEveryDriverThatStillNamesIt) {
