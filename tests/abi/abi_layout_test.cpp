@@ -138,7 +138,7 @@
   X(frusta_world_def, max_contacts_per_hand, 72, 4)   \
   X(frusta_world_def, command_capacity, 76, 4)        \
   X(frusta_world_def, max_hands, 80, 4)               \
-  X(frusta_world_def, reserved1, 84, 4)               \
+  X(frusta_world_def, realtime_priority, 84, 4)       \
   X(frusta_world_def, max_fingertip_force, 88, 8)     \
   X(frusta_world_def, max_finger_resistance, 96, 8)   \
   X(frusta_world_def, max_joint_torque, 104, 8)       \
@@ -179,7 +179,7 @@
   X(frusta_world_state, overruns, 88, 8)              \
   X(frusta_world_state, rejected_inputs, 96, 8)       \
   X(frusta_world_state, object_count, 104, 4)         \
-  X(frusta_world_state, reserved0, 108, 4)            \
+  X(frusta_world_state, realtime, 108, 4)             \
   X(frusta_world_hand, struct_size, 0, 4)             \
   X(frusta_world_hand, solved, 4, 4)                  \
   X(frusta_world_hand, graphic_palm, 8, 56)           \
@@ -309,8 +309,8 @@
   X(frusta_device_status, 320, 8) \
   X(frusta_device_info, 268, 4)
 
-static_assert(FRUSTA_ABI_VERSION == 7,
-              "the layout table below is ABI 7: update it and the C# mirror with the ABI");
+static_assert(FRUSTA_ABI_VERSION == 8,
+              "the layout table below is ABI 8: update it and the C# mirror with the ABI");
 
 #define FRUSTA_CHECK_MEMBER(type, member, offset, size)                          \
   static_assert(offsetof(type, member) == (offset), #type "." #member " moved"); \

@@ -2370,6 +2370,7 @@ static const IntField kWorldInts[] = {
     {WORLD_FIELD(max_contacts_per_hand), 0, 65536},
     {WORLD_FIELD(command_capacity), 1, 1 << 20},
     {WORLD_FIELD(max_hands), 1, 64},
+    {WORLD_FIELD(realtime_priority), 0, 1},
 };
 
 #define OBJECT_FIELD(member) #member, offsetof(frusta_object_def, member)

@@ -207,8 +207,8 @@ static void test_defaults(void) {
             w.max_substeps == 64,
         "world def: prediction_margin 0.002, lod_error 0, max_iterations 2, max_substeps 64");
   check(w.max_contacts_per_hand == 256 && w.command_capacity == 256 && w.max_hands == 8 &&
-            w.reserved1 == 0,
-        "world def: max_contacts_per_hand 256, command_capacity 256, max_hands 8");
+            w.realtime_priority == 1,
+        "world def: max_contacts_per_hand 256, command_capacity 256, max_hands 8, realtime");
   check(w.max_fingertip_force == 10.0 && w.max_finger_resistance == 10.0 &&
             w.max_joint_torque == 0.5 && w.max_palm_force == 20.0 && w.max_palm_torque == 1.0,
         "world def: device limits 10 N, 10 N, 0.5 N m, 20 N, 1 N m");
@@ -361,7 +361,8 @@ static void test_create_errors(void) {
       {WORLD_FIELD(command_capacity), 0},     {WORLD_FIELD(command_capacity), -5},
       {WORLD_FIELD(command_capacity), (1 << 20) + 1},
       {WORLD_FIELD(max_hands), 0},            {WORLD_FIELD(max_hands), -1},
-      {WORLD_FIELD(max_hands), 65},
+      {WORLD_FIELD(max_hands), 65},          {WORLD_FIELD(realtime_priority), 2},
+      {WORLD_FIELD(realtime_priority), -1},
   };
   for (size_t i = 0; i < sizeof ints / sizeof ints[0]; ++i) {
     const int_case* c = &ints[i];
@@ -1300,7 +1301,7 @@ static void test_read_errors(void) {
   /* latched: the newest step */
   if (expect_ok("read", frusta_world_read(world, &state)))
     check(state.struct_size == (int32_t)sizeof state && state.step == 1 && state.hand_count == 1 &&
-              state.object_count == 1 && near(state.time, 0.001, 1e-15) && state.reserved0 == 0,
+              state.object_count == 1 && near(state.time, 0.001, 1e-15) && state.realtime == 0,
           "state: step %llu, %d hand, %d object, time %g", (unsigned long long)state.step,
           state.hand_count, state.object_count, state.time);
 

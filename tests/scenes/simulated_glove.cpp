@@ -13,6 +13,8 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "core/thread_priority.h"
+
 namespace frusta::scenes {
 
 namespace {
@@ -81,6 +83,7 @@ void SimulatedGlove::write_raw(const std::string& bytes) {
 }
 
 void SimulatedGlove::run() {
+  raise_to_realtime_priority();  // a glove's firmware does not share this machine's cores
   int64_t next = now_ns();
   int64_t tick = 0;
   char buffer[4096];

@@ -79,7 +79,7 @@
 #define FRUSTA_VERSION \
   (FRUSTA_VERSION_MAJOR * 1000000 + FRUSTA_VERSION_MINOR * 1000 + FRUSTA_VERSION_PATCH)
 /** Bumped whenever a struct layout or a signature changes; see frusta_check_abi(). */
-#define FRUSTA_ABI_VERSION 7
+#define FRUSTA_ABI_VERSION 8
 
 /** The library's FRUSTA_VERSION. Thread: any. */
 FRUSTA_API int32_t frusta_version(void);
@@ -765,7 +765,12 @@ typedef struct frusta_world_def {
                                    1..2^20 (rounded up to a power of two); default 256 */
   int32_t max_hands;            /* hand slots, 1..64; default 8. An empty slot costs a
                                    few kilobytes and no step time */
-  int32_t reserved1;            /* explicit padding */
+  int32_t realtime_priority;    /* 1: the own thread and the threads of gloves driving
+                                   its hands ask the system for real-time priority
+                                   (Linux SCHED_FIFO: root or an rtprio limit; Windows
+                                   THREAD_PRIORITY_TIME_CRITICAL), and run at normal
+                                   priority where it is refused (frusta_world_state
+                                   says which); 0: normal priority. Default 1 */
   /* device limits: every output is scaled down to fit, never turned */
   double max_fingertip_force;   /* newtons, per finger; default 10 */
   double max_finger_resistance; /* newtons, per finger; default 10 */
@@ -832,7 +837,7 @@ typedef struct frusta_world_state {
                                    that starts inside objects with no free placement
                                    near (bad input is refused by set_haptic instead) */
   int32_t object_count;         /* objects present at the step */
-  int32_t reserved0;            /* explicit padding */
+  int32_t realtime;             /* 1: the own thread runs at real-time priority */
 } frusta_world_state;
 
 /** One hand as the latched step left it. World frame. */

@@ -31,6 +31,9 @@ frusta_result read_world_def(const frusta_world_def& in, WorldDef* out) {
   def.max_hands = in.max_hands;
   def.rate_hz = in.rate_hz;
   def.spin_us = in.spin_us;
+  if (in.realtime_priority != 0 && in.realtime_priority != 1)
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "realtime_priority is %d, must be 0 or 1", in.realtime_priority);
+  def.realtime_priority = in.realtime_priority == 1;
   def.gravity = vec3_of(in.gravity);
   def.max_contacts_per_hand = in.max_contacts_per_hand;
   def.command_capacity = in.command_capacity;
@@ -151,6 +154,7 @@ FRUSTA_API frusta_world_def frusta_default_world_def(void) {
   def.max_hands = d.max_hands;
   def.rate_hz = d.rate_hz;
   def.spin_us = d.spin_us;
+  def.realtime_priority = d.realtime_priority ? 1 : 0;
   store(d.gravity, def.gravity);
   def.prediction_margin = d.solver.prediction_margin;
   def.lod_error = d.solver.lod_error;
@@ -371,7 +375,7 @@ FRUSTA_API frusta_result frusta_world_read(frusta_world_id world, frusta_world_s
   int32_t present = 0;
   for (const ObjectSnapshot& o : snap.objects) present += o.present ? 1 : 0;
   state->object_count = present;
-  state->reserved0 = 0;
+  state->realtime = snap.realtime ? 1 : 0;
   return FRUSTA_OK;
 }
 

@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "core/periodic_clock.h"
+#include "core/thread_priority.h"
 #include "core/timer_resolution.h"
 
 namespace frusta {
@@ -113,6 +114,7 @@ void DeviceLink::apply_capabilities(const DeviceCapabilities& announced) {
 
 void DeviceLink::run() {
   const FineTimerResolution fine_sleeps;
+  if (port_.realtime_priority()) raise_to_realtime_priority();  // normal where refused
   uint8_t buffer[512];
   // a stream that wakes on the step's publish sends each command as soon as the step is
   // out (the sample it solved is then at most a period and a step old); others keep a

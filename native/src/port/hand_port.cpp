@@ -6,8 +6,13 @@
 
 namespace frusta {
 
-HandPort::HandPort(int32_t hand, double rate_hz, const Wakeup* sample_arrived)
-    : input_(TimedInput{}), feed_(DeviceFeed{}), sample_arrived_(sample_arrived), hand_(hand), rate_hz_(rate_hz) {}
+HandPort::HandPort(int32_t hand, double rate_hz, const Wakeup* sample_arrived, bool realtime_priority)
+    : input_(TimedInput{}),
+      feed_(DeviceFeed{}),
+      sample_arrived_(sample_arrived),
+      hand_(hand),
+      rate_hz_(rate_hz),
+      realtime_priority_(realtime_priority) {}
 
 void HandPort::open(uint32_t generation) {
   input_.reset(TimedInput{});

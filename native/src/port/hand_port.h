@@ -65,8 +65,10 @@ class HandPort {
   // hand: the hand slot in its world (for messages); rate_hz: the world's step rate,
   // which a device paces its commands by; sample_arrived (may be null, must outlive the
   // port): signalled as a device sets a live sample, so the world's thread answers it at
-  // once. Closed until open().
-  HandPort(int32_t hand, double rate_hz, const Wakeup* sample_arrived = nullptr);
+  // once; realtime_priority: the world's wish for its devices' threads. Closed until
+  // open().
+  HandPort(int32_t hand, double rate_hz, const Wakeup* sample_arrived = nullptr,
+           bool realtime_priority = false);
   HandPort(const HandPort&) = delete;
   HandPort& operator=(const HandPort&) = delete;
 
@@ -96,6 +98,8 @@ class HandPort {
   // One device thread: the newest feed, unchanged until its next call.
   const DeviceFeed& read_feed() { return feed_.read(); }
   double rate_hz() const { return rate_hz_; }
+  // whether a device's thread should ask for real-time priority (WorldDef)
+  bool realtime_priority() const { return realtime_priority_; }
 
   // Host: a device takes the hand (FRUSTA_ERROR_WRONG_STATE if one has it already), or
   // gives it back to the host.
@@ -140,6 +144,7 @@ class HandPort {
   std::atomic<int32_t> writers_{0};
   int32_t hand_;
   double rate_hz_;
+  bool realtime_priority_;
 };
 
 }  // namespace frusta

@@ -14,7 +14,7 @@ HostHands::HostHands(const WorldDef& def, HostCommands& commands, const Wakeup* 
       pipelines_(static_cast<size_t>(def.max_hands)),
       removed_at_(static_cast<size_t>(def.max_hands), 0) {
   for (int32_t slot = 0; slot < def.max_hands; ++slot)
-    ports_.push_back(std::make_unique<HandPort>(slot, def.rate_hz, sample_arrived));
+    ports_.push_back(std::make_unique<HandPort>(slot, def.rate_hz, sample_arrived, def.realtime_priority));
 }
 
 frusta_result HostHands::check_live(HandHandle hand) const {

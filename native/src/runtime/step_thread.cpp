@@ -6,11 +6,13 @@
 
 #include "core/error.h"
 #include "core/periodic_clock.h"
+#include "core/thread_priority.h"
 #include "core/timer_resolution.h"
 
 namespace frusta {
 
-frusta_result StepThread::start(double rate_hz, double spin_us, Step step, const Wakeup* sample_arrived) {
+frusta_result StepThread::start(double rate_hz, double spin_us, Step step, const Wakeup* sample_arrived,
+                                bool realtime) {
   if (!(rate_hz >= 1.0 && rate_hz <= 100000.0))
     return fail(FRUSTA_ERROR_OUT_OF_RANGE, "rate is %g Hz, must be 1..100000", rate_hz);
   if (!(spin_us >= 0.0 && spin_us <= 1e6 / rate_hz))
@@ -19,8 +21,8 @@ frusta_result StepThread::start(double rate_hz, double spin_us, Step step, const
   if (thread_.joinable()) thread_.join();  // a thread stopped by itself is collected first
   running_.store(true, std::memory_order_release);
   try {
-    thread_ = std::thread([this, rate_hz, spin_us, step = std::move(step), sample_arrived] {
-      run(rate_hz, spin_us, step, sample_arrived);
+    thread_ = std::thread([this, rate_hz, spin_us, step = std::move(step), sample_arrived, realtime] {
+      run(rate_hz, spin_us, step, sample_arrived, realtime);
     });
   } catch (const std::system_error& e) {
     running_.store(false, std::memory_order_release);
@@ -34,10 +36,12 @@ void StepThread::stop() {
   if (thread_.joinable()) thread_.join();
 }
 
-void StepThread::run(double rate_hz, double spin_us, const Step& step, const Wakeup* sample_arrived) {
+void StepThread::run(double rate_hz, double spin_us, const Step& step, const Wakeup* sample_arrived,
+                     bool realtime) {
   using namespace std::chrono;
   using Duration = PeriodicClock::Clock::duration;
   const FineTimerResolution fine_sleeps;
+  realtime_ = realtime && raise_to_realtime_priority();
   const Duration period = duration_cast<Duration>(duration<double>(1.0 / rate_hz));
   PeriodicClock clock(period, duration_cast<Duration>(duration<double, std::micro>(spin_us)));
   clock.start();

@@ -36,8 +36,10 @@ class StepThread {
 
   // Host: start ticking (rate 1..100000 Hz, spin 0..one period, checked here);
   // FRUSTA_ERROR_WRONG_STATE if running. sample_arrived (may be null; it must outlive
-  // the thread): signalled by a glove's thread as it sets a sample.
-  frusta_result start(double rate_hz, double spin_us, Step step, const Wakeup* sample_arrived = nullptr);
+  // the thread): signalled by a glove's thread as it sets a sample. realtime: the
+  // thread asks for real-time priority (core/thread_priority.h).
+  frusta_result start(double rate_hz, double spin_us, Step step, const Wakeup* sample_arrived = nullptr,
+                      bool realtime = false);
   // Host: stop and join; returns once the current tick is done. No effect if stopped.
   void stop();
   bool running() const { return running_.load(std::memory_order_acquire); }
@@ -46,16 +48,18 @@ class StepThread {
   const StepHistogram& lateness() const { return lateness_; }  // wake-up, microseconds
   int64_t overruns() const { return overruns_; }
   double achieved_rate_hz() const { return achieved_rate_hz_; }
+  bool realtime() const { return realtime_; }  // the system granted it
 
  private:
   // a tick follows a glove's signal from 7/10 of a period before its deadline, which
   // falls half a period after the sample is due: a fifth of a period's early arrival
   static constexpr int kEarlyWindowTenths = 7;
-  void run(double rate_hz, double spin_us, const Step& step, const Wakeup* sample_arrived);
+  void run(double rate_hz, double spin_us, const Step& step, const Wakeup* sample_arrived, bool realtime);
 
   StepHistogram lateness_;
   int64_t overruns_ = 0;
   double achieved_rate_hz_ = 0.0;
+  bool realtime_ = false;
   std::atomic<bool> running_{false};
   std::thread thread_;
 };

@@ -92,7 +92,7 @@ frusta_result World::start() { return start(def_.rate_hz, def_.spin_us); }
 frusta_result World::start(double rate_hz, double spin_us) {
   return thread_.start(
       rate_hz, spin_us, [this](double dt, int64_t tick_ns) { return step_once(dt, true, tick_ns); },
-      &sample_arrived_);
+      &sample_arrived_, def_.realtime_priority);
 }
 
 void World::stop() { thread_.stop(); }
@@ -203,6 +203,7 @@ int64_t World::step_once(double dt, bool paced, int64_t tick_ns) {
   out.wake_late_us_max = thread_.lateness().max();
   out.overruns = thread_.overruns();
   out.achieved_rate_hz = thread_.achieved_rate_hz();
+  out.realtime = paced && thread_.realtime();
   output_.publish();
   // the ticks follow the first glove's samples (StepThread; they cannot follow two)
   return glove_sample_ns;

@@ -21,6 +21,9 @@ struct WorldDef {
   vec3 gravity{0.0};
   double rate_hz = 1000.0;  // the own thread's rate, and so dynamic objects' time step
   double spin_us = 200.0;   // the own thread spins this long before each tick
+  // the own thread and its gloves' threads ask for real-time priority (core/
+  // thread_priority.h): a glove answered late is felt, whatever else the machine runs
+  bool realtime_priority = true;
   int32_t max_objects = 64;
   // hand slots: a hand's ports and slot headers are made with the world, the rest of
   // it when the hand is added. At most kMaxHands: a snapshot's object keeps which

@@ -74,6 +74,7 @@ struct WorldSnapshot {
   double wake_late_us_p50 = 0.0, wake_late_us_p99 = 0.0, wake_late_us_max = 0.0;
   int64_t overruns = 0;
   double achieved_rate_hz = 0.0;  // own thread: steps over the time since start()
+  bool realtime = false;          // own thread: it runs at real-time priority
   int64_t rejected_inputs = 0;  // inputs the solver could not place (inside objects)
 
   // The hand `hand` names in this step, or null: a slot out of range, empty, or another

@@ -155,7 +155,7 @@ namespace Frusta.Binding.Tests
             Assert.Equal(256, w.MaxContactsPerHand);
             Assert.Equal(256, w.CommandCapacity);
             Assert.Equal(8, w.MaxHands);
-            Assert.Equal(0, w.reserved1);
+            Assert.True(w.RealtimePriority);
             Assert.Equal((10.0, 10.0, 0.5, 20.0, 1.0),
                 (w.MaxFingertipForce, w.MaxFingerResistance, w.MaxJointTorque, w.MaxPalmForce, w.MaxPalmTorque));
             Assert.Equal((0.010, 0.040), (w.InputDelay, w.MaxExtrapolation));

@@ -73,6 +73,7 @@ namespace Frusta.Binding.Tests
             Assert.Equal((1, 1, 0L), (state.HandCount, state.ObjectCount, state.RejectedInputs));
             Assert.True(state.StepUs > 0 && state.StepUsP50 > 0 && state.StepUsP99 >= state.StepUsP50 && state.StepUsMax >= state.StepUsP99);
             Assert.Equal(0.0, state.AchievedRateHz);
+            Assert.False(state.Realtime, "a host-stepped world has no thread of its own");
 
             // the graphic hand stays above the haptic one, which sank 3 mm (that it stays
             // outside the leaves, the contacts' distances tell below)

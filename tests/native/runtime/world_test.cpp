@@ -18,6 +18,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "core/error.h"
+#include "core/thread_priority.h"
 #include "core/validate.h"
 #include "hand/anthropometry.h"
 #include "hand/hand_model.h"
@@ -421,6 +422,29 @@ TEST(World, ItsOwnThreadStepsItUntilStoppedAndTheHostMayNotStepMeanwhile) {
   EXPECT_EQ(world.read().step, stopped) << "no step after stop()";
   EXPECT_EQ(world.step(), FRUSTA_OK) << "the host may step it again";
   EXPECT_EQ(world.read().step, stopped + 1);
+}
+
+// The own thread asks for real-time priority when its def says so and reports what the
+// system granted: whatever a thread of this process is granted (root or an rtprio limit
+// grant it; a plain user is refused), never more.
+TEST(World, ItsOwnThreadRunsAtRealTimePriorityWhereGrantedAndSaysSo) {
+  bool granted = false;
+  std::thread probe([&granted] { granted = raise_to_realtime_priority(); });
+  probe.join();
+  for (const bool asked : {true, false}) {
+    WorldDef def;
+    def.realtime_priority = asked;
+    World world(def);
+    ASSERT_EQ(world.start(), FRUSTA_OK);
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+    while (world.read().step < 2 && std::chrono::steady_clock::now() < give_up)
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    ASSERT_GE(world.read().step, 2u);
+    EXPECT_EQ(world.read().realtime, asked && granted) << "asked " << asked << ", granted " << granted;
+    world.stop();
+    EXPECT_EQ(world.step(), FRUSTA_OK);
+    EXPECT_FALSE(world.read().realtime) << "the host's steps run on its thread";
+  }
 }
 
 }  // namespace

@@ -321,6 +321,16 @@ namespace Frusta.Binding
 
     public partial struct FrustaWorldDef
     {
+        /// <summary>true (default): the world's own thread and the threads of gloves driving its
+        /// hands ask the system for real-time priority, so a glove is answered within a period
+        /// whatever else the machine runs; they run at normal priority where it is refused
+        /// (<see cref="FrustaWorldState.Realtime"/> says which).</summary>
+        public bool RealtimePriority
+        {
+            readonly get => realtime_priority != 0;
+            set => realtime_priority = value ? 1 : 0;
+        }
+
         /// <summary>The library's defaults (<c>frusta_default_world_def</c>). Thread: any.</summary>
         public static FrustaWorldDef Default => FrustaLibrary.Compatible(() => Native.frusta_default_world_def());
     }
@@ -433,6 +443,12 @@ namespace Frusta.Binding
 
         /// <summary>The segment of a finger contact, 0..2 proximal to distal.</summary>
         public readonly int Segment => Body % FrustaConstants.SegmentsPerFinger;
+    }
+
+    public partial struct FrustaWorldState
+    {
+        /// <summary>true when the world's own thread runs at real-time priority.</summary>
+        public readonly bool Realtime => realtime != 0;
     }
 
     /// <remarks>Filled by <see cref="World.GetObject"/>.</remarks>

@@ -394,8 +394,15 @@ namespace Frusta.Binding
         /// few kilobytes and no step time
         /// </summary>
         public int MaxHands;
-        /// <summary>explicit padding</summary>
-        internal int reserved1;
+        /// <summary>
+        /// 1: the own thread and the threads of gloves driving
+        /// its hands ask the system for real-time priority
+        /// (Linux SCHED_FIFO: root or an rtprio limit; Windows
+        /// THREAD_PRIORITY_TIME_CRITICAL), and run at normal
+        /// priority where it is refused (frusta_world_state
+        /// says which); 0: normal priority. Default 1
+        /// </summary>
+        internal int realtime_priority;
         /// <summary>
         /// newtons, per finger; default 10
         /// </summary>
@@ -532,8 +539,8 @@ namespace Frusta.Binding
         public long RejectedInputs;
         /// <summary>objects present at the step</summary>
         public int ObjectCount;
-        /// <summary>explicit padding</summary>
-        internal int reserved0;
+        /// <summary>1: the own thread runs at real-time priority</summary>
+        internal int realtime;
     }
 
     /// <summary>One hand as the latched step left it. World frame.</summary>
