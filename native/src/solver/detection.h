@@ -3,6 +3,7 @@
 // hand, found through bounds (hand, finger) and then the trees with culling.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -50,6 +51,10 @@ struct CandidateSet {
 
   int32_t count(int body) const { return begin[body + 1] - begin[body]; }
   const Candidate* of(int body) const { return candidates.data() + begin[body]; }
+  void clear() {
+    candidates.clear();
+    std::fill(std::begin(begin), std::end(begin), 0);
+  }
   int32_t finger_count(int finger) const {
     return begin[(finger + 1) * FRUSTA_SEGMENTS_PER_FINGER] - begin[finger * FRUSTA_SEGMENTS_PER_FINGER];
   }

@@ -27,6 +27,7 @@ constexpr double kStandstill = 1e-9;
 // 30-degree wedge at 1 m/s further, and closing that trail changed the force by up to
 // 0.06 N more than the haptic hand's move accounts for.
 constexpr int32_t kSlideIterations = 6;
+constexpr int kDeadlineReserveDivisor = 8;
 
 PalmPlacement placement(const HandState& state) { return {state.palm_position, state.palm_rotation}; }
 
@@ -126,6 +127,12 @@ frusta_result HandSolver::step(const HandState& haptic, const SolverObject* obje
                                int32_t object_count, StepStats* stats_out,
                                Clock::time_point deadline, const ObjectFinder* finder) {
   finder_ = finder;
+  // aim short of the deadline by what the work after the last check has lately taken,
+  // and at least a sixteenth of the time left (the first steps that run to it have
+  // nothing to go by: 10-36 us past 700 us)
+  deadline_ = deadline == Clock::time_point::max()
+                  ? deadline
+                  : deadline - std::max(overrun_, (deadline - Clock::now()) / kDeadlineReserveDivisor);
   assert(check_hand_state(haptic, "haptic") == FRUSTA_OK);  // checked where it entered
   StepStats stats;
   const HandState target = aimed_at(model_, haptic);
@@ -146,7 +153,7 @@ frusta_result HandSolver::step(const HandState& haptic, const SolverObject* obje
     if (!placement_.pending()) placing_ = target;
     HandState start = placing_;
     switch (placement_.run(model_, reach_, objects, object_count, params_.penetration_tolerance,
-                           candidates_, deadline, &start)) {
+                           candidates_, deadline_, &start)) {
       case PlacementSearch::Result::kPending:
         stats.lagging = true;  // no graphic hand yet: nothing to touch or feel
         if (stats_out) *stats_out = stats;
@@ -164,9 +171,11 @@ frusta_result HandSolver::step(const HandState& haptic, const SolverObject* obje
     recent_move_ = 0.0;
     started_ = true;
   }
+  // a search for a hand that started inside took this step's budget
+  const bool placed = stats.depenetrated;
   settled_.fill(false);
   detected_ = false;  // the objects may have moved since the last step
-  const bool timed = deadline != Clock::time_point::max();
+  const bool timed = deadline_ != Clock::time_point::max();
   Clock::time_point before = timed ? Clock::now() : Clock::time_point();
   substep_cost_ -= substep_cost_ / 8;  // one slow sub-step (a preemption) fades in a few steps
   for (int32_t sub = 0; sub < params_.max_substeps; ++sub) {
@@ -175,7 +184,16 @@ frusta_result HandSolver::step(const HandState& haptic, const SolverObject* obje
     // contacts and forces gone until a later step catches up. A sliding sub-step costs
     // up to two plain ones, so on the clock it is the last when two would not fit.
     const bool last = sub + 1 == params_.max_substeps ||
-                      (timed && before + 2 * substep_cost_ > deadline);
+                      (timed && before + 2 * substep_cost_ > deadline_);
+    // and none starts (but the first, unless a placement took the step) that would not
+    // end by the deadline even plain:
+    // sub-steps grow dearer as the hand nears more candidates, so the one before may
+    // have been costed too cheap to slide as the last
+    if (timed && (sub > 0 || placed) && before + substep_cost_ > deadline_) {
+      if (sub == 0) candidates_.clear();  // the placement's scratch: no contacts yet
+      stats.lagging = true;
+      break;
+    }
     bool moved = false;
     const bool reached = substep(target, objects, object_count, last, stats, budget, moved);
     ++stats.substeps;
@@ -198,6 +216,10 @@ frusta_result HandSolver::step(const HandState& haptic, const SolverObject* obje
   last_target_ = target;
   forward_kinematics(model_, target, target_pose_);
   report_contacts();
+  if (timed) {  // fades as substep_cost_ does; only a step that ran to its aim adds
+    overrun_ -= overrun_ / 8;
+    overrun_ = std::max(overrun_, Clock::now() - deadline_);
+  }
   if (stats_out) *stats_out = stats;
   return FRUSTA_OK;
 }
@@ -222,7 +244,8 @@ StageStats HandSolver::solve_within_budget(MakeStage make, bool budget_binds, bo
   auto sliding = make(true);
   SolverParams params = params_;  // each linearisation takes half what is left
   params.max_iterations = std::max(params.max_iterations, kSlideIterations);
-  const StageStats slide = solve_stage(sliding, params, rows_);
+  // the last of the step's budget: its linearisations stop at the deadline
+  const StageStats slide = solve_stage(sliding, params, rows_, deadline_);
   stats.iterations += slide.iterations;
   stats.qp_iterations += slide.qp_iterations;
   stats.infeasible |= slide.infeasible;
@@ -270,8 +293,7 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
     const double s = whole_move > budget ? budget / whole_move : 1.0;
     graphic_ = s < 1.0 ? interpolate(graphic_, target, s) : target;
     forward_kinematics(model_, graphic_, pose_);
-    candidates_.candidates.clear();
-    std::fill(std::begin(candidates_.begin), std::end(candidates_.begin), 0);
+    candidates_.clear();
     detected_ = false;
     budget = std::max(0.0, budget - s * whole_move);
     moved = s * whole_move > 0.0;

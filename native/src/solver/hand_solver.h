@@ -129,6 +129,10 @@ class HandSolver {
   double unfinished_ = 0.0;    // motion allowed but not made for the deadline, metres
   double recent_move_ = 0.0;   // how far the haptic hand moves a step, lately (follow_decay)
   Clock::duration substep_cost_{0};  // the longest sub-step of steps with a deadline, fading
+  // this step's deadline, aimed short of the caller's by overrun_: how far past its aim
+  // a step that ran to it ended (the work after the last check), the longest lately
+  Clock::time_point deadline_ = Clock::time_point::max();
+  Clock::duration overrun_{0};
   PalmHeading heading_;        // this step's: the graphic palm does not go back against it
   CandidateSet candidates_;
   // this step's last detection, made at detected_pose_: a sub-step copies the candidates

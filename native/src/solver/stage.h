@@ -5,6 +5,7 @@
 #pragma once
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <vector>
 
@@ -103,8 +104,15 @@ constexpr int kBisections = 8;  // 1/256 of the last step: less is not worth its
 constexpr int32_t kMaxBoundRows = 64;  // the palm's 2^6 faces of its motion bound
 constexpr double kWorkingDepth = 2.5e-4;  // metres
 
+// `deadline`: a linearisation that, at the average cost of this stage's so far, would
+// end after it does not start (the first always runs). Each one ends at a checked trial,
+// so a stage cut there is as safe as a finished one, only shorter.
 template <class Problem>
-StageStats solve_stage(Problem& problem, const SolverParams& params, std::vector<QpRow>& rows) {
+StageStats solve_stage(Problem& problem, const SolverParams& params, std::vector<QpRow>& rows,
+                       std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max()) {
+  using Clock = std::chrono::steady_clock;
+  const bool timed = deadline != Clock::time_point::max();
+  const Clock::time_point started = timed ? Clock::now() : Clock::time_point();
   StageStats stats;
   const int n = problem.dofs();
   const size_t capacity = static_cast<size_t>(problem.row_capacity() + kMaxBoundRows);
@@ -113,6 +121,10 @@ StageStats solve_stage(Problem& problem, const SolverParams& params, std::vector
   bool safe = true;
   problem.save();
   for (int32_t it = 0; it < params.max_iterations; ++it) {
+    if (timed && it > 0) {
+      const Clock::time_point now = Clock::now();
+      if (now + (now - started) / it > deadline) break;
+    }
     double target[kMaxQpVariables] = {}, weights[kMaxQpVariables] = {}, d[kMaxQpVariables] = {};
     int32_t count = problem.linearise(rows.data(), target, weights);
     // A hand held back by its budget steps within rows that keep it inside its bound

@@ -193,12 +193,36 @@ TEST(HandSolver, APassedDeadlineStopsAfterOneSubStepAndTheHandLagsSafely) {
                           static_cast<int32_t>(s.objects.size()), &stats, gone),
               FRUSTA_OK);
     EXPECT_EQ(stats.substeps, 1) << "step " << t;
+    // a stage held back by its budget slides, one linearisation past the deadline (its
+    // straight solve's two before it), not the six a sliding stage may take
+    EXPECT_LE(stats.iterations, 3) << "step " << t;
     lagged += stats.lagging ? 1 : 0;
     ASSERT_LE(scenes::deepest_penetration(solver.model(), solver.graphic_pose(), s.objects), 1e-5)
         << "step " << t;
   }
   EXPECT_GT(lagged, 10) << "the jump took several steps to follow";
   EXPECT_FALSE(solver.contacts().empty()) << "and the hand ends resting on the plate";
+}
+
+// The search for a hand that starts inside takes its steps' budgets; the step it ends in
+// has none left for a sub-step, and reports no contacts of the search's trials.
+TEST(HandSolver, APlacementThatTookTheStepsBudgetLeavesItsSubStepsToTheNext) {
+  const HandScenario s = make_hand_scenario("start_inside");
+  HandSolver solver(make_hand_model(default_hand_def()), SolverParams{});
+  const HandSolver::Clock::time_point gone = HandSolver::Clock::now();
+  int32_t t = 0;
+  StepStats stats;
+  for (; t < 1000 && !solver.started(); ++t)
+    ASSERT_EQ(solver.step(s.haptic(t), s.objects.data(), 1, &stats, gone), FRUSTA_OK);
+  ASSERT_TRUE(solver.started());
+  EXPECT_GT(t, 1) << "one trial a step: the search took several";
+  EXPECT_TRUE(stats.depenetrated);
+  EXPECT_EQ(stats.substeps, 0);
+  EXPECT_TRUE(stats.lagging);
+  EXPECT_TRUE(solver.contacts().empty());
+  EXPECT_LE(scenes::deepest_penetration(solver.model(), solver.graphic_pose(), s.objects), kMaxPenetration);
+  ASSERT_EQ(solver.step(s.haptic(t), s.objects.data(), 1, &stats, gone), FRUSTA_OK);
+  EXPECT_EQ(stats.substeps, 1) << "the next step goes on as ever";
 }
 
 TEST(HandSolverScenario, HapticHandStartingInsideAnObjectIsPlacedOutside) {
