@@ -23,6 +23,10 @@ namespace Frusta.Unity
         [SerializeField] double rateHz = 1000.0;
         [Tooltip("Run the world on its own thread; off: step it from Update, catching up with the frame time.")]
         [SerializeField] bool runOnOwnThread = true;
+        [Tooltip("Its own thread and the threads of gloves driving its hands ask for real-time priority, so a " +
+                 "glove is answered within a period whatever else the machine runs (State.Realtime says " +
+                 "whether it was granted).")]
+        [SerializeField] bool realtimePriority = true;
         [Tooltip("With Run On Own Thread off: step the world from Update; off: a script steps it (World.Step) " +
                  "before this component's Update, which then only latches the newest step.")]
         [SerializeField] bool stepInUpdate = true;
@@ -45,6 +49,10 @@ namespace Frusta.Unity
         /// <summary>Run the world on its own thread (else see <see cref="StepInUpdate"/>). Set before
         /// the component wakes.</summary>
         public bool RunOnOwnThread { get => runOnOwnThread; set => runOnOwnThread = value; }
+
+        /// <summary>The world's thread and its gloves' threads ask for real-time priority
+        /// (<see cref="FrustaWorldDef.RealtimePriority"/>). Set before the component wakes.</summary>
+        public bool RealtimePriority { get => realtimePriority; set => realtimePriority = value; }
 
         /// <summary>Without its own thread: true, Update steps the world by the frame time; false, a
         /// script steps it (<see cref="Frusta.Binding.World.Step()"/>, before this component's Update:
@@ -71,6 +79,7 @@ namespace Frusta.Unity
         {
             FrustaWorldDef def = FrustaWorldDef.Default;
             def.RateHz = rateHz;
+            def.RealtimePriority = realtimePriority;
             def.MaxObjects = maxObjects;
             def.MaxHands = maxHands;
             def.Gravity = gravity.ToFrustaVector();
