@@ -63,16 +63,23 @@ TEST(PeriodicClock, ALongStallDropsAllButOneBurst) {
   EXPECT_LE(clock.tick(), after - 4 * milliseconds(1));
 }
 
-// A tick may come early on a signal, but only within its window: the deadlines stay on
-// their grid either way. Periods are long so that nothing here depends on how soon a
-// thread is scheduled (a machine that stalls for seconds could only make it pass late).
-TEST(PeriodicClock, ASignalWithinTheWindowRunsTheTickAtOnceOnItsDeadline) {
-#ifdef _WIN32
-  GTEST_SKIP() << "no Wakeup on Windows: its threads keep their own schedules";
-#endif
+// A tick may come early on a Wakeup's signal, but only within its window: the deadlines
+// stay on their grid either way. Periods are long so that nothing here depends on how
+// soon a thread is scheduled (a machine that stalls for seconds could only make it pass
+// late). Windows has no Wakeup: its threads keep their own schedules.
+class PeriodicClockWakeup : public ::testing::Test {
+ protected:
   using Clock = PeriodicClock::Clock;
+  void SetUp() override {
+#ifdef _WIN32
+    GTEST_SKIP() << "no Wakeup on Windows";
+#endif
+    ASSERT_TRUE(early.open());
+  }
   Wakeup early;
-  ASSERT_TRUE(early.open());
+};
+
+TEST_F(PeriodicClockWakeup, ASignalWithinTheWindowRunsTheTickAtOnceOnItsDeadline) {
   PeriodicClock clock(std::chrono::seconds(30), microseconds(200));
   clock.start();
   const Clock::time_point first = clock.deadline();
@@ -88,13 +95,7 @@ TEST(PeriodicClock, ASignalWithinTheWindowRunsTheTickAtOnceOnItsDeadline) {
 
 // A signal that came before the window answered an earlier tick: taken, the ticks would
 // come a period ahead of their samples from then on.
-TEST(PeriodicClock, ASignalFromBeforeTheWindowIsDroppedAsItOpens) {
-#ifdef _WIN32
-  GTEST_SKIP() << "no Wakeup on Windows: its threads keep their own schedules";
-#endif
-  using Clock = PeriodicClock::Clock;
-  Wakeup early;
-  ASSERT_TRUE(early.open());
+TEST_F(PeriodicClockWakeup, ASignalFromBeforeTheWindowIsDroppedAsItOpens) {
   PeriodicClock clock(milliseconds(300), microseconds(0));
   clock.start();
   early.signal();
