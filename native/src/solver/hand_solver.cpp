@@ -128,8 +128,8 @@ frusta_result HandSolver::step(const HandState& haptic, const SolverObject* obje
                                Clock::time_point deadline, const ObjectFinder* finder) {
   finder_ = finder;
   // aim short of the deadline by what the work after the last check has lately taken,
-  // and at least a sixteenth of the time left (the first steps that run to it have
-  // nothing to go by: 10-36 us past 700 us)
+  // and at least an eighth of the time left (the first steps that run to it have
+  // nothing to go by; a sixteenth still let them end 10-36 us past 700 us)
   deadline_ = deadline == Clock::time_point::max()
                   ? deadline
                   : deadline - std::max(overrun_, (deadline - Clock::now()) / kDeadlineReserveDivisor);
@@ -185,10 +185,9 @@ frusta_result HandSolver::step(const HandState& haptic, const SolverObject* obje
     // up to two plain ones, so on the clock it is the last when two would not fit.
     const bool last = sub + 1 == params_.max_substeps ||
                       (timed && before + 2 * substep_cost_ > deadline_);
-    // and none starts (but the first, unless a placement took the step) that would not
-    // end by the deadline even plain:
-    // sub-steps grow dearer as the hand nears more candidates, so the one before may
-    // have been costed too cheap to slide as the last
+    // None starts (but the first, unless a placement took the step) that would not end
+    // by the deadline even plain: sub-steps grow dearer as the hand nears more
+    // candidates, so the one before may have been costed too cheap to slide as the last.
     if (timed && (sub > 0 || placed) && before + substep_cost_ > deadline_) {
       if (sub == 0) candidates_.clear();  // the placement's scratch: no contacts yet
       stats.lagging = true;
