@@ -3,7 +3,11 @@
 // pseudo-terminal), from a sample written on the glove's side to the brake command
 // that answers it read back there. A simulated glove alternately curls its index into
 // a box and lets go; each change's latency is the time from the write of the first
-// sample carrying it to the first command showing it (brake on, brake off). The path
+// sample carrying it to the first command showing it (brake on, brake off). Two
+// stimuli: a tap, the index from open (2 mm off the box) to 2 mm into it in one sample
+// and back (about 3 m/s at the tip: a fast tap), the latency of the path; and a jump,
+// the index from open to 61 % curled in one sample, centimetres at a speed no finger
+// reaches, whose steps are the solver sub-stepping that move up to the step budget. The path
 // measured is the whole one: the pty to the device thread, its read and decode, the wait
 // for the world's next 1 kHz tick, the step (which solves a glove's newest sample), the
 // device feed and its wake-up, the output guard, the command's write and the pty back.
@@ -29,10 +33,14 @@
 #include "devices/alpha_encoding.h"
 #include "devices/device_link.h"
 #include "devices/frusta_protocol.h"
+#include "devices/glove_calibration.h"
 #include "devices/opengloves_protocol.h"
 #include "devices/serial_stream.h"
 #include "hand/anthropometry.h"
 #include "hand/hand_model.h"
+#include "hand/kinematics.h"
+#include "geometry/exact_distance.h"
+#include "geometry/segment_frame.h"
 #include "core/step_histogram.h"
 #include "runtime/world.h"
 #include "scenes/binary_glove.h"
@@ -166,29 +174,74 @@ class StampedStream final : public ByteStream {
   std::vector<int64_t> reads_, writes_;
 };
 
+// The glove's curls (OpenGloves units, 0..4095, the index's three flexions as the
+// default calibration reads them) that a stimulus alternates between.
+struct Stimulus {
+  const char* name;
+  int released, pressed;
+};
+
+HandState index_curled(int curl) {
+  const GloveCalibration calibration = default_glove_calibration();
+  HandState state = scenes::open_hand();
+  for (int j = 0; j < 3; ++j)
+    state.angles[FRUSTA_JOINTS_PER_FINGER + 1 + j] = calibration.flexion_closed[1][j] * curl / 4095;
+  return state;
+}
+
+// The index's signed distance (metres) to the box as the engine sees it, its leaf
+// spheres at `centre`, at a curl: every segment solid, exactly (the pad nears it first).
+double index_gap(const HandModel& model, const SphereTree& box, const vec3& centre, int curl) {
+  HandPose pose;
+  forward_kinematics(model, index_curled(curl), pose);
+  double gap = INFINITY;
+  for (int segment = 0; segment < FRUSTA_SEGMENTS_PER_FINGER; ++segment) {
+    const SegmentFrame frame = make_segment_frame(finger_segment(model, pose, FRUSTA_FINGER_INDEX, segment));
+    for (const Sphere& leaf : box.leaves)
+      gap = std::min(gap, exact_proximity(frame, {centre + leaf.center, leaf.radius}).distance);
+  }
+  return gap;
+}
+
+// The least curl whose index is within `gap` of the box: over the first 500 units
+// it only goes deeper (1 cm in at 500; further curled it sweeps through the box).
+int curl_at_gap(const HandModel& model, const SphereTree& box, const vec3& centre, double gap) {
+  int lo = 0, hi = 500;
+  while (lo < hi) {
+    const int mid = (lo + hi) / 2;
+    if (index_gap(model, box, centre, mid) <= gap) hi = mid; else lo = mid + 1;
+  }
+  return lo;
+}
+
 struct Latency {
   StepHistogram line_in, engine, line_out;  // a transition's parts
   StepHistogram press, release, all;
+  double world_step_p50 = 0.0, world_step_p99 = 0.0, world_step_max = 0.0;  // its own, us
   int64_t missed = 0;
   double output_rate_hz = 0.0;
   DeviceLinkStatus link;  // its own figures of the same run
 };
 
-Latency measure(const GloveSide& side, int transitions) {
+// The box the index presses, 2 mm beyond its open tip.
+vec3 press_box_centre(const HandModel& model) {
+  return scenes::index_press_box_centre(model, 0.5 * scenes::test_box_spec("press_box").size.x, 0.002);
+}
+
+Latency measure(const GloveSide& side, const Stimulus& stimulus, int transitions) {
   const HandModel model = make_hand_model(default_hand_def());
   World world(WorldDef{});
   HandHandle hand;
   world.add_hand(model, &hand);
   ObjectDef box;
-  box.pose.position =
-      scenes::index_press_box_centre(model, 0.5 * scenes::test_box_spec("press_box").size.x, 0.002);
+  box.pose.position = press_box_centre(model);
   ObjectHandle handle;
   world.add_object(scenes::test_box("press_box"), box, &handle);
   world.start();
 
-  std::atomic<int> curl{0};
+  std::atomic<int> curl{stimulus.released};
   std::atomic<int64_t> changed_ns{0};  // when the first sample with the new curl went out
-  std::atomic<int> sent_curl{0};
+  std::atomic<int> sent_curl{stimulus.released};
   const std::string path = "/tmp/frusta-bench-" + std::to_string(getpid()) + "-glove";
   SimulatedGlove glove(path, side.glove_rate_hz, [&](int64_t tick) {
     const int c = curl.load();
@@ -209,7 +262,7 @@ Latency measure(const GloveSide& side, int transitions) {
     const bool pressing = t % 2 == 0;
     glove.clear_received();
     changed_ns = 0;
-    curl = pressing ? 2500 : 0;
+    curl = pressing ? stimulus.pressed : stimulus.released;
     // the first command after the change that shows it
     std::string bytes;
     std::vector<int> brakes;
@@ -244,9 +297,13 @@ Latency measure(const GloveSide& side, int transitions) {
       bytes.clear();
     }
     if (!seen) ++result.missed;
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));  // rest in the new state
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));  // rest in the new state (a tap settles in a step or two)
   }
   result.link = link.status();
+  const WorldSnapshot& snapshot = world.read();
+  result.world_step_p50 = snapshot.step_us_p50;
+  result.world_step_p99 = snapshot.step_us_p99;
+  result.world_step_max = snapshot.step_us_max;
   result.output_rate_hz = result.link.output_rate_hz;
   link.close();
   world.stop();
@@ -320,27 +377,41 @@ void print_histogram(const char* name, const StepHistogram& h, const char* end) 
 
 int main() {
   using namespace frusta;
-  constexpr int kTransitions = 100;
+  constexpr int kTransitions = 500;  // each way: 1000 latencies, so p99 is not the second largest
+  const HandModel model = make_hand_model(default_hand_def());
+  const vec3 centre = press_box_centre(model);
+  const SphereTree& box = scenes::test_box("press_box")->tree;
+  const Stimulus stimuli[] = {
+      {"tap", 0, curl_at_gap(model, box, centre, -0.002)},
+      {"jump", 0, 2500}};
   std::printf("{\n\"suite\": \"devices\",\n\"transitions\": %d,\n\"load_before\": \"%s\",\n"
               "\"latency_us\": [\n",
               kTransitions, load_average().c_str());
   const GloveSide sides[] = {opengloves_side(), binary_side()};
-  for (size_t i = 0; i < std::size(sides); ++i) {
-    const Latency l = measure(sides[i], kTransitions);
-    std::printf("  {\"protocol\": \"%s\", \"glove_rate_hz\": %.0f, \"output_rate_hz\": %.0f, ",
-                sides[i].name, sides[i].glove_rate_hz, l.output_rate_hz);
-    print_histogram("glove_to_command", l.all, ", ");
-    print_histogram("press", l.press, ", ");
-    print_histogram("release", l.release, ",\n   ");
-    print_histogram("line_in", l.line_in, ", ");
-    print_histogram("engine", l.engine, ", ");
-    print_histogram("line_out", l.line_out, ",\n   ");
-    print_histogram("link_sample_to_step", l.link.sample_to_step, ", ");
-    print_histogram("link_step_to_command", l.link.step_to_command, ", ");
-    print_histogram("link_sample_to_command", l.link.sample_to_command, ", ");
-    std::printf("\"missed\": %lld}%s\n", static_cast<long long>(l.missed), i + 1 < std::size(sides) ? "," : "");
+  bool first = true;
+  for (const Stimulus& stimulus : stimuli) {
+    for (const GloveSide& side : sides) {
+      const Latency l = measure(side, stimulus, kTransitions);
+      std::printf("%s  {\"protocol\": \"%s\", \"stimulus\": \"%s\", \"curls\": [%d, %d], "
+                  "\"glove_rate_hz\": %.0f, \"output_rate_hz\": %.0f, ",
+                  first ? "" : ",\n", side.name, stimulus.name, stimulus.released, stimulus.pressed,
+                  side.glove_rate_hz, l.output_rate_hz);
+      first = false;
+      print_histogram("glove_to_command", l.all, ", ");
+      print_histogram("press", l.press, ", ");
+      print_histogram("release", l.release, ",\n   ");
+      print_histogram("line_in", l.line_in, ", ");
+      print_histogram("engine", l.engine, ", ");
+      print_histogram("line_out", l.line_out, ",\n   ");
+      print_histogram("link_sample_to_step", l.link.sample_to_step, ", ");
+      print_histogram("link_step_to_command", l.link.step_to_command, ", ");
+      print_histogram("link_sample_to_command", l.link.sample_to_command, ", ");
+      std::printf("\"world_step_p50\": %.0f, \"world_step_p99\": %.0f, \"world_step_max\": %.0f, ",
+                  l.world_step_p50, l.world_step_p99, l.world_step_max);
+      std::printf("\"missed\": %lld}", static_cast<long long>(l.missed));
+    }
   }
-  std::printf("],\n\"pty_one_way_us\": {");
+  std::printf("\n],\n\"pty_one_way_us\": {");
   print_histogram("one_way", pty_one_way(2000), "");
   std::printf("},\n\"load_after\": \"%s\"\n}\n", load_average().c_str());
   return 0;
