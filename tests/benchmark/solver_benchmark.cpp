@@ -114,7 +114,9 @@ Measured measure(const scenes::HandScenario& s, const SolverParams& params, int3
     StepStats stats;
     const double cpu_start = thread_cpu_us();
     const Clock::time_point start = Clock::now();
-    const frusta_result r = solver.step(haptic, s.objects.data(), static_cast<int32_t>(s.objects.size()), &stats);
+    // the objects stay put, as a world tells the solver of a still scene
+    const frusta_result r = solver.step(haptic, s.objects.data(), static_cast<int32_t>(s.objects.size()), &stats,
+                                        Clock::time_point::max(), nullptr, t > 0);
     m.step_us.push_back(micros(Clock::now() - start));
     m.cpu_us.push_back(thread_cpu_us() - cpu_start);
     ++m.steps;
@@ -228,7 +230,8 @@ Budgeted measure_budgeted(const scenes::HandScenario& s, double budget_us, int32
     ContactForceStats force_stats;
     const double cpu_start = thread_cpu_us();
     const Clock::time_point start = Clock::now();
-    if (solver.step(t < s.steps ? s.haptic(t) : s.held, s.objects.data(), count, &stats, start + budget) != FRUSTA_OK)
+    if (solver.step(t < s.steps ? s.haptic(t) : s.held, s.objects.data(), count, &stats, start + budget,
+                    nullptr, t > 0) != FRUSTA_OK)
       continue;
     if (!solver.started()) {  // being placed over several steps: no hand to touch with yet
       const double cpu = thread_cpu_us() - cpu_start;

@@ -56,7 +56,8 @@ bool HandPipeline::step(const HandStepContext& context, SceneObjects& scene, Han
     // caught up after a stall asks for its own time, not now's)
     haptic = playback_.play(context.play_ns, context.max_extrapolation_ns, &late);
   }
-  update_ignored(scene);
+  // the list the solver had last step, unchanged: it may keep what it detected
+  const bool objects_as_before = !update_ignored(scene) && !scene.moved();
   const bool own_list = ignored_count_ > 0;
   const SolverObject* objects = own_list ? objects_.data() : scene.active().data();
   const int32_t* object_slot = own_list ? object_slot_.data() : scene.active_slot().data();
@@ -69,7 +70,8 @@ bool HandPipeline::step(const HandStepContext& context, SceneObjects& scene, Han
   // the scene's broad phase finds the present objects near the hand; the hand's own list
   // (while it ignores some, rare) is looked at whole
   const ObjectFinder* finder = own_list ? nullptr : &scene;
-  if (solver_.step(haptic, objects, object_count, &stats, context.deadline, finder) == FRUSTA_OK) {
+  if (solver_.step(haptic, objects, object_count, &stats, context.deadline, finder, objects_as_before) ==
+      FRUSTA_OK) {
     accepted_ = haptic;
   } else {
     placed = false;  // the graphic hand stays as it was, the forces follow the last good input
@@ -144,7 +146,7 @@ void HandPipeline::offer_grasps(SceneObjects& scene, const int32_t* object_slot,
   grasp_pushes_.clear();
 }
 
-void HandPipeline::update_ignored(SceneObjects& scene) {
+bool HandPipeline::update_ignored(SceneObjects& scene) {
   const std::vector<SolverObject>& active = scene.active();
   const std::vector<int32_t>& active_slot = scene.active_slot();
   bool changed = false;
@@ -167,7 +169,7 @@ void HandPipeline::update_ignored(SceneObjects& scene) {
     for (int32_t slot : scene.placed_slots())
       if (scene.active_index(slot) >= 0) look_at(static_cast<size_t>(scene.active_index(slot)));
   }
-  if (ignored_count_ == 0 || (!changed && !scene.moved())) return;
+  if (ignored_count_ == 0 || (!changed && !scene.moved())) return changed;
   objects_.clear();  // within the capacity reserved at construction
   object_slot_.clear();
   materials_.clear();
@@ -177,6 +179,7 @@ void HandPipeline::update_ignored(SceneObjects& scene) {
     object_slot_.push_back(active_slot[a]);
     materials_.push_back(scene.active_material()[a]);
   }
+  return changed;
 }
 
 void HandPipeline::publish_feed(const HandSnapshot& snap, uint64_t step, int64_t host_read_ns) {

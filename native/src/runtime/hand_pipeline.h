@@ -64,8 +64,9 @@ class HandPipeline {
 
  private:
   // which placed objects this hand now sinks into, which ignored ones it has left (each
-  // change told to the objects), and the hand's object list without the ignored ones
-  void update_ignored(SceneObjects& objects);
+  // change told to the objects), and the hand's object list without the ignored ones.
+  // Returns whether what this hand ignores changed.
+  bool update_ignored(SceneObjects& objects);
   // this step's pushes on each dynamic object, per body: the squeeze offered to the scene
   // (forces/grasp.h)
   void offer_grasps(SceneObjects& scene, const int32_t* object_slot,

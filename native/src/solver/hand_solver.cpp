@@ -125,7 +125,8 @@ frusta_result HandSolver::check_params(const SolverParams& p, const HandModel& m
 
 frusta_result HandSolver::step(const HandState& haptic, const SolverObject* objects,
                                int32_t object_count, StepStats* stats_out,
-                               Clock::time_point deadline, const ObjectFinder* finder) {
+                               Clock::time_point deadline, const ObjectFinder* finder,
+                               bool objects_as_before) {
   finder_ = finder;
   // aim short of the deadline by what the work after the last check has lately taken,
   // and at least an eighth of the time left (the first steps that run to it have
@@ -174,7 +175,7 @@ frusta_result HandSolver::step(const HandState& haptic, const SolverObject* obje
   // a search for a hand that started inside took this step's budget
   const bool placed = stats.depenetrated;
   settled_.fill(false);
-  detected_ = false;  // the objects may have moved since the last step
+  detected_ = detected_ && objects_as_before;
   const bool timed = deadline_ != Clock::time_point::max();
   Clock::time_point before = timed ? Clock::now() : Clock::time_point();
   substep_cost_ -= substep_cost_ / 8;  // one slow sub-step (a preemption) fades in a few steps
@@ -189,7 +190,10 @@ frusta_result HandSolver::step(const HandState& haptic, const SolverObject* obje
     // by the deadline even plain: sub-steps grow dearer as the hand nears more
     // candidates, so the one before may have been costed too cheap to slide as the last.
     if (timed && (sub > 0 || placed) && before + substep_cost_ > deadline_) {
-      if (sub == 0) candidates_.clear();  // the placement's scratch: no contacts yet
+      if (sub == 0) {  // the placement's scratch: no contacts yet
+        candidates_.clear();
+        detected_ = false;
+      }
       stats.lagging = true;
       break;
     }
@@ -254,6 +258,7 @@ StageStats HandSolver::solve_within_budget(MakeStage make, bool budget_binds, bo
 }
 
 bool HandSolver::overlaps(const SolverObject& object) {
+  detected_ = false;  // candidates_ is the test's scratch
   return started_ &&
          !hand_is_free(model_, reach_, pose_, &object, 1, params_.penetration_tolerance, candidates_);
 }

@@ -77,10 +77,14 @@ class HandSolver {
   // contacts then lags (stats->lagging) instead of stalling a real-time thread, its last
   // sub-step sliding along what it touches so that it keeps its contacts. `finder`
   // (null: look at every object), a broad phase over `objects`: each sub-step looks only
-  // at the objects it finds near the hand, with the same result.
+  // at the objects it finds near the hand, with the same result. `objects_as_before`:
+  // the caller vouches that `objects` is the last step's list unchanged (every tree and
+  // pose, in order): the first detection copies the last step's candidates of the bodies
+  // that have not moved since, which a walk would find again (a hand held still in a
+  // still scene walks no tree).
   frusta_result step(const HandState& haptic, const SolverObject* objects, int32_t object_count,
                      StepStats* stats, Clock::time_point deadline = Clock::time_point::max(),
-                     const ObjectFinder* finder = nullptr);
+                     const ObjectFinder* finder = nullptr, bool objects_as_before = false);
 
   // Whether the graphic hand now sinks into `object` (past the penetration tolerance).
   // False before the first step.
@@ -135,8 +139,9 @@ class HandSolver {
   Clock::duration overrun_{0};
   PalmHeading heading_;        // this step's: the graphic palm does not go back against it
   CandidateSet candidates_;
-  // this step's last detection, made at detected_pose_: a sub-step copies the candidates
-  // of the bodies that have not moved since (objects stay put during a step)
+  // the last detection, made at detected_pose_ (false once candidates_ served as scratch):
+  // a sub-step copies the candidates of the bodies that have not moved since, while the
+  // objects have not (within a step, or across steps with objects_as_before)
   CandidateSet last_candidates_;
   HandPose detected_pose_;
   bool detected_ = false;

@@ -325,6 +325,34 @@ TEST(HandSolver, EqualRunsGiveEqualHands) {
   }
 }
 
+// A caller that vouches for a still scene (objects_as_before) lets the solver keep what
+// it detected for the bodies that did not move: nothing it computes may differ, through
+// the grasp and a hold (where no body moves and no tree is walked).
+TEST(HandSolver, KeepingTheLastStepsDetectionInAStillSceneChangesNothing) {
+  const HandScenario s = make_hand_scenario("ball_grasp");
+  HandSolver walked(default_model(), SolverParams{}), kept(default_model(), SolverParams{});
+  int64_t walked_nodes = 0, kept_nodes = 0;
+  for (int t = 0; t < s.steps + 50; ++t) {
+    const HandState& haptic = t < s.steps ? s.haptic(t) : s.held;
+    StepStats a, b;
+    ASSERT_EQ(walked.step(haptic, s.objects.data(), 1, &a), FRUSTA_OK);
+    ASSERT_EQ(kept.step(haptic, s.objects.data(), 1, &b, HandSolver::Clock::time_point::max(), nullptr, t > 0),
+              FRUSTA_OK);
+    ASSERT_EQ(testing::state_change(walked.graphic(), kept.graphic()), 0.0) << "step " << t;
+    ASSERT_EQ(walked.contacts().size(), kept.contacts().size()) << "step " << t;
+    for (size_t i = 0; i < walked.contacts().size(); ++i) {
+      ASSERT_EQ(walked.contacts()[i].leaf, kept.contacts()[i].leaf) << "step " << t;
+      ASSERT_EQ(walked.contacts()[i].distance, kept.contacts()[i].distance) << "step " << t;
+    }
+    if (t >= s.steps) {
+      walked_nodes += a.tree_nodes_visited;
+      kept_nodes += b.tree_nodes_visited;
+    }
+  }
+  EXPECT_GT(walked_nodes, 0);
+  EXPECT_EQ(kept_nodes, 0) << "a hand held still in a still scene walks no tree";
+}
+
 TEST(HandSolver, ParametersAreCheckedByName) {
   const HandModel model = default_model();
   SolverParams p;
