@@ -49,6 +49,10 @@ double hand_motion(const HandReach& reach, const HandState& a, const HandState& 
   return palm_motion(reach, placement(a), placement(b)) + finger;
 }
 
+bool same_state(const HandState& a, const HandState& b) {
+  return a.palm_position == b.palm_position && a.palm_rotation == b.palm_rotation && a.angles == b.angles;
+}
+
 HandState aimed_at(const HandModel& model, const HandState& haptic) {
   HandState target = haptic;
   target.palm_rotation = glm::normalize(target.palm_rotation);
@@ -176,6 +180,16 @@ frusta_result HandSolver::step(const HandState& haptic, const SolverObject* obje
   const bool placed = stats.depenetrated;
   settled_.fill(false);
   detected_ = detected_ && objects_as_before;
+  // At rest: the last step left the hand where it found it, and nothing it solved
+  // against has changed (its target, the objects, what it detected); only the
+  // continuity budget shrank, which cannot free a hand that did not move. The
+  // sub-steps would find it there again, and its contacts are the last step's.
+  if (resting_ && detected_ && same_state(target, last_target_)) {
+    stats.resting = true;
+    if (stats_out) *stats_out = stats;
+    return FRUSTA_OK;
+  }
+  const HandState began = graphic_;
   const bool timed = deadline_ != Clock::time_point::max();
   Clock::time_point before = timed ? Clock::now() : Clock::time_point();
   substep_cost_ -= substep_cost_ / 8;  // one slow sub-step (a preemption) fades in a few steps
@@ -216,6 +230,7 @@ frusta_result HandSolver::step(const HandState& haptic, const SolverObject* obje
     }
   }
   unfinished_ = stats.lagging ? budget : 0.0;
+  resting_ = !stats.lagging && !stats.rate_limited && same_state(graphic_, began);
   last_target_ = target;
   forward_kinematics(model_, target, target_pose_);
   report_contacts();

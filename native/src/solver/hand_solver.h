@@ -51,6 +51,7 @@ struct StepStats {
   bool lagging = false;          // the sub-step cap or the deadline stopped the hand short
   bool rate_limited = false;     // the continuity bound (follow_factor) stopped it short
   bool infeasible = false;       // some QP could not meet every row; the hand stayed safe
+  bool resting = false;          // nothing to solve: the last step's hand, as it was
 };
 
 // The haptic hand as the solver aims at it: rotation normalised and angles clamped to the
@@ -81,7 +82,8 @@ class HandSolver {
   // the caller vouches that `objects` is the last step's list unchanged (every tree and
   // pose, in order): the first detection copies the last step's candidates of the bodies
   // that have not moved since, which a walk would find again (a hand held still in a
-  // still scene walks no tree).
+  // still scene walks no tree), and a hand that the last step left where it found it,
+  // aimed where it is still aimed, is not solved again (stats->resting).
   frusta_result step(const HandState& haptic, const SolverObject* objects, int32_t object_count,
                      StepStats* stats, Clock::time_point deadline = Clock::time_point::max(),
                      const ObjectFinder* finder = nullptr, bool objects_as_before = false);
@@ -145,6 +147,9 @@ class HandSolver {
   CandidateSet last_candidates_;
   HandPose detected_pose_;
   bool detected_ = false;
+  // the last step ended where it began, neither lagging nor held back by its bound: the
+  // same inputs would leave the hand there again
+  bool resting_ = false;
   const ObjectFinder* finder_ = nullptr;  // this step's
   std::vector<int32_t> near_;             // what it found for a sub-step, in index order
   std::array<bool, FRUSTA_FINGER_COUNT> settled_{};  // per sub-step: reached or stopped

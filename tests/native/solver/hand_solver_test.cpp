@@ -326,18 +326,22 @@ TEST(HandSolver, EqualRunsGiveEqualHands) {
 }
 
 // A caller that vouches for a still scene (objects_as_before) lets the solver keep what
-// it detected for the bodies that did not move: nothing it computes may differ, through
-// the grasp and a hold (where no body moves and no tree is walked).
+// it detected for the bodies that did not move, and skip a hand at rest: nothing it
+// computes may differ, through the grasp and a hold (where no tree is walked and, once
+// the hand has settled, nothing is solved).
 TEST(HandSolver, KeepingTheLastStepsDetectionInAStillSceneChangesNothing) {
   const HandScenario s = make_hand_scenario("ball_grasp");
   HandSolver walked(default_model(), SolverParams{}), kept(default_model(), SolverParams{});
   int64_t walked_nodes = 0, kept_nodes = 0;
-  for (int t = 0; t < s.steps + 50; ++t) {
+  int resting = 0;
+  constexpr int kHeld = 50;
+  for (int t = 0; t < s.steps + kHeld; ++t) {
     const HandState& haptic = t < s.steps ? s.haptic(t) : s.held;
     StepStats a, b;
     ASSERT_EQ(walked.step(haptic, s.objects.data(), 1, &a), FRUSTA_OK);
     ASSERT_EQ(kept.step(haptic, s.objects.data(), 1, &b, HandSolver::Clock::time_point::max(), nullptr, t > 0),
               FRUSTA_OK);
+    ASSERT_FALSE(a.resting) << "at rest only in a scene vouched for";
     ASSERT_EQ(testing::state_change(walked.graphic(), kept.graphic()), 0.0) << "step " << t;
     ASSERT_EQ(walked.contacts().size(), kept.contacts().size()) << "step " << t;
     for (size_t i = 0; i < walked.contacts().size(); ++i) {
@@ -347,10 +351,41 @@ TEST(HandSolver, KeepingTheLastStepsDetectionInAStillSceneChangesNothing) {
     if (t >= s.steps) {
       walked_nodes += a.tree_nodes_visited;
       kept_nodes += b.tree_nodes_visited;
+      resting += b.resting ? 1 : 0;
     }
   }
   EXPECT_GT(walked_nodes, 0);
   EXPECT_EQ(kept_nodes, 0) << "a hand held still in a still scene walks no tree";
+  EXPECT_GE(resting, kHeld - 5) << "a settled hand is not solved again";
+}
+
+// Rest ends as soon as anything it rests on changes: the target, or the objects.
+TEST(HandSolver, AHandAtRestIsSolvedAgainWhenItsTargetOrTheObjectsChange) {
+  HandScenario s = make_hand_scenario("box_press");
+  HandSolver solver(default_model(), SolverParams{});
+  StepStats stats;
+  for (int t = 0; t < s.steps + 20; ++t)
+    ASSERT_EQ(solver.step(t < s.steps ? s.haptic(t) : s.held, s.objects.data(), 1, &stats,
+                          HandSolver::Clock::time_point::max(), nullptr, t > 0),
+              FRUSTA_OK);
+  ASSERT_TRUE(stats.resting) << "settled on the box";
+  // the haptic fingertip lifts off: solved again, and the graphic one follows it up
+  HandState lifted = s.held;
+  lifted.palm_position.z += 0.01;
+  ASSERT_EQ(solver.step(lifted, s.objects.data(), 1, &stats, HandSolver::Clock::time_point::max(), nullptr, true),
+            FRUSTA_OK);
+  EXPECT_FALSE(stats.resting);
+  EXPECT_GT(solver.graphic().palm_position.z, s.held.palm_position.z);
+  for (int t = 0; t < 20; ++t)
+    ASSERT_EQ(solver.step(s.held, s.objects.data(), 1, &stats, HandSolver::Clock::time_point::max(), nullptr, true),
+              FRUSTA_OK);
+  ASSERT_TRUE(stats.resting);
+  // the box moves into the finger, and the caller says so: pushed out, not left inside
+  s.objects[0].pose.position.z += 0.003;
+  ASSERT_EQ(solver.step(s.held, s.objects.data(), 1, &stats, HandSolver::Clock::time_point::max(), nullptr, false),
+            FRUSTA_OK);
+  EXPECT_FALSE(stats.resting);
+  EXPECT_LE(scenes::deepest_penetration(solver.model(), solver.graphic_pose(), s.objects), kMaxPenetration);
 }
 
 TEST(HandSolver, ParametersAreCheckedByName) {
