@@ -28,6 +28,8 @@ constexpr double kStandstill = 1e-9;
 // 0.06 N more than the haptic hand's move accounts for.
 constexpr int32_t kSlideIterations = 6;
 constexpr int kDeadlineReserveDivisor = 8;
+// A slow hand's detection looks down to Delta_r / 16 (detection_margin).
+constexpr int kMarginHalvings = 4;
 
 PalmPlacement placement(const HandState& state) { return {state.palm_position, state.palm_rotation}; }
 
@@ -51,6 +53,17 @@ double hand_motion(const HandReach& reach, const HandState& a, const HandState& 
 
 bool same_state(const HandState& a, const HandState& b) {
   return a.palm_position == b.palm_position && a.palm_rotation == b.palm_rotation && a.angles == b.angles;
+}
+
+// How far a sub-step's detection looks: as far as the sub-step can move a point and
+// still see a contact there (the continuity budget plus the contact distance), up to
+// Delta_r; in halvings of Delta_r, so that over the steps of a slow motion it stays the
+// same and a detection stays reusable. A slow hand meets a fraction of the leaves.
+double detection_margin(const SolverParams& params, double budget) {
+  const double needed = budget + params.contact_distance;
+  double margin = params.prediction_margin;
+  for (int k = 0; k < kMarginHalvings && 0.5 * margin >= needed; ++k) margin *= 0.5;
+  return margin;
 }
 
 HandState aimed_at(const HandModel& model, const HandState& haptic) {
@@ -319,13 +332,31 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
     return s == 1.0;
   }
 
+  const TreeCut cut(params_.tree_level, params_.lod_error);
+  const double margin = detection_margin(params_, budget);
   std::swap(candidates_, last_candidates_);
-  const DetectionReuse reuse{detected_ ? &last_candidates_ : nullptr,
-                             detected_ ? bodies_unmoved(detected_pose_, pose_) : 0u};
-  detect_candidates(model_, reach_, pose_, objects, object_count, params_.prediction_margin,
-                    TreeCut(params_.tree_level, params_.lod_error), candidates_, only, only_count, reuse);
+  const bool reusable = detected_ && detected_margin_ == margin;
+  const DetectionReuse reuse{reusable ? &last_candidates_ : nullptr,
+                             reusable ? bodies_unmoved(detected_pose_, pose_) : 0u};
+  detect_candidates(model_, reach_, pose_, objects, object_count, margin, cut, candidates_, only,
+                    only_count, reuse);
   detected_pose_ = pose_;
+  detected_margin_ = margin;
   detected_ = true;
+
+  // A hand that starts the sub-step inside an object (the host moved the object into
+  // it) is solved even where its target has not moved, so it is pushed back out; that
+  // may move it Delta_r, so it looks as far
+  double deepest = 0.0;
+  for (int body = 0; body < kBodyCount; ++body)
+    deepest = std::min(deepest, body_clearance(model_, pose_, candidates_, body));
+  const bool recovering = deepest < -kRecoveryTolerances * params_.penetration_tolerance;
+  if (recovering && margin < params_.prediction_margin) {
+    stats.tree_nodes_visited += candidates_.tree_nodes_visited;
+    detect_candidates(model_, reach_, pose_, objects, object_count, params_.prediction_margin, cut,
+                      candidates_, only, only_count);
+    detected_margin_ = params_.prediction_margin;
+  }
   stats.candidates = std::max(stats.candidates, static_cast<int32_t>(candidates_.candidates.size()));
   stats.tree_nodes_visited += candidates_.tree_nodes_visited;
   const StageInputs inputs{model_, reach_, params_, candidates_};
@@ -336,13 +367,6 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
     stats.infeasible |= s.infeasible;
     reached &= !s.capped;
   };
-
-  // A hand that starts the sub-step inside an object (the host moved the object into
-  // it) is solved even where its target has not moved, so it is pushed back out.
-  double deepest = 0.0;
-  for (int body = 0; body < kBodyCount; ++body)
-    deepest = std::min(deepest, body_clearance(model_, pose_, candidates_, body));
-  const bool recovering = deepest < -kRecoveryTolerances * params_.penetration_tolerance;
   // how far any point may move in this sub-step: Delta_r (half of it for the palm), and
   // the continuity budget, which an object pushing the hand out does not spend (the
   // haptic hand did not move it)

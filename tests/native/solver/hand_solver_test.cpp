@@ -8,8 +8,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
 #include <string>
@@ -21,6 +23,7 @@
 #include "hand/anthropometry.h"
 #include "hand/hand_model.h"
 #include "solver/depenetration.h"
+#include "solver/detection.h"
 #include "scenario_run.h"
 
 namespace frusta {
@@ -386,6 +389,35 @@ TEST(HandSolver, AHandAtRestIsSolvedAgainWhenItsTargetOrTheObjectsChange) {
             FRUSTA_OK);
   EXPECT_FALSE(stats.resting);
   EXPECT_LE(scenes::deepest_penetration(solver.model(), solver.graphic_pose(), s.objects), kMaxPenetration);
+}
+
+// A slow hand looks only as far as it can move (detection_margin): a grasp held with a
+// steady hand's tremor meets a fraction of the candidates a Delta_r detection finds,
+// keeps its contacts, and never sinks past the floor.
+TEST(HandSolver, ASlowHandDetectsOnlyAsFarAsItCanMove) {
+  const HandScenario s = make_hand_scenario("ball_grasp");
+  HandSolver solver(default_model(), SolverParams{});
+  testing::RunLog log = testing::run(solver, s);
+  double deepest = log.max_penetration;
+  int32_t fewest = INT32_MAX;
+  for (int t = 0; t < 400; ++t) {
+    HandState trembling = s.held;
+    trembling.palm_position.z += 1e-4 * std::sin(2.0 * M_PI * 8.0 * 1e-3 * t);  // 0.1 mm at 8 Hz
+    StepStats stats;
+    ASSERT_EQ(solver.step(trembling, s.objects.data(), 1, &stats, HandSolver::Clock::time_point::max(),
+                          nullptr, true),
+              FRUSTA_OK);
+    if (t >= 100) fewest = std::min(fewest, stats.candidates);
+    deepest = std::max(deepest, scenes::deepest_penetration(solver.model(), solver.graphic_pose(), s.objects));
+    ASSERT_FALSE(solver.contacts().empty()) << "step " << t;
+  }
+  CandidateSet full;
+  detect_candidates(solver.model(), hand_reach(solver.model()), solver.graphic_pose(), s.objects.data(), 1,
+                    SolverParams{}.prediction_margin, TreeCut(-1, 0.0), full);
+  EXPECT_LT(4 * fewest, static_cast<int32_t>(full.candidates.size()))
+      << "a hand moving microns a step looks a fraction of Delta_r away";
+  EXPECT_LE(deepest, kMaxPenetration);
+  for (int f = 1; f < 5; ++f) EXPECT_TRUE(touches(solver, f)) << "finger " << f << " still holds the ball";
 }
 
 TEST(HandSolver, ParametersAreCheckedByName) {
