@@ -32,6 +32,8 @@
 #include <ctime>
 #include <thread>
 
+#include <glm/gtc/constants.hpp>
+
 #include "hand/anthropometry.h"
 #include "hand/hand_model.h"
 #include "core/periodic_clock.h"
@@ -55,7 +57,7 @@ using Clock = std::chrono::steady_clock;
 HandState held_grasp(const scenes::HandScenario& grasp, int64_t t, bool tremor = true) {
   HandState state = grasp.haptic(static_cast<int32_t>(std::min<int64_t>(t, grasp.steps - 1)));
   if (tremor && t >= grasp.steps)
-    state.palm_position.z += 1e-4 * std::sin(2.0 * M_PI * 8.0 * 1e-3 * static_cast<double>(t));
+    state.palm_position.z += 1e-4 * std::sin(2.0 * glm::pi<double>() * 8.0 * 1e-3 * static_cast<double>(t));
   return state;
 }
 

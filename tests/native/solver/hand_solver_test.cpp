@@ -17,6 +17,7 @@
 #include <string>
 
 #include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
 
 #include "core/error.h"
 #include "core/validate.h"
@@ -402,7 +403,7 @@ TEST(HandSolver, ASlowHandDetectsOnlyAsFarAsItCanMove) {
   int32_t fewest = INT32_MAX;
   for (int t = 0; t < 400; ++t) {
     HandState trembling = s.held;
-    trembling.palm_position.z += 1e-4 * std::sin(2.0 * M_PI * 8.0 * 1e-3 * t);  // 0.1 mm at 8 Hz
+    trembling.palm_position.z += 1e-4 * std::sin(2.0 * glm::pi<double>() * 8.0 * 1e-3 * t);  // 0.1 mm at 8 Hz
     StepStats stats;
     ASSERT_EQ(solver.step(trembling, s.objects.data(), 1, &stats, HandSolver::Clock::time_point::max(),
                           nullptr, true),
