@@ -329,6 +329,14 @@ TEST(HandSolver, EqualRunsGiveEqualHands) {
   }
 }
 
+// One untimed step against a scenario's one object, saying whether the caller vouches
+// that the objects are as they were last step (HandSolver::step's objects_as_before).
+frusta_result step_vouched(HandSolver& solver, const HandState& haptic, const HandScenario& s,
+                           StepStats* stats, bool objects_as_before) {
+  return solver.step(haptic, s.objects.data(), 1, stats, HandSolver::Clock::time_point::max(), nullptr,
+                     objects_as_before);
+}
+
 // A caller that vouches for a still scene (objects_as_before) lets the solver keep what
 // it detected for the bodies that did not move, and skip a hand at rest: nothing it
 // computes may differ, through the grasp and a hold (where no tree is walked and, once
@@ -343,8 +351,7 @@ TEST(HandSolver, KeepingTheLastStepsDetectionInAStillSceneChangesNothing) {
     const HandState& haptic = t < s.steps ? s.haptic(t) : s.held;
     StepStats a, b;
     ASSERT_EQ(walked.step(haptic, s.objects.data(), 1, &a), FRUSTA_OK);
-    ASSERT_EQ(kept.step(haptic, s.objects.data(), 1, &b, HandSolver::Clock::time_point::max(), nullptr, t > 0),
-              FRUSTA_OK);
+    ASSERT_EQ(step_vouched(kept, haptic, s, &b, t > 0), FRUSTA_OK);
     ASSERT_FALSE(a.resting) << "at rest only in a scene vouched for";
     ASSERT_EQ(testing::state_change(walked.graphic(), kept.graphic()), 0.0) << "step " << t;
     ASSERT_EQ(walked.contacts().size(), kept.contacts().size()) << "step " << t;
@@ -369,25 +376,20 @@ TEST(HandSolver, AHandAtRestIsSolvedAgainWhenItsTargetOrTheObjectsChange) {
   HandSolver solver(default_model(), SolverParams{});
   StepStats stats;
   for (int t = 0; t < s.steps + 20; ++t)
-    ASSERT_EQ(solver.step(t < s.steps ? s.haptic(t) : s.held, s.objects.data(), 1, &stats,
-                          HandSolver::Clock::time_point::max(), nullptr, t > 0),
-              FRUSTA_OK);
+    ASSERT_EQ(step_vouched(solver, t < s.steps ? s.haptic(t) : s.held, s, &stats, t > 0), FRUSTA_OK);
   ASSERT_TRUE(stats.resting) << "settled on the box";
   // the haptic fingertip lifts off: solved again, and the graphic one follows it up
   HandState lifted = s.held;
   lifted.palm_position.z += 0.01;
-  ASSERT_EQ(solver.step(lifted, s.objects.data(), 1, &stats, HandSolver::Clock::time_point::max(), nullptr, true),
-            FRUSTA_OK);
+  ASSERT_EQ(step_vouched(solver, lifted, s, &stats, true), FRUSTA_OK);
   EXPECT_FALSE(stats.resting);
   EXPECT_GT(solver.graphic().palm_position.z, s.held.palm_position.z);
   for (int t = 0; t < 20; ++t)
-    ASSERT_EQ(solver.step(s.held, s.objects.data(), 1, &stats, HandSolver::Clock::time_point::max(), nullptr, true),
-              FRUSTA_OK);
+    ASSERT_EQ(step_vouched(solver, s.held, s, &stats, true), FRUSTA_OK);
   ASSERT_TRUE(stats.resting);
   // the box moves into the finger, and the caller says so: pushed out, not left inside
   s.objects[0].pose.position.z += 0.003;
-  ASSERT_EQ(solver.step(s.held, s.objects.data(), 1, &stats, HandSolver::Clock::time_point::max(), nullptr, false),
-            FRUSTA_OK);
+  ASSERT_EQ(step_vouched(solver, s.held, s, &stats, false), FRUSTA_OK);
   EXPECT_FALSE(stats.resting);
   EXPECT_LE(scenes::deepest_penetration(solver.model(), solver.graphic_pose(), s.objects), kMaxPenetration);
 }
@@ -405,9 +407,7 @@ TEST(HandSolver, ASlowHandDetectsOnlyAsFarAsItCanMove) {
     HandState trembling = s.held;
     trembling.palm_position.z += 1e-4 * std::sin(2.0 * glm::pi<double>() * 8.0 * 1e-3 * t);  // 0.1 mm at 8 Hz
     StepStats stats;
-    ASSERT_EQ(solver.step(trembling, s.objects.data(), 1, &stats, HandSolver::Clock::time_point::max(),
-                          nullptr, true),
-              FRUSTA_OK);
+    ASSERT_EQ(step_vouched(solver, trembling, s, &stats, true), FRUSTA_OK);
     if (t >= 100) fewest = std::min(fewest, stats.candidates);
     deepest = std::max(deepest, scenes::deepest_penetration(solver.model(), solver.graphic_pose(), s.objects));
     ASSERT_FALSE(solver.contacts().empty()) << "step " << t;
