@@ -20,7 +20,7 @@ namespace frusta {
 
 namespace {
 
-// Below this (metres) a sub-step did not move the hand.
+// Below this (metres, total_motion) a sub-step or a step did not move the hand.
 constexpr double kStandstill = 1e-9;
 // Linearisations of a stage that slides (solve_within_budget), each taking half what is
 // left of its budget: 63/64 of it in all. With 4 the palm trailed a fingertip rounding a
@@ -49,6 +49,14 @@ double hand_motion(const HandReach& reach, const HandState& a, const HandState& 
   for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f)
     finger = std::max(finger, finger_motion(reach, f, finger_angles(a, f), finger_angles(b, f)));
   return palm_motion(reach, placement(a), placement(b)) + finger;
+}
+
+// The palm's bound plus every finger's: what a sub-step moved the hand, all told.
+double total_motion(const HandReach& reach, const HandState& a, const HandState& b) {
+  double motion = palm_motion(reach, placement(a), placement(b));
+  for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f)
+    motion += finger_motion(reach, f, finger_angles(a, f), finger_angles(b, f));
+  return motion;
 }
 
 bool same_state(const HandState& a, const HandState& b) {
@@ -243,7 +251,10 @@ frusta_result HandSolver::step(const HandState& haptic, const SolverObject* obje
     }
   }
   unfinished_ = stats.lagging ? budget : 0.0;
-  resting_ = !stats.lagging && !stats.rate_limited && same_state(graphic_, began);
+  // A hand pressed deep into a curved surface creeps along it as its linearisations
+  // converge (linearly: the deep target leaves the surface point weakly determined), a
+  // nanometre a step and less for tens of steps; it rests once a step moves it no more
+  resting_ = !stats.lagging && !stats.rate_limited && !(total_motion(reach_, began, graphic_) > kStandstill);
   last_target_ = target;
   forward_kinematics(model_, target, target_pose_);
   report_contacts();
@@ -438,10 +449,7 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
   }
   forward_kinematics(model_, graphic_, pose_);
 
-  double motion = palm_motion(reach_, placement(start), placement(graphic_));
-  for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f)
-    motion += finger_motion(reach_, f, finger_angles(start, f), finger_angles(graphic_, f));
-  moved = motion > kStandstill;
+  moved = total_motion(reach_, start, graphic_) > kStandstill;
   if (!recovering) budget = std::max(0.0, budget - hand_motion(reach_, start, graphic_));
   if (slid) budget = 0.0;  // it went as far as it could on the surface: the step ends
   return reached && !slid;

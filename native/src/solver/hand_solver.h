@@ -148,8 +148,8 @@ class HandSolver {
   HandPose detected_pose_;
   double detected_margin_ = 0.0;  // how far it looked (detection_margin)
   bool detected_ = false;
-  // the last step ended where it began, neither lagging nor held back by its bound: the
-  // same inputs would leave the hand there again
+  // the last step ended where it began (within kStandstill), neither lagging nor held
+  // back by its bound: the same inputs would leave the hand there again
   bool resting_ = false;
   const ObjectFinder* finder_ = nullptr;  // this step's
   std::vector<int32_t> near_;             // what it found for a sub-step, in index order
