@@ -125,6 +125,14 @@ HandReach hand_reach(const HandModel& model) {
     reach.finger[f] = beyond[0] + radius;
     reach.lever[f][0] = beyond[0] + radius;  // abduction turns about the first joint
     for (int j = 1; j < FRUSTA_JOINTS_PER_FINGER; ++j) reach.lever[f][j] = beyond[j - 1] + radius;
+    for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s) {
+      for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j) {
+        const int pivot = j == 0 ? 0 : j - 1;  // abduction and the first flexion turn about joint 0
+        reach.segment_lever[f][s][j] = pivot <= s ? beyond[pivot] - beyond[s + 1] + radius : 0.0;
+        reach.segment_share[f][s] =
+            std::max(reach.segment_share[f][s], reach.segment_lever[f][s][j] / reach.lever[f][j]);
+      }
+    }
     reach.hand = std::max(reach.hand, glm::length(finger.base_position) + reach.finger[f]);
   }
   return reach;
@@ -183,7 +191,7 @@ double bound_clearance(const HandReach& reach, const HandPose& pose, const Solve
 }
 
 void detect_candidates(const HandModel& model, const HandReach& reach, const HandPose& pose,
-                       const SolverObject* objects, int32_t object_count, double margin,
+                       const SolverObject* objects, int32_t object_count, const DetectionMargins& margins,
                        TreeCut cut, CandidateSet& out, const int32_t* only, int32_t only_count,
                        DetectionReuse reuse) {
   assert(reuse.last != &out);
@@ -195,7 +203,7 @@ void detect_candidates(const HandModel& model, const HandReach& reach, const Han
   const int32_t n = only ? only_count : object_count;
   for (int32_t i = 0; i < n; ++i) {
     const int32_t o = only ? only[i] : i;
-    if (!objects[o].tree->empty() && bounds_meet(hand_bound, object_bound(objects[o]), margin))
+    if (!objects[o].tree->empty() && bounds_meet(hand_bound, object_bound(objects[o]), margins.largest()))
       out.near_objects.push_back(o);
   }
 
@@ -215,6 +223,7 @@ void detect_candidates(const HandModel& model, const HandReach& reach, const Han
     const Sphere finger_bound{pose.fingers[f].joint[0], reach.finger[f]};
     for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s) {
       const int body = f * FRUSTA_SEGMENTS_PER_FINGER + s;
+      const double margin = margins.body[body];
       out.begin[body] = static_cast<int32_t>(out.candidates.size());
       if (reuse.has(body)) {
         copy_body(*reuse.last, body, out);
@@ -238,7 +247,7 @@ void detect_candidates(const HandModel& model, const HandReach& reach, const Han
   if (reuse.has(kPalmBody))
     copy_body(*reuse.last, kPalmBody, out);
   else
-    detect_palm(model, reach, pose, objects, margin, cut, out);
+    detect_palm(model, reach, pose, objects, margins.body[kPalmBody], cut, out);
   out.begin[kBodyCount] = static_cast<int32_t>(out.candidates.size());
 }
 

@@ -66,6 +66,13 @@ struct HandReach {
   std::array<double, FRUSTA_FINGER_COUNT> finger{};  // ... of the finger's first joint
   // how far a finger point can move per radian of each joint (lever arm bound)
   std::array<std::array<double, FRUSTA_JOINTS_PER_FINGER>, FRUSTA_FINGER_COUNT> lever{};
+  // ... a point of one segment: a joint beyond it moves it not at all, one before it by
+  // no more than the links in between (the fingertip's row is `lever`)
+  std::array<std::array<std::array<double, FRUSTA_JOINTS_PER_FINGER>, FRUSTA_SEGMENTS_PER_FINGER>,
+             FRUSTA_FINGER_COUNT>
+      segment_lever{};
+  // the most of a finger's motion bound a segment's can be: its largest lever's share
+  std::array<std::array<double, FRUSTA_SEGMENTS_PER_FINGER>, FRUSTA_FINGER_COUNT> segment_share{};
   // the palm spheres' centres lie in this box of the palm's frame; none is larger
   vec3 palm_low{0.0}, palm_high{0.0};
   double palm_radius = 0.0;
@@ -75,6 +82,15 @@ HandReach hand_reach(const HandModel& model);
 
 // World bound of an object's whole tree.
 Sphere object_bound(const SolverObject& object);
+
+// How far a detection looks from each body (metres): a segment that can move less than
+// its finger's tip looks less far. A single number looks as far from every body.
+struct DetectionMargins {
+  std::array<double, kBodyCount> body{};
+  DetectionMargins() = default;
+  DetectionMargins(double every) { body.fill(every); }  // NOLINT: one margin for all
+  double largest() const { return *std::max_element(body.begin(), body.end()); }
+};
 
 // What a detection may copy from an earlier one instead of walking the trees again:
 // the candidates of `bodies` (bit b: body b) in `last`, which was detected with the
@@ -91,14 +107,14 @@ static_assert(kBodyCount <= 32, "a bit per body");
 // joint centres, the palm whose position and rotation, are equal in both poses.
 uint32_t bodies_unmoved(const HandPose& then, const HandPose& now);
 
-// Fill `out` with every leaf within `margin` of the hand at `pose`, or with the nodes
-// where the cut stops standing in for theirs. The vector keeps its capacity
+// Fill `out` with every leaf within its body's margin of the hand at `pose`, or with the
+// nodes where the cut stops standing in for theirs. The vector keeps its capacity
 // between calls, so a steady scene allocates nothing. `only` (null: every object) lists
 // the objects to look at, in increasing order: a broad phase's answer, which must hold
-// every object whose bound comes within `margin` of the hand's. `out` must not be
-// `reuse.last`.
+// every object whose bound comes within the largest margin of the hand's. `out` must not
+// be `reuse.last`.
 void detect_candidates(const HandModel& model, const HandReach& reach, const HandPose& pose,
-                       const SolverObject* objects, int32_t object_count, double margin,
+                       const SolverObject* objects, int32_t object_count, const DetectionMargins& margins,
                        TreeCut cut, CandidateSet& out, const int32_t* only = nullptr,
                        int32_t only_count = 0, DetectionReuse reuse = {});
 

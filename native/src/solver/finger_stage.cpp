@@ -20,6 +20,14 @@ double finger_motion(const HandReach& reach, int finger, const FingerAngles& fro
   return motion;
 }
 
+double segment_motion(const HandReach& reach, int finger, int segment, const FingerAngles& from,
+                      const FingerAngles& to) {
+  double motion = 0.0;
+  for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j)
+    motion += std::fabs(to[j] - from[j]) * reach.segment_lever[finger][segment][j];
+  return motion;
+}
+
 FingerStage::FingerStage(const StageInputs& inputs, int finger, const FingerAngles& target,
                          double motion_cap, FingerBound bound, HandState& state, HandPose& pose)
     : StageEstimate(state, pose),
@@ -62,8 +70,11 @@ int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights) con
     const int body = finger_ * FRUSTA_SEGMENTS_PER_FINGER + s;
     if (inputs_.candidates.count(body) == 0) continue;
     const SegmentFrame frame = make_segment_frame(finger_segment(inputs_.model, pose_, finger_, s));
-    // a sphere further than any admissible trial can move is no row: exact, not a guess
-    const double reach = motion_cap_ + finger_motion(inputs_.reach, finger_, start_, now);
+    // a sphere further than any admissible trial can move the segment is no row: exact,
+    // not a guess (a trial moves the finger within the cap from the start, and the
+    // segment by at most its share of that)
+    const double reach = inputs_.reach.segment_share[finger_][s] * motion_cap_ +
+                         segment_motion(inputs_.reach, finger_, s, start_, now);
     // dD/dq and dE/dq: D = joint s, E = joint s + 1; flexion j turns about joint j - 1
     vec3 column_d[FRUSTA_JOINTS_PER_FINGER], column_e[FRUSTA_JOINTS_PER_FINGER];
     column_d[0] = glm::cross(p.abduction_axis, p.joint[s] - p.joint[0]);

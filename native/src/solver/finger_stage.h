@@ -18,6 +18,9 @@ using FingerAngles = std::array<double, FRUSTA_JOINTS_PER_FINGER>;
 // Motion bound of a finger's change of angles: no point of it moves further.
 double finger_motion(const HandReach& reach, int finger, const FingerAngles& from,
                      const FingerAngles& to);
+// ... of one of its segments: no point of that segment moves further.
+double segment_motion(const HandReach& reach, int finger, int segment, const FingerAngles& from,
+                      const FingerAngles& to);
 
 // How a finger stage keeps within its motion cap.
 enum class FingerBound {

@@ -28,8 +28,8 @@ constexpr double kStandstill = 1e-9;
 // 0.06 N more than the haptic hand's move accounts for.
 constexpr int32_t kSlideIterations = 6;
 constexpr int kDeadlineReserveDivisor = 8;
-// A slow hand's detection looks down to Delta_r / 16 (detection_margin).
-constexpr int kMarginHalvings = 4;
+// A detection looks as far as a body can move, in sixteenths of Delta_r (detection_margin).
+constexpr int kMarginSteps = 16;
 
 PalmPlacement placement(const HandState& state) { return {state.palm_position, state.palm_rotation}; }
 
@@ -63,15 +63,17 @@ bool same_state(const HandState& a, const HandState& b) {
   return a.palm_position == b.palm_position && a.palm_rotation == b.palm_rotation && a.angles == b.angles;
 }
 
-// How far a sub-step's detection looks: as far as the sub-step can move a point and
-// still see a contact there (the continuity budget plus the contact distance), up to
-// Delta_r; in halvings of Delta_r, so that over the steps of a slow motion it stays the
-// same and a detection stays reusable. A slow hand meets a fraction of the leaves.
-double detection_margin(const SolverParams& params, double budget) {
-  const double needed = budget + params.contact_distance;
-  double margin = params.prediction_margin;
-  for (int k = 0; k < kMarginHalvings && 0.5 * margin >= needed; ++k) margin *= 0.5;
-  return margin;
+// How far a sub-step's detection looks from a body that may move `motion` in it: as far
+// as it can move and still see a contact there (plus the contact distance), up to
+// Delta_r; in sixteenths of Delta_r, so that over the steps of a slow motion it stays the
+// same and a detection stays reusable. A slow hand, and the segments near the knuckles,
+// meet a fraction of the leaves.
+double detection_margin(const SolverParams& params, double motion) {
+  const double needed = motion + params.contact_distance;
+  const double step = params.prediction_margin / kMarginSteps;
+  double margin = std::max(1.0, std::ceil(needed / step)) * step;
+  if (margin < needed) margin += step;  // the rounding of the quotient
+  return std::min(params.prediction_margin, margin);
 }
 
 HandState aimed_at(const HandModel& model, const HandState& haptic) {
@@ -344,15 +346,28 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
   }
 
   const TreeCut cut(params_.tree_level, params_.lod_error);
-  const double margin = detection_margin(params_, budget);
+  // How far each body can move in this sub-step (one recovering looks Delta_r away, below):
+  // the palm up to its part of the allowance if it moves at all, a finger segment that
+  // and its share of the rest (the stages below keep to these)
+  const double allowance = std::min(params_.prediction_margin, budget);
+  const double palm_part = palm_motion(reach_, palm_from, placement(target)) > 0.0
+                               ? std::min(0.5 * params_.prediction_margin, allowance)
+                               : 0.0;
+  DetectionMargins margins;
+  for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f)
+    for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s)
+      margins.body[f * FRUSTA_SEGMENTS_PER_FINGER + s] =
+          detection_margin(params_, palm_part + reach_.segment_share[f][s] * (allowance - palm_part));
+  margins.body[kPalmBody] = detection_margin(params_, palm_part);
   std::swap(candidates_, last_candidates_);
-  const bool reusable = detected_ && detected_margin_ == margin;
-  const DetectionReuse reuse{reusable ? &last_candidates_ : nullptr,
-                             reusable ? bodies_unmoved(detected_pose_, pose_) : 0u};
-  detect_candidates(model_, reach_, pose_, objects, object_count, margin, cut, candidates_, only,
+  uint32_t reusable = detected_ ? bodies_unmoved(detected_pose_, pose_) : 0u;
+  for (int body = 0; body < kBodyCount; ++body)
+    if (detected_margins_.body[body] != margins.body[body]) reusable &= ~(1u << body);
+  const DetectionReuse reuse{reusable != 0 ? &last_candidates_ : nullptr, reusable};
+  detect_candidates(model_, reach_, pose_, objects, object_count, margins, cut, candidates_, only,
                     only_count, reuse);
   detected_pose_ = pose_;
-  detected_margin_ = margin;
+  detected_margins_ = margins;
   detected_ = true;
 
   // A hand that starts the sub-step inside an object (the host moved the object into
@@ -362,11 +377,12 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
   for (int body = 0; body < kBodyCount; ++body)
     deepest = std::min(deepest, body_clearance(model_, pose_, candidates_, body));
   const bool recovering = deepest < -kRecoveryTolerances * params_.penetration_tolerance;
-  if (recovering && margin < params_.prediction_margin) {
+  const DetectionMargins everywhere(params_.prediction_margin);
+  if (recovering && margins.body != everywhere.body) {
     stats.tree_nodes_visited += candidates_.tree_nodes_visited;
-    detect_candidates(model_, reach_, pose_, objects, object_count, params_.prediction_margin, cut,
-                      candidates_, only, only_count);
-    detected_margin_ = params_.prediction_margin;
+    detect_candidates(model_, reach_, pose_, objects, object_count, everywhere, cut, candidates_,
+                      only, only_count);
+    detected_margins_ = everywhere;
   }
   stats.candidates = std::max(stats.candidates, static_cast<int32_t>(candidates_.candidates.size()));
   stats.tree_nodes_visited += candidates_.tree_nodes_visited;

@@ -146,7 +146,7 @@ class HandSolver {
   // objects have not (within a step, or across steps with objects_as_before)
   CandidateSet last_candidates_;
   HandPose detected_pose_;
-  double detected_margin_ = 0.0;  // how far it looked (detection_margin)
+  DetectionMargins detected_margins_;  // how far it looked (detection_margin)
   bool detected_ = false;
   // the last step ended where it began (within kStandstill), neither lagging nor held
   // back by its bound: the same inputs would leave the hand there again

@@ -3,14 +3,20 @@
 // candidates of the bodies that did not move since the last detection: its candidates
 // must be those of one walk per finger segment and per palm sphere, in that order, bit
 // for bit, since the solver's answer depends on their order.
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <random>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
 
 #include "hand/anthropometry.h"
 #include "hand/hand_model.h"
+#include "hand/kinematics.h"
 #include "scenes/hand_scenarios.h"
 #include "solver/detection.h"
 
@@ -169,6 +175,73 @@ TEST(SolverDetection, APalmOfMoreThan64SpheresFindsWhatOneWalkPerSphereFinds) {
   const HandModel model = make_hand_model(def);
   ASSERT_GT(model.palm_spheres.size(), 64u);
   check_random_hands(model, 60, 22);
+}
+
+// The motion bounds the solver's margins stand on (issue 21: a segment near the knuckles
+// looks only as far as it can move): along a straight move of the joint angles, no point
+// of a segment's solid moves further than its levers say, nor than its share of the
+// fingertip's bound. Points of the solid are sampled on the capsule of the finger's
+// largest radius round each segment, and their paths summed in small chords.
+TEST(SolverDetection, NoPointOfASegmentMovesFurtherThanItsLeversBound) {
+  const HandModel model = make_hand_model(default_hand_def());
+  const HandReach reach = hand_reach(model);
+  std::mt19937 rng(21);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int trial = 0; trial < 200; ++trial) {
+    HandState from, to;
+    for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f)
+      for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j) {
+        const FingerModel& finger = model.fingers[f];
+        const double span = finger.joint_max[j] - finger.joint_min[j];
+        const size_t k = static_cast<size_t>(f * FRUSTA_JOINTS_PER_FINGER + j);
+        from.angles[k] = finger.joint_min[j] + span * unit(rng);
+        // small moves and whole-range ones
+        const double reach_of_move = trial % 2 ? 0.05 : 1.0;
+        to.angles[k] = std::clamp(from.angles[k] + reach_of_move * span * (2.0 * unit(rng) - 1.0),
+                                  finger.joint_min[j], finger.joint_max[j]);
+      }
+    constexpr int kChords = 64;
+    std::vector<HandPose> path(kChords + 1);
+    for (int i = 0; i <= kChords; ++i) forward_kinematics(model, interpolate(from, to, double(i) / kChords), path[i]);
+    for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
+      std::array<double, FRUSTA_JOINTS_PER_FINGER> a{}, b{};
+      for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j) {
+        a[j] = from.angles[static_cast<size_t>(f * FRUSTA_JOINTS_PER_FINGER + j)];
+        b[j] = to.angles[static_cast<size_t>(f * FRUSTA_JOINTS_PER_FINGER + j)];
+      }
+      const FingerModel& finger = model.fingers[f];
+      const double radius = *std::max_element(finger.radius.begin(), finger.radius.end());
+      double tip_bound = 0.0;
+      for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j) tip_bound += std::fabs(b[j] - a[j]) * reach.lever[f][j];
+      for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s) {
+        double bound = 0.0;
+        for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j)
+          bound += std::fabs(b[j] - a[j]) * reach.segment_lever[f][s][j];
+        EXPECT_LE(bound, reach.segment_share[f][s] * tip_bound * (1.0 + 1e-12));
+        for (double along : {-0.2, 0.0, 0.5, 1.0, 1.2})  // past the joints: the end balls
+          for (int k = 0; k < 8; ++k) {
+            const double turn = 2.0 * glm::pi<double>() * k / 8.0;
+            auto point = [&](const HandPose& pose) {
+              const FingerPose& p = pose.fingers[f];
+              const double length = glm::length(p.joint[s + 1] - p.joint[s]);
+              const double beyond = along < 0.0 ? -radius : along > 1.0 ? radius : 0.0;
+              const vec3 local(std::clamp(along, 0.0, 1.0) * length + beyond * 0.5,
+                               radius * std::cos(turn), radius * std::sin(turn));
+              return p.joint[s] + p.segment_rotation[s] * local;
+            };
+            double travelled = 0.0;
+            for (int i = 0; i < kChords; ++i) travelled += glm::length(point(path[i + 1]) - point(path[i]));
+            ASSERT_LE(travelled, bound * (1.0 + 1e-9) + 1e-15)
+                << "trial " << trial << " finger " << f << " segment " << s;
+          }
+      }
+    }
+  }
+  // the knuckle's segment moves by well under its fingertip's bound: what makes it look less far
+  for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
+    EXPECT_LT(reach.segment_share[f][0], 0.75) << "finger " << f;
+    EXPECT_EQ(reach.segment_share[f][FRUSTA_SEGMENTS_PER_FINGER - 1], 1.0) << "finger " << f;
+  }
 }
 
 }  // namespace
