@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "geometry/contact_test.h"
 
+#include <cmath>
+
 #include <glm/geometric.hpp>
 
 namespace frusta {
@@ -17,17 +19,21 @@ bool within_ball(const vec3& center, double ball_radius, const vec3& point, doub
 }  // namespace
 
 bool may_touch(const SegmentFrame& frame, const Sphere& sphere, double margin) {
-  const AxialSplit s = split_axial(frame, sphere.center);
-  const double scale = glm::length(s.w) + frame.length + frame.r_distal + frame.r_proximal +
-                       sphere.radius + margin;
+  // no square root: |w| by its 1-norm, which the slack only needs the size of, and the
+  // radial distance compared squared (the test runs per tree node and per candidate)
+  const vec3 w = sphere.center - frame.distal;
+  const double size = std::fabs(w.x) + std::fabs(w.y) + std::fabs(w.z);
+  const double scale = size + frame.length + frame.r_distal + frame.r_proximal + sphere.radius + margin;
   const double reach = sphere.radius + margin + kRelativeSlack * scale;
 
   if (!frame.degenerate) {
     // the sphere's touching point on the infinite side lies at axial a + reach * sin(alpha)
+    const double axial = glm::dot(w, frame.axis);
     const double shift = reach * frame.sin_alpha;
-    if (s.axial >= -shift && s.axial <= frame.length - shift) {
-      const double threshold = reach / frame.cos_alpha + frame.r_distal + s.axial * frame.slope;
-      if (s.radial_length <= threshold) return true;
+    if (axial >= -shift && axial <= frame.length - shift) {
+      const double threshold = reach / frame.cos_alpha + frame.r_distal + axial * frame.slope;
+      const vec3 radial = w - axial * frame.axis;
+      if (threshold >= 0.0 && glm::dot(radial, radial) <= threshold * threshold) return true;
     }
   }
   // a ball bulges past the side next to its own end, so both are tested everywhere
