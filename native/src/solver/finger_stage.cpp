@@ -29,8 +29,9 @@ double segment_motion(const HandReach& reach, int finger, int segment, const Fin
 }
 
 FingerStage::FingerStage(const StageInputs& inputs, int finger, const FingerAngles& target,
-                         double motion_cap, FingerBound bound, HandState& state, HandPose& pose)
-    : StageEstimate(state, pose),
+                         double motion_cap, FingerBound bound, QpHints& hints, HandState& state,
+                         HandPose& pose)
+    : StageEstimate(state, pose, hints),
       inputs_(inputs),
       finger_(finger),
       target_(target),
@@ -61,9 +62,11 @@ int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights) con
     weights[j] = inputs_.params.joint_stiffness[j];
     rows[count].a = {};
     rows[count].a[j] = 1.0;
+    rows[count].key = row_key(RowKind::kJointLimit, j, 0);
     rows[count++].b = finger.joint_min[j] - now[j];
     rows[count].a = {};
     rows[count].a[j] = -1.0;
+    rows[count].key = row_key(RowKind::kJointLimit, j, 1);
     rows[count++].b = now[j] - finger.joint_max[j];
   }
   for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s) {
@@ -94,6 +97,7 @@ int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights) con
       for (int j = FRUSTA_JOINTS_PER_FINGER; j < kMaxQpVariables; ++j) row.a[j] = 0.0;
       row.b = row_bound(inputs_.params, g.value,
                         c[i].world.radius + std::max(frame.r_proximal, frame.r_distal));
+      row.key = row_key(RowKind::kContact, body, c[i].part, c[i].object, c[i].leaf);
     }
   }
   return count;
@@ -119,6 +123,7 @@ int32_t FingerStage::bound_rows(QpRow* rows) const {
     QpRow& row = rows[count++];
     row.a = {};
     row.b = -bound;
+    row.key = row_key(RowKind::kMotionBound, signs);
     for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j) {
       const double s = (signs >> j) & 1 ? -1.0 : 1.0;
       const double lever = inputs_.reach.lever[finger_][j];

@@ -39,7 +39,7 @@ class FingerStage : public StageEstimate {
   // state/pose: the graphic hand, updated in place; target: this stage's goal angles;
   // motion_cap: how far (m) any point may move from where the stage starts.
   FingerStage(const StageInputs& inputs, int finger, const FingerAngles& target, double motion_cap,
-              FingerBound bound, HandState& state, HandPose& pose);
+              FingerBound bound, QpHints& hints, HandState& state, HandPose& pose);
 
   int dofs() const { return FRUSTA_JOINTS_PER_FINGER; }
   int32_t row_capacity() const;

@@ -421,7 +421,7 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
       add(solve_within_budget(
           [&](bool slide) {
             return PalmStage(inputs, palm_to, cap, recovering ? PalmHeading{} : heading_, slide,
-                             graphic_, pose_);
+                             palm_hints_, graphic_, pose_);
           },
           budget_binds, slid));
       ++stats.palm_solves;
@@ -456,7 +456,8 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
     const FingerBound bound = move > finger_cap ? FingerBound::kTrust : FingerBound::kHalve;
     const StageStats finger_stats = solve_within_budget(
         [&](bool slide) {
-          return FingerStage(inputs, f, to, finger_cap, slide ? FingerBound::kSlide : bound, graphic_, pose_);
+          return FingerStage(inputs, f, to, finger_cap, slide ? FingerBound::kSlide : bound,
+                             finger_hints_[static_cast<size_t>(f)], graphic_, pose_);
         },
         budget_binds, slid);
     add(finger_stats);

@@ -155,6 +155,9 @@ class HandSolver {
   std::vector<int32_t> near_;             // what it found for a sub-step, in index order
   std::array<bool, FRUSTA_FINGER_COUNT> settled_{};  // per sub-step: reached or stopped
   std::vector<QpRow> rows_;
+  // what each part's last QP ended with active: the next one's warm start (QpHints)
+  std::array<QpHints, FRUSTA_FINGER_COUNT> finger_hints_{};
+  QpHints palm_hints_;
   std::vector<SolverContact> contacts_;
 };
 

@@ -36,19 +36,22 @@ glm::dquat rotated(const glm::dquat& q, const vec3& rotation_vector) {
   return glm::normalize(glm::angleAxis(angle, rotation_vector / angle) * q);
 }
 
-void set_row(QpRow& row, const vec3& grad_translation, const vec3& grad_rotation, double bound) {
+void set_row(QpRow& row, const vec3& grad_translation, const vec3& grad_rotation, double bound,
+             int64_t key) {
   for (int k = 0; k < 3; ++k) {
     row.a[k] = grad_translation[k];
     row.a[3 + k] = grad_rotation[k];
   }
   row.b = bound;
+  row.key = key;
 }
 
 }  // namespace
 
 PalmStage::PalmStage(const StageInputs& inputs, const PalmPlacement& target, double motion_cap,
-                     const PalmHeading& heading, bool slide, HandState& state, HandPose& pose)
-    : StageEstimate(state, pose),
+                     const PalmHeading& heading, bool slide, QpHints& hints, HandState& state,
+                     HandPose& pose)
+    : StageEstimate(state, pose, hints),
       inputs_(inputs),
       target_(target),
       start_(placement(state)),
@@ -91,7 +94,8 @@ int32_t PalmStage::linearise(QpRow* rows, double* target, double* weights) const
               // a finger a hair deeper than its rows ask is its own stage's to fix: here
               // it only must not get deeper, or the palm would ratchet up a little a
               // step; a hand that started deep is lifted out whole
-              recovering_ ? bound : std::min(bound, 0.0));
+              recovering_ ? bound : std::min(bound, 0.0),
+              row_key(RowKind::kContact, body, c[i].part, c[i].object, c[i].leaf));
     }
   }
   const Candidate* c = inputs_.candidates.of(kPalmBody);
@@ -103,11 +107,13 @@ int32_t PalmStage::linearise(QpRow* rows, double* target, double* weights) const
         hand, c[i].world, inputs_.params.form,
         glm::length(outward) > 0.0 ? glm::normalize(outward) : vec3(0.0, 0.0, 1.0));
     set_row(rows[count++], g.grad_hand, glm::cross(hand.center - palm, g.grad_hand),
-            row_bound(inputs_.params, g.value, hand.radius + c[i].world.radius));
+            row_bound(inputs_.params, g.value, hand.radius + c[i].world.radius),
+            row_key(RowKind::kContact, kPalmBody, c[i].part, c[i].object, c[i].leaf));
   }
   if (heading_.way != vec3(0.0))
     set_row(rows[count++], heading_.way, vec3(0.0),
-            -heading_.slack - glm::dot(heading_.way, state_.palm_position - heading_.from));
+            -heading_.slack - glm::dot(heading_.way, state_.palm_position - heading_.from),
+            row_key(RowKind::kHeading));
   return count;
 }
 
@@ -125,6 +131,7 @@ int32_t PalmStage::bound_rows(QpRow* rows) const {
       row.a[static_cast<size_t>(k)] =
           ((signs >> k) & 1 ? 1.0 : -1.0) * (k < 3 ? 1.0 : inputs_.reach.hand);
     row.b = -rest;
+    row.key = row_key(RowKind::kMotionBound, signs);
   }
   return count;
 }

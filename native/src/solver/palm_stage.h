@@ -42,7 +42,7 @@ class PalmStage : public StageEstimate {
   // way it may not go back; slide: step within bound_rows (the hand held back by its
   // continuity budget)
   PalmStage(const StageInputs& inputs, const PalmPlacement& target, double motion_cap,
-            const PalmHeading& heading, bool slide, HandState& state, HandPose& pose);
+            const PalmHeading& heading, bool slide, QpHints& hints, HandState& state, HandPose& pose);
 
   int dofs() const { return 6; }
   int32_t row_capacity() const {

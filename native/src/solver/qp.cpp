@@ -95,22 +95,29 @@ QpResult solve_projection_qp(int n, const double* weights, const double* target,
     for (int j = 0; j < n; ++j) row.a[j] /= length;
     row.b /= length;
   }
-  auto write_back = [&] {
-    for (int j = 0; j < n; ++j) x[j] = y[j] * scale[j];
-  };
-
   ActiveSet active;
   active.n = n;
+  auto finish = [&](QpStatus status) {
+    result.status = status;
+    result.active = active.size;
+    for (int k = 0; k < active.size; ++k) result.active_rows[static_cast<size_t>(k)] = active.row[k];
+    for (int j = 0; j < n; ++j) x[j] = y[j] * scale[j];
+    return result;
+  };
+
   for (;;) {
-    // the most violated row
+    // the most violated row, a preferred one if any is violated
     int32_t p = -1;
     double worst = 0.0;
+    bool preferred = false;
     for (int32_t i = 0; i < row_count; ++i) {
-      if (rows[i].active) continue;
+      if (rows[i].active || (preferred && !rows[i].preferred)) continue;
       const double slack = dot(n, rows[i].a, y) - rows[i].b;
-      if (slack < worst - 1e-12 * (1.0 + std::fabs(rows[i].b))) {
+      const double tolerance = 1e-12 * (1.0 + std::fabs(rows[i].b));
+      if (slack < -tolerance && ((rows[i].preferred && !preferred) || slack < worst - tolerance)) {
         worst = slack;
         p = i;
+        preferred = rows[i].preferred;
       }
     }
     if (p < 0) break;  // every row holds: optimal
@@ -118,20 +125,10 @@ QpResult solve_projection_qp(int n, const double* weights, const double* target,
 
     double u_p = 0.0;
     for (;;) {
-      if (result.iterations >= iteration_cap) {
-        result.status = QpStatus::kIterationCap;
-        result.active = active.size;
-        write_back();
-        return result;
-      }
+      if (result.iterations >= iteration_cap) return finish(QpStatus::kIterationCap);
       ++result.iterations;
       Vec z{}, r{};
-      if (!active.split(np, z, r)) {
-        result.status = QpStatus::kInfeasible;  // numerically dependent active normals
-        result.active = active.size;
-        write_back();
-        return result;
-      }
+      if (!active.split(np, z, r)) return finish(QpStatus::kInfeasible);  // dependent normals
       // dual step limit: the first active multiplier to reach zero
       double t1 = kInfinity;
       int drop = -1;
@@ -147,12 +144,7 @@ QpResult solve_projection_qp(int n, const double* weights, const double* target,
       const double zz = dot(n, z, np);
       const double violation = dot(n, np, y) - rows[p].b;
       const double t2 = !full && zz > 1e-20 * dot(n, np, np) ? -violation / zz : kInfinity;
-      if (t1 == kInfinity && t2 == kInfinity) {
-        result.status = QpStatus::kInfeasible;
-        result.active = active.size;
-        write_back();
-        return result;
-      }
+      if (t1 == kInfinity && t2 == kInfinity) return finish(QpStatus::kInfeasible);
       const double t = t2 < t1 ? t2 : t1;
       if (t2 != kInfinity)
         for (int j = 0; j < n; ++j) y[j] += t * z[j];
@@ -170,9 +162,23 @@ QpResult solve_projection_qp(int n, const double* weights, const double* target,
       active.drop(drop);  // a multiplier reached zero: that row lets go
     }
   }
-  result.active = active.size;
-  write_back();
-  return result;
+  return finish(QpStatus::kOptimal);
+}
+
+void QpHints::keep(const QpRow* rows, const QpResult& result) {
+  count = 0;
+  for (int32_t k = 0; k < result.active; ++k) {
+    const int64_t key = rows[result.active_rows[static_cast<size_t>(k)]].key;
+    if (key != 0) keys[static_cast<size_t>(count++)] = key;
+  }
+}
+
+void QpHints::mark(QpRow* rows, int32_t row_count) const {
+  for (int32_t i = 0; i < row_count; ++i) {
+    rows[i].preferred = false;
+    for (int32_t k = 0; k < count && !rows[i].preferred; ++k)
+      rows[i].preferred = rows[i].key != 0 && rows[i].key == keys[static_cast<size_t>(k)];
+  }
 }
 
 }  // namespace frusta

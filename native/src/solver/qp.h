@@ -16,7 +16,9 @@ constexpr int kMaxQpVariables = 6;
 struct QpRow {
   std::array<double, kMaxQpVariables> a{};
   double b = 0.0;
-  bool active = false;  // the solver's own mark
+  int64_t key = 0;         // the caller's name for the row (0: none); not read here
+  bool preferred = false;  // the caller's guess that it binds: among rows violated, it joins first
+  bool active = false;     // the solver's own mark
 };
 
 enum class QpStatus : int { kOptimal = 0, kInfeasible = 1, kIterationCap = 2 };
@@ -25,6 +27,19 @@ struct QpResult {
   QpStatus status = QpStatus::kOptimal;
   int32_t iterations = 0;  // constraints added or dropped
   int32_t active = 0;      // rows active at the solution
+  std::array<int32_t, kMaxQpVariables> active_rows{};  // their indices, the first `active`
+};
+
+// The rows a QP ended with active, by their keys: the next QP of a like problem (the
+// next linearisation, the next step's) prefers them, adding them first instead of
+// finding them again through rows that join and let go: the dual method's warm start.
+// A guess only: which violated row joins next is the method's free choice.
+struct QpHints {
+  std::array<int64_t, kMaxQpVariables> keys{};
+  int32_t count = 0;
+
+  void keep(const QpRow* rows, const QpResult& result);
+  void mark(QpRow* rows, int32_t row_count) const;
 };
 
 // x holds the solution on return (the best point reached when not optimal). The rows

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
+#include <initializer_list>
 #include <vector>
 
 #include "hand/kinematics.h"
@@ -36,11 +38,13 @@ struct StageInputs {
 // of solve_stage below).
 class StageEstimate {
  public:
-  StageEstimate(HandState& state, HandPose& pose)
+  // hints: what this part's QPs ended with active, kept from one to the next (QpHints)
+  StageEstimate(HandState& state, HandPose& pose, QpHints& hints)
       : state_(state), pose_(pose), trial_state_(state), saved_state_(state), trial_pose_(pose),
-        saved_pose_(pose) {}
+        saved_pose_(pose), hints_(hints) {}
 
   double floor() const { return floor_; }
+  QpHints& hints() { return hints_; }
   bool capped() const { return capped_; }
   void commit() {
     state_ = trial_state_;
@@ -64,7 +68,17 @@ class StageEstimate {
   HandPose trial_pose_, saved_pose_;
   double floor_ = 0.0;    // a trial may not sink below this gap
   bool capped_ = false;   // some trial was refused for moving too far
+  QpHints& hints_;
 };
+
+// A linearised row's name (QpRow::key), the same in every linearisation and step: its
+// kind and what it stands for, mixed into 64 bits (a clash only misleads a hint).
+enum class RowKind : int64_t { kJointLimit = 1, kMotionBound = 2, kContact = 3, kHeading = 4 };
+inline int64_t row_key(RowKind kind, int64_t a = 0, int64_t b = 0, int64_t c = 0, int64_t d = 0) {
+  uint64_t key = static_cast<uint64_t>(kind);
+  for (int64_t part : {a, b, c, d}) key = key * 0x100000001b3ull + static_cast<uint64_t>(part);
+  return static_cast<int64_t>(key | 1ull);  // never 0, which names nothing
+}
 
 // The bound of a linearised row, g + a.d >= bound. Rows ask for half the penetration
 // tolerance, so a hand one stage left inside the tolerance is not pushed back out by
@@ -131,8 +145,10 @@ StageStats solve_stage(Problem& problem, const SolverParams& params, std::vector
     // (sliding as far as they allow, pressed on the surface by the target behind it),
     // rather than towards its target cut short (off the surface, in the air)
     count += problem.bound_rows(rows.data() + count);
+    problem.hints().mark(rows.data(), count);
     const QpResult qp =
         solve_projection_qp(n, weights, target, rows.data(), count, params.qp_iteration_cap, d);
+    problem.hints().keep(rows.data(), qp);
     stats.qp_iterations += qp.iterations;
     stats.infeasible |= qp.status == QpStatus::kInfeasible;
     double largest = 0.0;
