@@ -48,6 +48,14 @@ FingerAngles FingerStage::angles(const HandState& state) const {
   return a;
 }
 
+double FingerStage::objective() const {
+  const FingerAngles now = angles(state_);
+  double sum = 0.0;
+  for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j)
+    sum += inputs_.params.joint_stiffness[j] * (target_[j] - now[j]) * (target_[j] - now[j]);
+  return 0.5 * sum;
+}
+
 int32_t FingerStage::row_capacity() const {
   return inputs_.candidates.finger_count(finger_) + 2 * FRUSTA_JOINTS_PER_FINGER;
 }

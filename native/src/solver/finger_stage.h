@@ -42,6 +42,7 @@ class FingerStage : public StageEstimate {
               FingerBound bound, QpHints& hints, HandState& state, HandPose& pose);
 
   int dofs() const { return FRUSTA_JOINTS_PER_FINGER; }
+  double objective() const;
   int32_t row_capacity() const;
   int32_t linearise(QpRow* rows, double* target, double* weights) const;
   double try_step(const double* d, double s);

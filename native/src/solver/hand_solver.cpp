@@ -289,7 +289,18 @@ StageStats HandSolver::solve_within_budget(MakeStage make, bool budget_binds, bo
   SolverParams params = params_;  // each linearisation takes half what is left
   params.max_iterations = std::max(params.max_iterations, kSlideIterations);
   // the last of the step's budget: its linearisations stop at the deadline
+  const double before = sliding.objective();
   const StageStats slide = solve_stage(sliding, params, rows_, deadline_);
+  // Each of its QPs moves closer to the target, but a trial a hair inside a curved
+  // surface is pushed back out by the next linearisation, which may cost more than the
+  // QP gained: on a coarse ball a fingertip held still slid a few microns towards its
+  // target for some steps and then, cut short by its budget, slid back the same way in
+  // one, for ever (a hand that never rests and whose forces tremble). A slide that ends
+  // further from its target than it began stays where it began.
+  if (sliding.objective() > before) {
+    graphic_ = state;
+    pose_ = pose;
+  }
   stats.iterations += slide.iterations;
   stats.qp_iterations += slide.qp_iterations;
   stats.infeasible |= slide.infeasible;

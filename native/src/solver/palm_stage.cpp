@@ -63,6 +63,13 @@ PalmStage::PalmStage(const StageInputs& inputs, const PalmPlacement& target, dou
   recovering_ = start_gap < -kRecoveryTolerances * inputs.params.penetration_tolerance;
 }
 
+double PalmStage::objective() const {
+  const vec3 to_target = target_.position - state_.palm_position;
+  const vec3 turn = rotation_between(state_.palm_rotation, target_.rotation);
+  return 0.5 * (inputs_.params.palm_translation_stiffness * glm::dot(to_target, to_target) +
+                inputs_.params.palm_rotation_stiffness * glm::dot(turn, turn));
+}
+
 int32_t PalmStage::linearise(QpRow* rows, double* target, double* weights) const {
   const vec3 to_target = target_.position - state_.palm_position;
   const vec3 turn = rotation_between(state_.palm_rotation, target_.rotation);

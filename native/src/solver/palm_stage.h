@@ -45,6 +45,7 @@ class PalmStage : public StageEstimate {
             const PalmHeading& heading, bool slide, QpHints& hints, HandState& state, HandPose& pose);
 
   int dofs() const { return 6; }
+  double objective() const;
   int32_t row_capacity() const {
     return static_cast<int32_t>(inputs_.candidates.candidates.size()) + 1;
   }

@@ -438,6 +438,27 @@ TEST(HandSolver, AHandCreepingLessThanANanometreAStepRests) {
   EXPECT_TRUE(solver.contacts().size() > 0);
 }
 
+// A grasp of a coarse ball (100 leaves of ~8 mm) held still comes to rest. Before, the
+// little fingertip slid a few microns a step towards its target (each step further:
+// the fixed point there is unstable) until its budget cut a step short, and that
+// step's slide took it back past where it began: a five-step cycle of 4-36 um for as
+// long as the hand was held, never at rest.
+TEST(HandSolver, AGraspOfACoarseBallHeldStillComesToRest) {
+  const HandScenario s = scenes::ball_grasp(scenes::ball_shell(100, 0.04));
+  HandSolver solver(default_model(), SolverParams{});
+  StepStats stats;
+  for (int t = 0; t < s.steps; ++t) ASSERT_EQ(step_vouched(solver, s.haptic(t), s, &stats, t > 0), FRUSTA_OK);
+  int32_t resting = 0;
+  for (int t = 0; t < 200; ++t) {
+    ASSERT_EQ(step_vouched(solver, s.held, s, &stats, true), FRUSTA_OK);
+    resting += stats.resting ? 1 : 0;
+  }
+  EXPECT_TRUE(stats.resting);
+  EXPECT_GE(resting, 150) << "held still, the hand is still";
+  EXPECT_LE(scenes::deepest_penetration(solver.model(), solver.graphic_pose(), s.objects), kMaxPenetration);
+  EXPECT_FALSE(solver.contacts().empty());
+}
+
 // A slow hand looks only as far as it can move (detection_margin): a grasp held with a
 // steady hand's tremor meets a fraction of the candidates a Delta_r detection finds,
 // keeps its contacts, and never sinks past the floor.
