@@ -41,6 +41,7 @@ float round_up(double value) {
 void compute_node_errors(SphereTree& tree) {
   const std::array<vec3, kNodeErrorDirections>& directions = node_error_directions();
   tree.node_error.assign(tree.nodes.size(), 0.0f);
+  tree.node_overhang.assign(tree.nodes.size(), 0.0f);
   // per direction, its sample point and its gap so far: laid out for the vector units
   alignas(32) double px[kNodeErrorDirections], py[kNodeErrorDirections], pz[kNodeErrorDirections];
   alignas(32) double nearest[kNodeErrorDirections];
@@ -72,6 +73,15 @@ void compute_node_errors(SphereTree& tree) {
     double worst = 0.0;
     for (int k = 0; k < kNodeErrorDirections; ++k) worst = std::max(worst, nearest[k]);
     tree.node_error[i] = round_up(worst);
+    double overhang = 0.0;  // the inner children's spheres, and what sticks out of them
+    for (int32_t c = 0; c < n.count; ++c) {
+      const int32_t child = n.first + c;
+      if (tree.nodes[static_cast<size_t>(child)].count == 0) continue;  // a leaf lies inside
+      const Sphere s = tree.node_sphere(child);
+      overhang = std::max(overhang, glm::length(s.center - bound.center) + s.radius +
+                                        tree.node_overhang[static_cast<size_t>(child)] - bound.radius);
+    }
+    tree.node_overhang[i] = round_up(overhang);
   }
 }
 

@@ -21,6 +21,8 @@ const std::array<vec3, kNodeErrorDirections>& node_error_directions();
 // An estimate: between the sampled points the surface may stand out by up to the
 // radius times the sampling's angular gap more. Needs children stored after their
 // parent (the builder and the loader guarantee it); ~ 64 x branching distances per node.
+// Fills tree.node_overhang too: for an inner node, how far the spheres of the inner
+// nodes beneath it reach past its own, rounded up to a float.
 void compute_node_errors(SphereTree& tree);
 
 }  // namespace frusta

@@ -33,6 +33,10 @@ struct SphereTree {
   std::vector<Sphere> leaves;   // in the caller's numbering, never reordered
   std::vector<float> node_error;  // per node, metres its sphere stands out of its leaves
                                   // (compute_node_errors; 0 for a leaf)
+  // per node, metres the spheres of the inner nodes beneath it stick out of its own (a
+  // node bounds its leaves, not its children's spheres), which a walk under a cut must
+  // reach (compute_node_errors; 0 for a leaf)
+  std::vector<float> node_overhang;
   int32_t branching = 0;
   int32_t depth = 0;  // levels below the root; a lone leaf has depth 0
 
@@ -61,7 +65,25 @@ struct TreeCut {
     return level == max_level ||
            (max_error > 0.0 && tree.node_error[static_cast<size_t>(node)] <= max_error);
   }
+  bool cuts() const { return max_level >= 0 || max_error > 0.0; }  // may stop above a leaf
 };
+
+// The sphere a walk tests a node by: a leaf's, or that of a node where the walk stops,
+// as it is; a node the walk goes on through stands for everything below it that may be
+// reported, which under a cut includes inner nodes sticking out of it (node_overhang).
+// Without that, a node standing in was missed by a small margin and found by a larger
+// one: a hand held on a level of detail found nothing near, moved in, and was pushed
+// out again some steps later, its contacts and forces coming and going.
+inline Sphere walked_sphere(const SphereTree& tree, int32_t node, bool stops, TreeCut cut) {
+  const TreeNode& n = tree.nodes[static_cast<size_t>(node)];
+  if (n.count == 0) return tree.leaves[static_cast<size_t>(n.first)];
+  Sphere s = tree.node_sphere(node);
+  if (!stops && cut.cuts()) {
+    assert(tree.node_overhang.size() == tree.nodes.size());  // built or loaded
+    s.radius += static_cast<double>(tree.node_overhang[static_cast<size_t>(node)]);
+  }
+  return s;
+}
 
 struct TreeQueryStats {
   int32_t visited = 0;  // node tests performed
@@ -94,9 +116,9 @@ TreeQueryStats walk_tree(const SphereTree& tree, Touches touches, TreeCut cut, E
     const TreeNode& n = tree.nodes[static_cast<size_t>(e.node)];
     ++stats.visited;
     const bool leaf = n.count == 0;
-    if (!touches(leaf ? tree.leaves[static_cast<size_t>(n.first)] : tree.node_sphere(e.node)))
-      continue;
-    if (leaf || cut.stops(tree, e.node, e.level)) {
+    const bool stops = !leaf && cut.stops(tree, e.node, e.level);
+    if (!touches(walked_sphere(tree, e.node, stops, cut))) continue;
+    if (leaf || stops) {
       emit(TreeHit{e.node, leaf ? n.first : -1});
       ++stats.hits;
       continue;
@@ -145,7 +167,8 @@ TreeQueryStats walk_tree_masked(const SphereTree& tree, uint64_t probes, Near ne
     const TreeNode& n = tree.nodes[static_cast<size_t>(e.node)];
     ++stats.visited;
     const bool leaf = n.count == 0;
-    const Sphere sphere = leaf ? tree.leaves[static_cast<size_t>(n.first)] : tree.node_sphere(e.node);
+    const bool stops = !leaf && cut.stops(tree, e.node, e.level);
+    const Sphere sphere = walked_sphere(tree, e.node, stops, cut);
     if (!near(sphere)) continue;
     uint64_t reached = 0;
     for (uint64_t rest = e.probes; rest != 0; rest &= rest - 1) {
@@ -153,7 +176,7 @@ TreeQueryStats walk_tree_masked(const SphereTree& tree, uint64_t probes, Near ne
       if (touches(k, sphere)) reached |= uint64_t{1} << k;
     }
     if (reached == 0) continue;
-    if (leaf || cut.stops(tree, e.node, e.level)) {
+    if (leaf || stops) {
       emit(TreeHit{e.node, leaf ? n.first : -1}, reached, sphere);
       ++stats.hits;
       continue;

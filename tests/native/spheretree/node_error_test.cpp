@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "scenes/random_trees.h"
+#include "geometry/contact_test.h"
 #include "spheretree/tree_builder.h"
 
 namespace frusta {
@@ -101,6 +102,49 @@ TEST(NodeError, ACutByErrorStopsOnlyAtNodesWithinIt) {
       EXPECT_LE(tree.node_error[static_cast<size_t>(h.node)], budget);
     });
     EXPECT_GT(inner_hits, 0) << budget;
+  }
+}
+
+// Under a cut, a node that stands in is found by any walk whose margin reaches its own
+// sphere, whichever way its ancestors' spheres lie: a parent bounds its leaves, not its
+// children's spheres, which the walk reaches through the tree's node_overhang. A walk
+// at a small margin finds exactly the hits of one at a large margin that lie within the
+// small one (before, a touching hand's 0.25 mm walk found nothing the 2 mm walk did).
+TEST(NodeError, ASmallMarginFindsEveryStandInALargeOneFindsWithinIt) {
+  std::mt19937_64 rng(21);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (const auto& leaves : {testing::plate_leaves(rng, 60, 60, 0.0007, 0.0006),
+                             testing::random_leaves(rng, 4000, 1)}) {
+    SphereTree tree;
+    ASSERT_EQ(build_sphere_tree(leaves, {8}, &tree), FRUSTA_OK);
+    int64_t checked = 0, missed = 0;
+    for (TreeCut cut : {TreeCut(-1, 0.0005), TreeCut(-1, 0.001), TreeCut(2, 0.0)}) {
+      for (int trial = 0; trial < 300; ++trial) {
+        // a finger segment lying a hair off a random leaf
+        const Sphere& near = leaves[static_cast<size_t>(rng() % leaves.size())];
+        const vec3 on = near.center + (near.radius + 0.008 + 0.0005 * (1.0 + unit(rng))) *
+                                          glm::normalize(vec3(unit(rng), unit(rng), unit(rng)));
+        const vec3 along = glm::normalize(vec3(unit(rng), unit(rng), unit(rng)));
+        const SegmentFrame frame = make_segment_frame({on + 0.01 * along, on - 0.01 * along, 0.008, 0.007});
+        std::vector<TreeHit> big(20000), small(20000);
+        const int32_t nb = query_segment(tree, frame, 0.004, cut, big.data(), 20000).hits;
+        const int32_t ns = query_segment(tree, frame, 0.0005, cut, small.data(), 20000).hits;
+        ASSERT_LE(nb, 20000);
+        int32_t within = 0;
+        for (int32_t i = 0; i < nb; ++i) {
+          const TreeHit& h = big[static_cast<size_t>(i)];
+          const Sphere s = h.leaf >= 0 ? tree.leaves[static_cast<size_t>(h.leaf)] : tree.node_sphere(h.node);
+          if (!may_touch(frame, s, 0.0005)) continue;
+          ++within;
+          missed += std::none_of(small.begin(), small.begin() + ns,
+                                 [&](const TreeHit& x) { return x.node == h.node; });
+        }
+        EXPECT_EQ(within, ns) << "trial " << trial;
+        checked += within;
+      }
+    }
+    EXPECT_EQ(missed, 0);
+    EXPECT_GT(checked, 1000);
   }
 }
 
