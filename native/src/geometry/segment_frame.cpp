@@ -5,6 +5,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "geometry/trapezoid_distance.h"
+
 namespace frusta {
 
 namespace {
@@ -28,7 +30,7 @@ SegmentFrame make_segment_frame(const Segment& segment) {
   f.axis = d / f.length;
   f.slope = (f.r_proximal - f.r_distal) / f.length;
   // cos and sin from the side's own lengths rather than through atan: exact for a cylinder
-  const double side = std::hypot(f.length, f.r_proximal - f.r_distal);
+  const double side = slant_length(f.length, f.r_distal, f.r_proximal);
   f.cos_alpha = f.length / side;
   f.sin_alpha = (f.r_proximal - f.r_distal) / side;
   return f;

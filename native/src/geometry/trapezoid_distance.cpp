@@ -28,7 +28,7 @@ TrapezoidDistance trapezoid_distance(double x, double y, double length, double r
                                      double r_proximal) {
   TrapezoidDistance out;
   // the lateral edge's outward unit normal, (-sin alpha, cos alpha)
-  const double side = std::hypot(length, r_proximal - r_distal);
+  const double side = slant_length(length, r_distal, r_proximal);
   const double lateral_nx = side > 0.0 ? -(r_proximal - r_distal) / side : 0.0;
   const double lateral_ny = side > 0.0 ? length / side : 1.0;
 

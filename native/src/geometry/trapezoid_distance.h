@@ -5,6 +5,8 @@
 // distance, which makes it the exact reference for the frustum part.
 #pragma once
 
+#include <cmath>
+
 namespace frusta {
 
 struct TrapezoidDistance {
@@ -15,5 +17,13 @@ struct TrapezoidDistance {
 
 TrapezoidDistance trapezoid_distance(double x, double y, double length, double r_distal,
                                      double r_proximal);
+
+// The length of the section's slanted edge, from (0, r2) to (L, r1). A plain root, not
+// std::hypot: a hand's lengths are far from overflow, and hypot took a tenth of a
+// trembling grasp's step (a frame per segment per trial).
+inline double slant_length(double length, double r_distal, double r_proximal) {
+  const double taper = r_proximal - r_distal;
+  return std::sqrt(length * length + taper * taper);
+}
 
 }  // namespace frusta
