@@ -12,20 +12,18 @@
 
 namespace frusta {
 
-double finger_motion(const HandReach& reach, int finger, const FingerAngles& from,
-                     const FingerAngles& to) {
-  double motion = 0.0;
-  for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j)
-    motion += std::fabs(to[j] - from[j]) * reach.lever[finger][j];
-  return motion;
-}
-
 double segment_motion(const HandReach& reach, int finger, int segment, const FingerAngles& from,
                       const FingerAngles& to) {
   double motion = 0.0;
   for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j)
     motion += std::fabs(to[j] - from[j]) * reach.segment_lever[finger][segment][j];
   return motion;
+}
+
+double finger_motion(const HandReach& reach, int finger, const FingerAngles& from,
+                     const FingerAngles& to) {
+  // the fingertip's segment moves furthest: its levers are the finger's
+  return segment_motion(reach, finger, FRUSTA_SEGMENTS_PER_FINGER - 1, from, to);
 }
 
 FingerStage::FingerStage(const StageInputs& inputs, int finger, const FingerAngles& target,
