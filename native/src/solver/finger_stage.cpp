@@ -58,7 +58,8 @@ int32_t FingerStage::row_capacity() const {
   return inputs_.candidates.finger_count(finger_) + 2 * FRUSTA_JOINTS_PER_FINGER;
 }
 
-int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights) const {
+int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights,
+                               double radius) const {
   const FingerAngles now = angles(state_);
   const FingerModel& finger = inputs_.model.fingers[finger_];
   const FingerPose& p = pose_.fingers[finger_];
@@ -82,8 +83,10 @@ int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights) con
     // a sphere further than any admissible trial can move the segment is no row: exact,
     // not a guess (a trial moves the finger within the cap from the start, and the
     // segment by at most its share of that)
-    const double reach = inputs_.reach.segment_share[finger_][s] * motion_cap_ +
-                         segment_motion(inputs_.reach, finger_, s, start_, now);
+    // (and one a step within `radius` cannot reach no row of that step's)
+    const double share = inputs_.reach.segment_share[finger_][s];
+    const double reach = std::min(share * motion_cap_ + segment_motion(inputs_.reach, finger_, s, start_, now),
+                                  share * radius);
     // dD/dq and dE/dq: D = joint s, E = joint s + 1; flexion j turns about joint j - 1
     vec3 column_d[FRUSTA_JOINTS_PER_FINGER], column_e[FRUSTA_JOINTS_PER_FINGER];
     column_d[0] = glm::cross(p.abduction_axis, p.joint[s] - p.joint[0]);
@@ -107,6 +110,13 @@ int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights) con
     }
   }
   return count;
+}
+
+double FingerStage::step_motion(const double* d) const {
+  double motion = 0.0;
+  for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j)
+    motion += std::fabs(d[j]) * inputs_.reach.lever[finger_][j];
+  return motion;
 }
 
 double FingerStage::row_bound_now() const {

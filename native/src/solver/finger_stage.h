@@ -44,7 +44,8 @@ class FingerStage : public StageEstimate {
   int dofs() const { return FRUSTA_JOINTS_PER_FINGER; }
   double objective() const;
   int32_t row_capacity() const;
-  int32_t linearise(QpRow* rows, double* target, double* weights) const;
+  int32_t linearise(QpRow* rows, double* target, double* weights, double radius) const;
+  double step_motion(const double* d) const;
   double try_step(const double* d, double s);
   double try_between(double s);
   int32_t bound_rows(QpRow* rows) const;

@@ -70,7 +70,7 @@ double PalmStage::objective() const {
                 inputs_.params.palm_rotation_stiffness * glm::dot(turn, turn));
 }
 
-int32_t PalmStage::linearise(QpRow* rows, double* target, double* weights) const {
+int32_t PalmStage::linearise(QpRow* rows, double* target, double* weights, double radius) const {
   const vec3 to_target = target_.position - state_.palm_position;
   const vec3 turn = rotation_between(state_.palm_rotation, target_.rotation);
   for (int k = 0; k < 3; ++k) {
@@ -83,7 +83,8 @@ int32_t PalmStage::linearise(QpRow* rows, double* target, double* weights) const
   // becomes (g_P, (P - palm) x g_P)
   const vec3& palm = pose_.palm_position;
   // a sphere further than any admissible trial can move is no row: exact, not a guess
-  const double reach = motion_cap_ + palm_motion(inputs_.reach, start_, placement(state_));
+  // (and one a step within `radius` cannot reach no row of that step's)
+  const double reach = std::min(motion_cap_ + palm_motion(inputs_.reach, start_, placement(state_)), radius);
   int32_t count = 0;
   for (int body = 0; body < FRUSTA_HAND_SEGMENT_COUNT; ++body) {
     if (inputs_.candidates.count(body) == 0) continue;
@@ -122,6 +123,12 @@ int32_t PalmStage::linearise(QpRow* rows, double* target, double* weights) const
             -heading_.slack - glm::dot(heading_.way, state_.palm_position - heading_.from),
             row_key(RowKind::kHeading));
   return count;
+}
+
+double PalmStage::step_motion(const double* d) const {
+  // a point P carried by the palm moves by dt and turns by |dw| about it: no further
+  // than |dt| + |dw| |P - palm| (try_step's rotated)
+  return glm::length(vec3(d[0], d[1], d[2])) + glm::length(vec3(d[3], d[4], d[5])) * inputs_.reach.hand;
 }
 
 int32_t PalmStage::bound_rows(QpRow* rows) const {

@@ -49,7 +49,8 @@ class PalmStage : public StageEstimate {
   int32_t row_capacity() const {
     return static_cast<int32_t>(inputs_.candidates.candidates.size()) + 1;
   }
-  int32_t linearise(QpRow* rows, double* target, double* weights) const;
+  int32_t linearise(QpRow* rows, double* target, double* weights, double radius) const;
+  double step_motion(const double* d) const;
   double try_step(const double* d, double s);
   double try_between(double s);
   int32_t bound_rows(QpRow* rows) const;

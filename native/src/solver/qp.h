@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 
 namespace frusta {
@@ -37,6 +38,9 @@ struct QpResult {
 struct QpHints {
   std::array<int64_t, kMaxQpVariables> keys{};
   int32_t count = 0;
+  // how far the part's last stage moved in its first linearisation (step_motion): the
+  // next one's first makes the rows a step of about that can reach (stage.h)
+  double first_step = INFINITY;
 
   void keep(const QpRow* rows, const QpResult& result);
   void mark(QpRow* rows, int32_t row_count) const;

@@ -1,0 +1,122 @@
+// SPDX-License-Identifier: MIT
+// A linearisation after a stage's first makes only the rows of spheres a step within a
+// radius can reach (stage.h, kRowRadius). Where its step stays within that radius it must
+// be the step every row makes: the spheres left out lie further than that step moves the
+// hand, so their rows cannot bind. Checked on the poses the solver passes through in
+// every acceptance scenario and the deep grasp, against the same stage linearised whole.
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+
+#include "hand/anthropometry.h"
+#include "hand/hand_model.h"
+#include "scenes/baked_objects.h"
+#include "scenes/hand_scenarios.h"
+#include "solver/finger_stage.h"
+#include "solver/hand_solver.h"
+#include "solver/palm_stage.h"
+
+namespace frusta {
+namespace {
+
+struct Tally {
+  int within = 0;  // restricted steps that stayed within their radius
+  int fewer = 0;   // ... with fewer rows than the whole linearisation
+};
+
+// Solve `make()`'s first linearisation whole, then within radii around its step; a step
+// within its radius must equal the whole one.
+template <class MakeStage>
+void compare_radii(MakeStage make, std::vector<QpRow>& rows, Tally& tally, const char* what, int step) {
+  auto solve = [&](double radius, double* d, int32_t& count) {
+    auto stage = make();
+    rows.resize(static_cast<size_t>(stage.row_capacity() + kMaxBoundRows));
+    double target[kMaxQpVariables] = {}, weights[kMaxQpVariables] = {};
+    count = stage.linearise(rows.data(), target, weights, radius);
+    count += stage.bound_rows(rows.data() + count);
+    solve_projection_qp(stage.dofs(), weights, target, rows.data(), count, 64, d);
+    return stage.step_motion(d);
+  };
+  double whole[kMaxQpVariables] = {};
+  int32_t whole_rows = 0;
+  const double motion = solve(INFINITY, whole, whole_rows);
+  if (!(motion > 0.0)) return;
+  for (double share : {0.05, 0.25, 0.5, 1.0, 2.0}) {
+    const double radius = share * motion;
+    double d[kMaxQpVariables] = {};
+    int32_t count = 0;
+    if (solve(radius, d, count) > radius) continue;  // solve_stage makes it again whole
+    ++tally.within;
+    tally.fewer += count < whole_rows;
+    for (int j = 0; j < kMaxQpVariables; ++j)
+      ASSERT_NEAR(d[j], whole[j], 1e-9) << what << " at step " << step << ", radius " << share
+                                        << " of the step, " << count << " of " << whole_rows << " rows";
+  }
+}
+
+void check_scenario(const scenes::HandScenario& s, Tally& fingers, Tally& palm) {
+  const HandModel model = make_hand_model(default_hand_def());
+  const HandReach reach = hand_reach(model);
+  const SolverParams params;
+  HandSolver solver(model, params);
+  CandidateSet candidates;
+  std::vector<QpRow> rows;
+  const auto object_count = static_cast<int32_t>(s.objects.size());
+  for (int32_t t = 0; t + 1 < s.steps; t += 3) {
+    ASSERT_EQ(solver.step(s.haptic(t), s.objects.data(), object_count, nullptr), FRUSTA_OK);
+    const HandState target = s.haptic(t + 1);
+    detect_candidates(model, reach, solver.graphic_pose(), s.objects.data(), object_count,
+                      DetectionMargins(params.prediction_margin), TreeCut(params.tree_level, params.lod_error),
+                      candidates);
+    const StageInputs inputs{model, reach, params, candidates};
+    // what a stage updates in place, as the solver left it for each solve
+    HandState state;
+    HandPose pose;
+    QpHints hints;
+    auto reset = [&] {
+      state = solver.graphic();
+      pose = solver.graphic_pose();
+      hints = QpHints{};
+    };
+    for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
+      if (candidates.finger_count(f) == 0) continue;
+      FingerAngles to;
+      std::copy_n(target.angles.begin() + f * FRUSTA_JOINTS_PER_FINGER, to.size(), to.begin());
+      for (FingerBound bound : {FingerBound::kHalve, FingerBound::kTrust}) {
+        compare_radii(
+            [&] {
+              reset();
+              return FingerStage(inputs, f, to, params.prediction_margin, bound, hints, state, pose);
+            },
+            rows, fingers, s.name.c_str(), t);
+      }
+    }
+    if (candidates.candidates.empty()) continue;
+    const PalmPlacement to{target.palm_position, glm::normalize(target.palm_rotation)};
+    for (bool slide : {false, true}) {
+      compare_radii(
+          [&] {
+            reset();
+            return PalmStage(inputs, to, 0.5 * params.prediction_margin, PalmHeading{}, slide, hints,
+                             state, pose);
+          },
+          rows, palm, s.name.c_str(), t);
+    }
+  }
+}
+
+TEST(StageRows, AStepWithinItsRadiusIsTheStepEveryRowMakes) {
+  Tally fingers, palm;
+  for (const std::string& name : scenes::hand_scenario_names())
+    check_scenario(scenes::make_hand_scenario(name), fingers, palm);
+  check_scenario(scenes::ball_grasp(scenes::ball_shell(3000, 0.04)), fingers, palm);
+  // the comparisons that test something: rows left out, and a step the same without them
+  EXPECT_GT(fingers.fewer, 1000) << fingers.within << " finger steps within their radius";
+  EXPECT_GT(palm.fewer, 100) << palm.within << " palm steps within their radius";
+}
+
+}  // namespace
+}  // namespace frusta
