@@ -12,11 +12,6 @@
 namespace frusta {
 
 
-Sphere SphereTree::node_sphere(int32_t node) const {
-  const TreeNode& n = nodes[static_cast<size_t>(node)];
-  return {vec3(n.center[0], n.center[1], n.center[2]), n.radius};
-}
-
 RigidPose relative_pose(const RigidPose& a, const RigidPose& b) {
   const glm::dmat3 to_a = glm::transpose(a.rotation);
   return {to_a * (b.position - a.position), to_a * b.rotation};
