@@ -8,6 +8,7 @@
 
 #include "geometry/constraint.h"
 #include "geometry/contact_test.h"
+#include "geometry/exact_distance.h"
 #include "solver/stage.h"
 
 namespace frusta {
@@ -58,8 +59,7 @@ int32_t FingerStage::row_capacity() const {
   return inputs_.candidates.finger_count(finger_) + 2 * FRUSTA_JOINTS_PER_FINGER;
 }
 
-int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights,
-                               double radius) const {
+int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights, double radius) {
   const FingerAngles now = angles(state_);
   const FingerModel& finger = inputs_.model.fingers[finger_];
   const FingerPose& p = pose_.fingers[finger_];
@@ -76,8 +76,10 @@ int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights,
     rows[count].key = row_key(RowKind::kJointLimit, j, 1);
     rows[count++].b = now[j] - finger.joint_max[j];
   }
+  rows_ = rows;
   for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s) {
     const int body = finger_ * FRUSTA_SEGMENTS_PER_FINGER + s;
+    segment_rows_[static_cast<size_t>(s)] = count;
     if (inputs_.candidates.count(body) == 0) continue;
     const SegmentFrame frame = make_segment_frame(finger_segment(inputs_.model, pose_, finger_, s));
     // a sphere further than any admissible trial can move the segment is no row: exact,
@@ -107,8 +109,10 @@ int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights,
       row.b = row_bound(inputs_.params, g.value,
                         c[i].world.radius + std::max(frame.r_proximal, frame.r_distal));
       row.key = row_key(RowKind::kContact, body, c[i].part, c[i].object, c[i].leaf);
+      row.source = inputs_.candidates.begin[body] + i;
     }
   }
+  segment_rows_[FRUSTA_SEGMENTS_PER_FINGER] = count;
   return count;
 }
 
@@ -172,7 +176,7 @@ double FingerStage::try_step(const double* d, double s) {
   if (bound_ == FingerBound::kTrust && motion >= (1.0 - 1e-6) * motion_cap_) capped_ = true;
   trial_state_ = state_;
   std::copy(next.begin(), next.end(), trial_state_.angles.begin() + finger_ * FRUSTA_JOINTS_PER_FINGER);
-  return trial_clearance();
+  return step_clearance();
 }
 
 double FingerStage::try_between(double s) {
@@ -184,6 +188,27 @@ double FingerStage::trial_clearance() {
   trial_pose_ = pose_;
   finger_kinematics(inputs_.model, trial_state_, finger_, trial_pose_);
   return clearance(trial_pose_);
+}
+
+double FingerStage::step_clearance() {
+  // A sphere that made no row lies further from its segment than the step can move it
+  // (linearise's reach; a step beyond its radius was linearised again whole), so it
+  // cannot touch: the same gap as every candidate's, from the few near
+  trial_pose_ = pose_;
+  finger_kinematics(inputs_.model, trial_state_, finger_, trial_pose_);
+  double gap = 0.0;
+  const Candidate* all = inputs_.candidates.candidates.data();
+  for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s) {
+    const int32_t begin = segment_rows_[static_cast<size_t>(s)], end = segment_rows_[static_cast<size_t>(s) + 1];
+    if (begin == end) continue;
+    const SegmentFrame frame = make_segment_frame(finger_segment(inputs_.model, trial_pose_, finger_, s));
+    for (int32_t r = begin; r < end; ++r) {
+      const Sphere& sphere = all[rows_[r].source].world;
+      // the cheap conservative test first, as body_clearance does
+      if (may_touch(frame, sphere, 0.0)) gap = std::min(gap, exact_distance(frame, sphere));
+    }
+  }
+  return gap;
 }
 
 }  // namespace frusta

@@ -44,7 +44,7 @@ class FingerStage : public StageEstimate {
   int dofs() const { return FRUSTA_JOINTS_PER_FINGER; }
   double objective() const;
   int32_t row_capacity() const;
-  int32_t linearise(QpRow* rows, double* target, double* weights, double radius) const;
+  int32_t linearise(QpRow* rows, double* target, double* weights, double radius);
   double step_motion(const double* d) const;
   double try_step(const double* d, double s);
   double try_between(double s);
@@ -55,6 +55,9 @@ class FingerStage : public StageEstimate {
 
  private:
   double trial_clearance();  // of the trial state, posed
+  // ... of the trial of a step the last linearisation's rows were made for: its contact
+  // rows name every candidate such a trial can reach
+  double step_clearance();
   double row_bound_now() const;  // what bound_rows keeps the move from the start within
   FingerAngles angles(const HandState& state) const;
 
@@ -64,6 +67,10 @@ class FingerStage : public StageEstimate {
   FingerAngles start_;
   double motion_cap_;
   FingerBound bound_;
+  // the last linearisation's rows (valid until the next) and where each segment's
+  // contact rows begin in them
+  const QpRow* rows_ = nullptr;
+  std::array<int32_t, FRUSTA_SEGMENTS_PER_FINGER + 1> segment_rows_{};
 };
 
 }  // namespace frusta

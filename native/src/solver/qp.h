@@ -18,6 +18,7 @@ struct QpRow {
   std::array<double, kMaxQpVariables> a{};
   double b = 0.0;
   int64_t key = 0;         // the caller's name for the row (0: none); not read here
+  int32_t source = -1;     // the caller's index of what it stands for; not read here
   bool preferred = false;  // the caller's guess that it binds: among rows violated, it joins first
   bool active = false;     // the solver's own mark
 };

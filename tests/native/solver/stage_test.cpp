@@ -3,7 +3,9 @@
 // radius can reach (stage.h, kRowRadius). Where its step stays within that radius it must
 // be the step every row makes: the spheres left out lie further than that step moves the
 // hand, so their rows cannot bind. Checked on the poses the solver passes through in
-// every acceptance scenario and the deep grasp, against the same stage linearised whole.
+// every acceptance scenario and the deep grasp, against the same stage linearised whole;
+// and a trial of such a step, whose gap the stage takes from its rows' spheres alone,
+// against every candidate's.
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -13,6 +15,7 @@
 
 #include "hand/anthropometry.h"
 #include "hand/hand_model.h"
+#include "hand/kinematics.h"
 #include "scenes/baked_objects.h"
 #include "scenes/hand_scenarios.h"
 #include "solver/finger_stage.h"
@@ -28,11 +31,11 @@ struct Tally {
 };
 
 // Solve `make()`'s first linearisation whole, then within radii around its step; a step
-// within its radius must equal the whole one.
-template <class MakeStage>
-void compare_radii(MakeStage make, std::vector<QpRow>& rows, Tally& tally, const char* what, int step) {
-  auto solve = [&](double radius, double* d, int32_t& count) {
-    auto stage = make();
+// within its radius must equal the whole one, and check_step(stage, d) holds for it.
+template <class MakeStage, class CheckStep>
+void compare_radii(MakeStage make, CheckStep check_step, std::vector<QpRow>& rows, Tally& tally,
+                   const char* what, int step) {
+  auto solve = [&](auto& stage, double radius, double* d, int32_t& count) {
     rows.resize(static_cast<size_t>(stage.row_capacity() + kMaxBoundRows));
     double target[kMaxQpVariables] = {}, weights[kMaxQpVariables] = {};
     count = stage.linearise(rows.data(), target, weights, radius);
@@ -42,22 +45,26 @@ void compare_radii(MakeStage make, std::vector<QpRow>& rows, Tally& tally, const
   };
   double whole[kMaxQpVariables] = {};
   int32_t whole_rows = 0;
-  const double motion = solve(INFINITY, whole, whole_rows);
+  auto whole_stage = make();
+  const double motion = solve(whole_stage, INFINITY, whole, whole_rows);
   if (!(motion > 0.0)) return;
   for (double share : {0.05, 0.25, 0.5, 1.0, 2.0}) {
     const double radius = share * motion;
     double d[kMaxQpVariables] = {};
     int32_t count = 0;
-    if (solve(radius, d, count) > radius) continue;  // solve_stage makes it again whole
+    auto stage = make();
+    if (solve(stage, radius, d, count) > radius) continue;  // solve_stage makes it again whole
     ++tally.within;
     tally.fewer += count < whole_rows;
     for (int j = 0; j < kMaxQpVariables; ++j)
       ASSERT_NEAR(d[j], whole[j], 1e-9) << what << " at step " << step << ", radius " << share
                                         << " of the step, " << count << " of " << whole_rows << " rows";
+    check_step(stage, d);
   }
 }
 
-void check_scenario(const scenes::HandScenario& s, Tally& fingers, Tally& palm) {
+void check_scenario(const scenes::HandScenario& s, Tally& fingers, Tally& palm, int& trials,
+                    int& touching) {
   const HandModel model = make_hand_model(default_hand_def());
   const HandReach reach = hand_reach(model);
   const SolverParams params;
@@ -85,13 +92,31 @@ void check_scenario(const scenes::HandScenario& s, Tally& fingers, Tally& palm) 
       if (candidates.finger_count(f) == 0) continue;
       FingerAngles to;
       std::copy_n(target.angles.begin() + f * FRUSTA_JOINTS_PER_FINGER, to.size(), to.begin());
+      // a trial of the step has the gap every candidate gives it, from its rows' alone
+      auto trials_see_every_candidate = [&](FingerStage& stage, const double* d) {
+        const FingerModel& finger = model.fingers[f];
+        for (double part : {1.0, 0.5, 0.125}) {
+          const double gap = stage.try_step(d, part);
+          if (gap == -INFINITY) continue;  // beyond the cap: refused before any gap
+          HandState trial = solver.graphic();
+          for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j) {
+            double& a = trial.angles[static_cast<size_t>(f * FRUSTA_JOINTS_PER_FINGER + j)];
+            a = std::clamp(a + part * d[j], finger.joint_min[j], finger.joint_max[j]);
+          }
+          HandPose trial_pose;
+          forward_kinematics(model, trial, trial_pose);
+          ASSERT_EQ(gap, stage.clearance(trial_pose)) << s.name << " at step " << t << ", finger " << f;
+          ++trials;
+          touching += gap < 0.0;
+        }
+      };
       for (FingerBound bound : {FingerBound::kHalve, FingerBound::kTrust}) {
         compare_radii(
             [&] {
               reset();
               return FingerStage(inputs, f, to, params.prediction_margin, bound, hints, state, pose);
             },
-            rows, fingers, s.name.c_str(), t);
+            trials_see_every_candidate, rows, fingers, s.name.c_str(), t);
       }
     }
     if (candidates.candidates.empty()) continue;
@@ -103,19 +128,21 @@ void check_scenario(const scenes::HandScenario& s, Tally& fingers, Tally& palm) 
             return PalmStage(inputs, to, 0.5 * params.prediction_margin, PalmHeading{}, slide, hints,
                              state, pose);
           },
-          rows, palm, s.name.c_str(), t);
+          [](PalmStage&, const double*) {}, rows, palm, s.name.c_str(), t);
     }
   }
 }
 
 TEST(StageRows, AStepWithinItsRadiusIsTheStepEveryRowMakes) {
   Tally fingers, palm;
+  int trials = 0, touching = 0;
   for (const std::string& name : scenes::hand_scenario_names())
-    check_scenario(scenes::make_hand_scenario(name), fingers, palm);
-  check_scenario(scenes::ball_grasp(scenes::ball_shell(3000, 0.04)), fingers, palm);
+    check_scenario(scenes::make_hand_scenario(name), fingers, palm, trials, touching);
+  check_scenario(scenes::ball_grasp(scenes::ball_shell(3000, 0.04)), fingers, palm, trials, touching);
   // the comparisons that test something: rows left out, and a step the same without them
   EXPECT_GT(fingers.fewer, 1000) << fingers.within << " finger steps within their radius";
   EXPECT_GT(palm.fewer, 100) << palm.within << " palm steps within their radius";
+  EXPECT_GT(touching, 100) << trials << " trials";
 }
 
 }  // namespace
