@@ -536,7 +536,7 @@ int main(int argc, char** argv) {
       if (only_leaves > 0 && leaves != only_leaves) continue;
       const std::shared_ptr<const TreeFile> ball = scenes::ball_shell(leaves, 0.04);
       const scenes::HandScenario s = scenes::ball_grasp(ball);
-      for (double budget : {0.0, 0.00005, 0.0001, 0.0002, 0.0005, 0.001}) {
+      for (double budget : {0.0, 0.00005, 0.0001, 0.0002, 0.0005, 0.001, 0.002, 0.003}) {
         SolverParams p = defaults;
         p.lod_error = budget;
         const Measured m = measure(s, p, 200, 10);
