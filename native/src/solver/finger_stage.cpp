@@ -180,7 +180,12 @@ double FingerStage::try_step(const double* d, double s) {
 }
 
 double FingerStage::try_between(double s) {
-  blend_trial(s);
+  // this finger's angles alone: a blend of the whole hand turns the palm by a rounding
+  // (a slerp between equal rotations), which this finger's pose would not follow
+  const FingerAngles from = angles(saved_state_), to = angles(state_);
+  trial_state_ = state_;
+  for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j)
+    trial_state_.angles[static_cast<size_t>(finger_ * FRUSTA_JOINTS_PER_FINGER + j)] = from[j] + s * (to[j] - from[j]);
   return trial_clearance();
 }
 

@@ -59,6 +59,14 @@ double total_motion(const HandReach& reach, const HandState& a, const HandState&
   return motion;
 }
 
+#ifndef NDEBUG
+bool pose_matches(const HandModel& model, const HandState& state, const HandPose& pose) {
+  HandPose fresh;
+  forward_kinematics(model, state, fresh);
+  return bodies_unmoved(fresh, pose) == (1u << kBodyCount) - 1u;
+}
+#endif
+
 bool same_state(const HandState& a, const HandState& b) {
   return a.palm_position == b.palm_position && a.palm_rotation == b.palm_rotation && a.angles == b.angles;
 }
@@ -460,9 +468,9 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
         settled_[f] = false;
       }
       set_finger_angles(graphic_, f, goal);
+      finger_kinematics(model_, graphic_, f, pose_);
       continue;
     }
-    forward_kinematics(model_, graphic_, pose_);
     // a target beyond the cap: the best step the cap allows (FingerBound::kTrust)
     const FingerBound bound = move > finger_cap ? FingerBound::kTrust : FingerBound::kHalve;
     const StageStats finger_stats = solve_within_budget(
@@ -475,7 +483,9 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
     settled_[f] = !finger_stats.capped;
     ++stats.finger_solves;
   }
-  forward_kinematics(model_, graphic_, pose_);
+  // every stage left the pose of what it moved (a whole hand's kinematics after each
+  // finger was a tenth of a trembling grasp's step)
+  assert(pose_matches(model_, graphic_, pose_));
 
   moved = total_motion(reach_, start, graphic_) > kStandstill;
   if (!recovering) budget = std::max(0.0, budget - hand_motion(reach_, start, graphic_));

@@ -302,6 +302,29 @@ TEST(HandSolverScenario, PalmPressedFlatOnABoxThenFingersClose) {
   expect_holds_and_rejects_bad_input(solver, s, log);
 }
 
+// The graphic pose is what the forces, contacts and the next step read: it must be the
+// graphic state's kinematics exactly, though the stages pose only what they move. A
+// finger stage's bisection blended the whole hand, and turned the palm by a rounding
+// (a slerp between equal rotations) its finger's pose did not follow (palm_then_fingers,
+// step 187).
+TEST(HandSolver, TheGraphicPoseIsTheGraphicStatesKinematicsEveryStep) {
+  int steps = 0;
+  for (const std::string& name : scenes::hand_scenario_names()) {
+    const HandScenario s = make_hand_scenario(name);
+    HandSolver solver(default_model(), SolverParams{});
+    for (int t = 0; t < s.steps; ++t) {
+      ASSERT_EQ(solver.step(s.haptic(t), s.objects.data(), static_cast<int32_t>(s.objects.size()), nullptr),
+                FRUSTA_OK);
+      if (!solver.started()) continue;
+      HandPose fresh;
+      forward_kinematics(solver.model(), solver.graphic(), fresh);
+      ASSERT_EQ(bodies_unmoved(fresh, solver.graphic_pose()), (1u << kBodyCount) - 1u) << name << " step " << t;
+      ++steps;
+    }
+  }
+  EXPECT_GT(steps, 1000);
+}
+
 // An object the host moves into a still hand (a kinematic object, faster than Delta_r a
 // step): the hand starts that step inside it, and is pushed back out within the step.
 TEST(HandSolver, AnObjectMovedIntoTheHandPushesItOut) {
