@@ -2,6 +2,7 @@
 #include "solver/finger_stage.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -29,7 +30,7 @@ double finger_motion(const HandReach& reach, int finger, const FingerAngles& fro
 
 FingerStage::FingerStage(const StageInputs& inputs, int finger, const FingerAngles& target,
                          double motion_cap, FingerBound bound, QpHints& hints, HandState& state,
-                         HandPose& pose)
+                         HandPose& pose, double start_gap)
     : StageEstimate(state, pose, hints),
       inputs_(inputs),
       finger_(finger),
@@ -38,7 +39,8 @@ FingerStage::FingerStage(const StageInputs& inputs, int finger, const FingerAngl
       motion_cap_(motion_cap),
       bound_(bound) {
   // never worse than the start, which a rounding or a curvature may have left a hair deep
-  floor_ = std::min(-inputs.params.penetration_tolerance, clearance(pose));
+  assert(start_gap == clearance(pose));
+  floor_ = std::min(-inputs.params.penetration_tolerance, start_gap);
 }
 
 FingerAngles FingerStage::angles(const HandState& state) const {
@@ -154,12 +156,16 @@ int32_t FingerStage::bound_rows(QpRow* rows) const {
   return count;
 }
 
-double FingerStage::clearance(const HandPose& pose) const {
+double finger_clearance(const HandModel& model, const HandPose& pose, const CandidateSet& candidates,
+                        int finger) {
   double gap = 0.0;
   for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s)
-    gap = std::min(gap, body_clearance(inputs_.model, pose, inputs_.candidates,
-                                       finger_ * FRUSTA_SEGMENTS_PER_FINGER + s));
+    gap = std::min(gap, body_clearance(model, pose, candidates, finger * FRUSTA_SEGMENTS_PER_FINGER + s));
   return gap;
+}
+
+double FingerStage::clearance(const HandPose& pose) const {
+  return finger_clearance(inputs_.model, pose, inputs_.candidates, finger_);
 }
 
 double FingerStage::try_step(const double* d, double s) {

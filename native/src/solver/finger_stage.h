@@ -22,6 +22,10 @@ double finger_motion(const HandReach& reach, int finger, const FingerAngles& fro
 double segment_motion(const HandReach& reach, int finger, int segment, const FingerAngles& from,
                       const FingerAngles& to);
 
+// The smallest exact gap (0 when apart) between a finger at `pose` and its candidates.
+double finger_clearance(const HandModel& model, const HandPose& pose, const CandidateSet& candidates,
+                        int finger);
+
 // How a finger stage keeps within its motion cap.
 enum class FingerBound {
   kHalve,  // steps towards its target, halved until within the cap
@@ -37,9 +41,10 @@ enum class FingerBound {
 class FingerStage : public StageEstimate {
  public:
   // state/pose: the graphic hand, updated in place; target: this stage's goal angles;
-  // motion_cap: how far (m) any point may move from where the stage starts.
+  // motion_cap: how far (m) any point may move from where the stage starts; start_gap:
+  // clearance(pose), which the caller has measured.
   FingerStage(const StageInputs& inputs, int finger, const FingerAngles& target, double motion_cap,
-              FingerBound bound, QpHints& hints, HandState& state, HandPose& pose);
+              FingerBound bound, QpHints& hints, HandState& state, HandPose& pose, double start_gap);
 
   int dofs() const { return FRUSTA_JOINTS_PER_FINGER; }
   double objective() const;

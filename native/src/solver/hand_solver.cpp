@@ -392,9 +392,13 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
   // A hand that starts the sub-step inside an object (the host moved the object into
   // it) is solved even where its target has not moved, so it is pushed back out; that
   // may move it Delta_r, so it looks as far
-  double deepest = 0.0;
-  for (int body = 0; body < kBodyCount; ++body)
-    deepest = std::min(deepest, body_clearance(model_, pose_, candidates_, body));
+  // (each body's clearance here is also where the stages start from, below)
+  std::array<double, kBodyCount> gaps;
+  auto measure_gaps = [&] {
+    for (int body = 0; body < kBodyCount; ++body) gaps[body] = body_clearance(model_, pose_, candidates_, body);
+  };
+  measure_gaps();
+  const double deepest = std::min(0.0, *std::min_element(gaps.begin(), gaps.end()));
   const bool recovering = deepest < -kRecoveryTolerances * params_.penetration_tolerance;
   const DetectionMargins everywhere(params_.prediction_margin);
   if (recovering && margins.body != everywhere.body) {
@@ -402,6 +406,7 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
     detect_candidates(model_, reach_, pose_, objects, object_count, everywhere, cut, candidates_,
                       only, only_count);
     detected_margins_ = everywhere;
+    measure_gaps();
   }
   stats.candidates = std::max(stats.candidates, static_cast<int32_t>(candidates_.candidates.size()));
   stats.tree_nodes_visited += candidates_.tree_nodes_visited;
@@ -440,7 +445,8 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
       add(solve_within_budget(
           [&](bool slide) {
             return PalmStage(inputs, palm_to, cap, recovering ? PalmHeading{} : heading_, slide,
-                             palm_hints_, graphic_, pose_);
+                             palm_hints_, graphic_, pose_,
+                             std::min(0.0, *std::min_element(gaps.begin(), gaps.end())));
           },
           budget_binds, slid));
       ++stats.palm_solves;
@@ -473,10 +479,17 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
     }
     // a target beyond the cap: the best step the cap allows (FingerBound::kTrust)
     const FingerBound bound = move > finger_cap ? FingerBound::kTrust : FingerBound::kHalve;
+    // where the palm has not moved, the finger is where the sub-step began
+    double start_gap = 0.0;
+    if (palm_moved)
+      start_gap = finger_clearance(model_, pose_, candidates_, f);
+    else
+      for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s)
+        start_gap = std::min(start_gap, gaps[f * FRUSTA_SEGMENTS_PER_FINGER + s]);
     const StageStats finger_stats = solve_within_budget(
         [&](bool slide) {
           return FingerStage(inputs, f, to, finger_cap, slide ? FingerBound::kSlide : bound,
-                             finger_hints_[static_cast<size_t>(f)], graphic_, pose_);
+                             finger_hints_[static_cast<size_t>(f)], graphic_, pose_, start_gap);
         },
         budget_binds, slid);
     add(finger_stats);

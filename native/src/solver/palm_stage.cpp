@@ -2,6 +2,7 @@
 #include "solver/palm_stage.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -50,7 +51,7 @@ void set_row(QpRow& row, const vec3& grad_translation, const vec3& grad_rotation
 
 PalmStage::PalmStage(const StageInputs& inputs, const PalmPlacement& target, double motion_cap,
                      const PalmHeading& heading, bool slide, QpHints& hints, HandState& state,
-                     HandPose& pose)
+                     HandPose& pose, double start_gap)
     : StageEstimate(state, pose, hints),
       inputs_(inputs),
       target_(target),
@@ -58,7 +59,7 @@ PalmStage::PalmStage(const StageInputs& inputs, const PalmPlacement& target, dou
       motion_cap_(motion_cap),
       heading_(heading),
       slide_(slide) {
-  const double start_gap = clearance(pose);
+  assert(start_gap == clearance(pose));
   floor_ = std::min(-inputs.params.penetration_tolerance, start_gap);
   recovering_ = start_gap < -kRecoveryTolerances * inputs.params.penetration_tolerance;
 }

@@ -114,7 +114,8 @@ void check_scenario(const scenes::HandScenario& s, Tally& fingers, Tally& palm, 
         compare_radii(
             [&] {
               reset();
-              return FingerStage(inputs, f, to, params.prediction_margin, bound, hints, state, pose);
+              return FingerStage(inputs, f, to, params.prediction_margin, bound, hints, state, pose,
+                                 finger_clearance(model, pose, candidates, f));
             },
             trials_see_every_candidate, rows, fingers, s.name.c_str(), t);
       }
@@ -125,8 +126,11 @@ void check_scenario(const scenes::HandScenario& s, Tally& fingers, Tally& palm, 
       compare_radii(
           [&] {
             reset();
+            double start_gap = 0.0;
+            for (int body = 0; body < kBodyCount; ++body)
+              start_gap = std::min(start_gap, body_clearance(model, pose, candidates, body));
             return PalmStage(inputs, to, 0.5 * params.prediction_margin, PalmHeading{}, slide, hints,
-                             state, pose);
+                             state, pose, start_gap);
           },
           [](PalmStage&, const double*) {}, rows, palm, s.name.c_str(), t);
     }
