@@ -89,8 +89,9 @@ int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights, dou
     // segment by at most its share of that)
     // (and one a step within `radius` cannot reach no row of that step's)
     const double share = inputs_.reach.segment_share[finger_][s];
-    const double reach = std::min(share * motion_cap_ + segment_motion(inputs_.reach, finger_, s, start_, now),
-                                  share * radius);
+    const double reach =
+        std::min(share * motion_cap_ + segment_motion(inputs_.reach, finger_, s, start_, now),
+                 share * radius);
     // dD/dq and dE/dq: D = joint s, E = joint s + 1; flexion j turns about joint j - 1
     vec3 column_d[FRUSTA_JOINTS_PER_FINGER], column_e[FRUSTA_JOINTS_PER_FINGER];
     column_d[0] = glm::cross(p.abduction_axis, p.joint[s] - p.joint[0]);
@@ -156,11 +157,12 @@ int32_t FingerStage::bound_rows(QpRow* rows) const {
   return count;
 }
 
-double finger_clearance(const HandModel& model, const HandPose& pose, const CandidateSet& candidates,
-                        int finger) {
+double finger_clearance(const HandModel& model, const HandPose& pose,
+                        const CandidateSet& candidates, int finger) {
   double gap = 0.0;
   for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s)
-    gap = std::min(gap, body_clearance(model, pose, candidates, finger * FRUSTA_SEGMENTS_PER_FINGER + s));
+    gap = std::min(
+        gap, body_clearance(model, pose, candidates, finger * FRUSTA_SEGMENTS_PER_FINGER + s));
   return gap;
 }
 
@@ -191,7 +193,8 @@ double FingerStage::try_between(double s) {
   const FingerAngles from = angles(saved_state_), to = angles(state_);
   trial_state_ = state_;
   for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j)
-    trial_state_.angles[static_cast<size_t>(finger_ * FRUSTA_JOINTS_PER_FINGER + j)] = from[j] + s * (to[j] - from[j]);
+    trial_state_.angles[static_cast<size_t>(finger_ * FRUSTA_JOINTS_PER_FINGER + j)] =
+        from[j] + s * (to[j] - from[j]);
   return trial_clearance();
 }
 
@@ -210,9 +213,11 @@ double FingerStage::step_clearance() {
   double gap = 0.0;
   const Candidate* all = inputs_.candidates.candidates.data();
   for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s) {
-    const int32_t begin = segment_rows_[static_cast<size_t>(s)], end = segment_rows_[static_cast<size_t>(s) + 1];
+    const int32_t begin = segment_rows_[static_cast<size_t>(s)],
+                  end = segment_rows_[static_cast<size_t>(s) + 1];
     if (begin == end) continue;
-    const SegmentFrame frame = make_segment_frame(finger_segment(inputs_.model, trial_pose_, finger_, s));
+    const SegmentFrame frame =
+        make_segment_frame(finger_segment(inputs_.model, trial_pose_, finger_, s));
     for (int32_t r = begin; r < end; ++r) {
       const Sphere& sphere = all[rows_[r].source].world;
       // the cheap conservative test first, as body_clearance does

@@ -23,8 +23,8 @@ double segment_motion(const HandReach& reach, int finger, int segment, const Fin
                       const FingerAngles& to);
 
 // The smallest exact gap (0 when apart) between a finger at `pose` and its candidates.
-double finger_clearance(const HandModel& model, const HandPose& pose, const CandidateSet& candidates,
-                        int finger);
+double finger_clearance(const HandModel& model, const HandPose& pose,
+                        const CandidateSet& candidates, int finger);
 
 // How a finger stage keeps within its motion cap.
 enum class FingerBound {
@@ -44,7 +44,8 @@ class FingerStage : public StageEstimate {
   // motion_cap: how far (m) any point may move from where the stage starts; start_gap:
   // clearance(pose), which the caller has measured.
   FingerStage(const StageInputs& inputs, int finger, const FingerAngles& target, double motion_cap,
-              FingerBound bound, QpHints& hints, HandState& state, HandPose& pose, double start_gap);
+              FingerBound bound, QpHints& hints, HandState& state, HandPose& pose,
+              double start_gap);
 
   int dofs() const { return FRUSTA_JOINTS_PER_FINGER; }
   double objective() const;

@@ -394,11 +394,15 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
   // may move it Delta_r, so it looks as far
   // (each body's clearance here is also where the stages start from, below)
   std::array<double, kBodyCount> gaps;
+  double deepest = 0.0;
   auto measure_gaps = [&] {
-    for (int body = 0; body < kBodyCount; ++body) gaps[body] = body_clearance(model_, pose_, candidates_, body);
+    deepest = 0.0;
+    for (int body = 0; body < kBodyCount; ++body) {
+      gaps[body] = body_clearance(model_, pose_, candidates_, body);
+      deepest = std::min(deepest, gaps[body]);
+    }
   };
   measure_gaps();
-  const double deepest = std::min(0.0, *std::min_element(gaps.begin(), gaps.end()));
   const bool recovering = deepest < -kRecoveryTolerances * params_.penetration_tolerance;
   const DetectionMargins everywhere(params_.prediction_margin);
   if (recovering && margins.body != everywhere.body) {
@@ -445,8 +449,7 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
       add(solve_within_budget(
           [&](bool slide) {
             return PalmStage(inputs, palm_to, cap, recovering ? PalmHeading{} : heading_, slide,
-                             palm_hints_, graphic_, pose_,
-                             std::min(0.0, *std::min_element(gaps.begin(), gaps.end())));
+                             palm_hints_, graphic_, pose_, deepest);
           },
           budget_binds, slid));
       ++stats.palm_solves;

@@ -85,7 +85,8 @@ int32_t PalmStage::linearise(QpRow* rows, double* target, double* weights, doubl
   const vec3& palm = pose_.palm_position;
   // a sphere further than any admissible trial can move is no row: exact, not a guess
   // (and one a step within `radius` cannot reach no row of that step's)
-  const double reach = std::min(motion_cap_ + palm_motion(inputs_.reach, start_, placement(state_)), radius);
+  const double reach =
+      std::min(motion_cap_ + palm_motion(inputs_.reach, start_, placement(state_)), radius);
   int32_t count = 0;
   for (int body = 0; body < FRUSTA_HAND_SEGMENT_COUNT; ++body) {
     if (inputs_.candidates.count(body) == 0) continue;
@@ -129,7 +130,8 @@ int32_t PalmStage::linearise(QpRow* rows, double* target, double* weights, doubl
 double PalmStage::step_motion(const double* d) const {
   // a point P carried by the palm moves by dt and turns by |dw| about it: no further
   // than |dt| + |dw| |P - palm| (try_step's rotated)
-  return glm::length(vec3(d[0], d[1], d[2])) + glm::length(vec3(d[3], d[4], d[5])) * inputs_.reach.hand;
+  return glm::length(vec3(d[0], d[1], d[2])) +
+         glm::length(vec3(d[3], d[4], d[5])) * inputs_.reach.hand;
 }
 
 int32_t PalmStage::bound_rows(QpRow* rows) const {

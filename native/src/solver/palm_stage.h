@@ -42,8 +42,8 @@ class PalmStage : public StageEstimate {
   // way it may not go back; slide: step within bound_rows (the hand held back by its
   // continuity budget); start_gap: clearance(pose), which the caller has measured
   PalmStage(const StageInputs& inputs, const PalmPlacement& target, double motion_cap,
-            const PalmHeading& heading, bool slide, QpHints& hints, HandState& state, HandPose& pose,
-            double start_gap);
+            const PalmHeading& heading, bool slide, QpHints& hints, HandState& state,
+            HandPose& pose, double start_gap);
 
   int dofs() const { return 6; }
   double objective() const;

@@ -11,7 +11,6 @@
 
 namespace frusta {
 
-
 RigidPose relative_pose(const RigidPose& a, const RigidPose& b) {
   const glm::dmat3 to_a = glm::transpose(a.rotation);
   return {to_a * (b.position - a.position), to_a * b.rotation};

@@ -119,7 +119,8 @@ TreeQueryStats walk_tree(const SphereTree& tree, Touches touches, TreeCut cut, E
   // grasp's segment 7 % faster than testing each node as it is popped)
   auto visit = [&](int32_t node, int32_t level) {
     ++stats.visited;
-    const bool stops = tree.nodes[static_cast<size_t>(node)].count != 0 && cut.stops(tree, node, level);
+    const bool stops =
+        tree.nodes[static_cast<size_t>(node)].count != 0 && cut.stops(tree, node, level);
     if (touches(walked_sphere(tree, node, stops, cut))) stack[top++] = {node, level, stops};
   };
   visit(0, 0);

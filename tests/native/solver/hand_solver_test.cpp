@@ -313,12 +313,14 @@ TEST(HandSolver, TheGraphicPoseIsTheGraphicStatesKinematicsEveryStep) {
     const HandScenario s = make_hand_scenario(name);
     HandSolver solver(default_model(), SolverParams{});
     for (int t = 0; t < s.steps; ++t) {
-      ASSERT_EQ(solver.step(s.haptic(t), s.objects.data(), static_cast<int32_t>(s.objects.size()), nullptr),
+      ASSERT_EQ(solver.step(s.haptic(t), s.objects.data(), static_cast<int32_t>(s.objects.size()),
+                            nullptr),
                 FRUSTA_OK);
       if (!solver.started()) continue;
       HandPose fresh;
       forward_kinematics(solver.model(), solver.graphic(), fresh);
-      ASSERT_EQ(bodies_unmoved(fresh, solver.graphic_pose()), (1u << kBodyCount) - 1u) << name << " step " << t;
+      ASSERT_EQ(bodies_unmoved(fresh, solver.graphic_pose()), (1u << kBodyCount) - 1u)
+          << name << " step " << t;
       ++steps;
     }
   }

@@ -57,8 +57,9 @@ void compare_radii(MakeStage make, CheckStep check_step, std::vector<QpRow>& row
     ++tally.within;
     tally.fewer += count < whole_rows;
     for (int j = 0; j < kMaxQpVariables; ++j)
-      ASSERT_NEAR(d[j], whole[j], 1e-9) << what << " at step " << step << ", radius " << share
-                                        << " of the step, " << count << " of " << whole_rows << " rows";
+      ASSERT_NEAR(d[j], whole[j], 1e-9)
+          << what << " at step " << step << ", radius " << share << " of the step, " << count
+          << " of " << whole_rows << " rows";
     check_step(stage, d);
   }
 }
@@ -76,8 +77,8 @@ void check_scenario(const scenes::HandScenario& s, Tally& fingers, Tally& palm, 
     ASSERT_EQ(solver.step(s.haptic(t), s.objects.data(), object_count, nullptr), FRUSTA_OK);
     const HandState target = s.haptic(t + 1);
     detect_candidates(model, reach, solver.graphic_pose(), s.objects.data(), object_count,
-                      DetectionMargins(params.prediction_margin), TreeCut(params.tree_level, params.lod_error),
-                      candidates);
+                      DetectionMargins(params.prediction_margin),
+                      TreeCut(params.tree_level, params.lod_error), candidates);
     const StageInputs inputs{model, reach, params, candidates};
     // what a stage updates in place, as the solver left it for each solve
     HandState state;
@@ -105,7 +106,8 @@ void check_scenario(const scenes::HandScenario& s, Tally& fingers, Tally& palm, 
           }
           HandPose trial_pose;
           forward_kinematics(model, trial, trial_pose);
-          ASSERT_EQ(gap, stage.clearance(trial_pose)) << s.name << " at step " << t << ", finger " << f;
+          ASSERT_EQ(gap, stage.clearance(trial_pose))
+              << s.name << " at step " << t << ", finger " << f;
           ++trials;
           touching += gap < 0.0;
         }
@@ -129,8 +131,8 @@ void check_scenario(const scenes::HandScenario& s, Tally& fingers, Tally& palm, 
             double start_gap = 0.0;
             for (int body = 0; body < kBodyCount; ++body)
               start_gap = std::min(start_gap, body_clearance(model, pose, candidates, body));
-            return PalmStage(inputs, to, 0.5 * params.prediction_margin, PalmHeading{}, slide, hints,
-                             state, pose, start_gap);
+            return PalmStage(inputs, to, 0.5 * params.prediction_margin, PalmHeading{}, slide,
+                             hints, state, pose, start_gap);
           },
           [](PalmStage&, const double*) {}, rows, palm, s.name.c_str(), t);
     }
@@ -142,7 +144,8 @@ TEST(StageRows, AStepWithinItsRadiusIsTheStepEveryRowMakes) {
   int trials = 0, touching = 0;
   for (const std::string& name : scenes::hand_scenario_names())
     check_scenario(scenes::make_hand_scenario(name), fingers, palm, trials, touching);
-  check_scenario(scenes::ball_grasp(scenes::ball_shell(3000, 0.04)), fingers, palm, trials, touching);
+  check_scenario(scenes::ball_grasp(scenes::ball_shell(3000, 0.04)), fingers, palm, trials,
+                 touching);
   // the comparisons that test something: rows left out, and a step the same without them
   EXPECT_GT(fingers.fewer, 1000) << fingers.within << " finger steps within their radius";
   EXPECT_GT(palm.fewer, 100) << palm.within << " palm steps within their radius";
