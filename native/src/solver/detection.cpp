@@ -158,23 +158,9 @@ uint32_t bodies_unmoved(const HandPose& then, const HandPose& now) {
 
 double body_clearance(const HandModel& model, const HandPose& pose, const CandidateSet& candidates,
                       int body) {
-  double gap = 0.0;
-  const Candidate* c = candidates.of(body);
-  if (body == kPalmBody) {
-    for (int32_t i = 0; i < candidates.count(body); ++i) {
-      const Sphere hand = palm_sphere(model, pose, c[i].part);
-      gap = std::min(gap, glm::length(hand.center - c[i].world.center) - hand.radius -
-                              c[i].world.radius);
-    }
-    return gap;
-  }
-  if (candidates.count(body) == 0) return gap;
-  const SegmentFrame frame = make_segment_frame(finger_segment(
-      model, pose, body / FRUSTA_SEGMENTS_PER_FINGER, body % FRUSTA_SEGMENTS_PER_FINGER));
-  for (int32_t i = 0; i < candidates.count(body); ++i)
-    // the cheap conservative test first: only a sphere that may touch can sink in
-    if (may_touch(frame, c[i].world, 0.0)) gap = std::min(gap, exact_distance(frame, c[i].world));
-  return gap;
+  const int32_t first = candidates.begin[body];
+  return body_clearance_over(model, pose, candidates, body, candidates.count(body),
+                             [first](int32_t k) { return first + k; });
 }
 
 double bound_clearance(const HandReach& reach, const HandPose& pose, const SolverObject* objects,

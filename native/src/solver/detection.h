@@ -7,6 +7,11 @@
 #include <cstdint>
 #include <vector>
 
+#include <glm/geometric.hpp>
+
+#include "geometry/contact_test.h"
+#include "geometry/exact_distance.h"
+#include "geometry/segment_frame.h"
 #include "geometry/types.h"
 #include "hand/kinematics.h"
 #include "spheretree/sphere_tree.h"
@@ -124,6 +129,32 @@ void detect_candidates(const HandModel& model, const HandReach& reach, const Han
 // step is checked against.
 double body_clearance(const HandModel& model, const HandPose& pose, const CandidateSet& candidates,
                       int body);
+
+// The same over `count` of the body's candidates, the k-th candidates.candidates[index(k)]:
+// those a step can reach (a stage's rows), when the others cannot touch.
+template <class Index>
+double body_clearance_over(const HandModel& model, const HandPose& pose,
+                           const CandidateSet& candidates, int body, int32_t count, Index index) {
+  double gap = 0.0;
+  if (count == 0) return gap;
+  const Candidate* all = candidates.candidates.data();
+  if (body == kPalmBody) {
+    for (int32_t k = 0; k < count; ++k) {
+      const Candidate& c = all[index(k)];
+      const Sphere hand = palm_sphere(model, pose, c.part);
+      gap = std::min(gap, glm::length(hand.center - c.world.center) - hand.radius - c.world.radius);
+    }
+    return gap;
+  }
+  const SegmentFrame frame = make_segment_frame(finger_segment(
+      model, pose, body / FRUSTA_SEGMENTS_PER_FINGER, body % FRUSTA_SEGMENTS_PER_FINGER));
+  for (int32_t k = 0; k < count; ++k) {
+    const Sphere& sphere = all[index(k)].world;
+    // the cheap conservative test first: only a sphere that may touch can sink in
+    if (may_touch(frame, sphere, 0.0)) gap = std::min(gap, exact_distance(frame, sphere));
+  }
+  return gap;
+}
 
 // The smallest gap between the hand's bound and any object's bound (infinite with no
 // objects): the hand can move that far without meeting anything. With `only` (null:

@@ -211,18 +211,12 @@ double FingerStage::step_clearance() {
   trial_pose_ = pose_;
   finger_kinematics(inputs_.model, trial_state_, finger_, trial_pose_);
   double gap = 0.0;
-  const Candidate* all = inputs_.candidates.candidates.data();
   for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s) {
-    const int32_t begin = segment_rows_[static_cast<size_t>(s)],
-                  end = segment_rows_[static_cast<size_t>(s) + 1];
-    if (begin == end) continue;
-    const SegmentFrame frame =
-        make_segment_frame(finger_segment(inputs_.model, trial_pose_, finger_, s));
-    for (int32_t r = begin; r < end; ++r) {
-      const Sphere& sphere = all[rows_[r].source].world;
-      // the cheap conservative test first, as body_clearance does
-      if (may_touch(frame, sphere, 0.0)) gap = std::min(gap, exact_distance(frame, sphere));
-    }
+    const int32_t begin = segment_rows_[static_cast<size_t>(s)];
+    gap = std::min(gap, body_clearance_over(inputs_.model, trial_pose_, inputs_.candidates,
+                                            finger_ * FRUSTA_SEGMENTS_PER_FINGER + s,
+                                            segment_rows_[static_cast<size_t>(s) + 1] - begin,
+                                            [&](int32_t k) { return rows_[begin + k].source; }));
   }
   return gap;
 }
