@@ -243,7 +243,7 @@ frusta_result HandSolver::step(const HandState& haptic, const SolverObject* obje
       break;
     }
     bool moved = false;
-    const bool reached = substep(target, objects, object_count, last, stats, budget, moved);
+    const bool reached = substep(target, objects, object_count, sub == 0, last, stats, budget, moved);
     ++stats.substeps;
     if (timed) {
       const Clock::time_point now = Clock::now();
@@ -324,8 +324,8 @@ bool HandSolver::overlaps(const SolverObject& object) {
 }
 
 bool HandSolver::substep(const HandState& target, const SolverObject* objects,
-                         int32_t object_count, bool last, StepStats& stats, double& budget,
-                         bool& moved) {
+                         int32_t object_count, bool first, bool last, StepStats& stats,
+                         double& budget, bool& moved) {
   const HandState start = graphic_;
   const PalmPlacement palm_from = placement(graphic_);
   const double whole_move = hand_motion(reach_, graphic_, target);
@@ -382,11 +382,25 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
   uint32_t reusable = detected_ ? bodies_unmoved(detected_pose_, pose_) : 0u;
   for (int body = 0; body < kBodyCount; ++body)
     if (detected_margins_.body[body] != margins.body[body]) reusable &= ~(1u << body);
+  // A finger that settled in an earlier sub-step of this step, on a palm that will not
+  // move in this one, is not solved again (below): its candidates serve only to find
+  // whether it starts inside something and, in the last sub-step, its contacts. Those it
+  // detected where that sub-step began hold every sphere within their margin less its
+  // move since, which is at least the contact distance (margins cover a body's move):
+  // kept, with no margin to be kept again by, since they were looked for elsewhere.
+  uint32_t kept = 0;
+  if (!first && detected_ && !(palm_motion(reach_, palm_from, placement(target)) > 0.0))
+    for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f)
+      if (settled_[f])
+        for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s) kept |= 1u << (f * FRUSTA_SEGMENTS_PER_FINGER + s);
+  reusable |= kept;
   const DetectionReuse reuse{reusable != 0 ? &last_candidates_ : nullptr, reusable};
   detect_candidates(model_, reach_, pose_, objects, object_count, margins, cut, candidates_, only,
                     only_count, reuse);
   detected_pose_ = pose_;
   detected_margins_ = margins;
+  for (int body = 0; body < kBodyCount; ++body)
+    if ((kept >> body) & 1u) detected_margins_.body[body] = NAN;
   detected_ = true;
 
   // A hand that starts the sub-step inside an object (the host moved the object into

@@ -111,9 +111,10 @@ class HandSolver {
  private:
   // One sub-step, moving no point further than `budget` (metres, less what it moved);
   // true when every part reached its own target (or stopped against objects) without
-  // hitting a motion cap. The step's `last` one slides where it is cut short.
+  // hitting a motion cap. The step's `last` one slides where it is cut short; one after
+  // its `first` does not detect again for a finger that will not move in it.
   bool substep(const HandState& target, const SolverObject* objects, int32_t object_count,
-               bool last, StepStats& stats, double& budget, bool& moved);
+               bool first, bool last, StepStats& stats, double& budget, bool& moved);
   // A stage built by make(slide) solved on the graphic hand; where `budget_binds` and the
   // stage was cut short, solved again sliding from where it started (slid is set).
   template <class MakeStage>

@@ -9,18 +9,22 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
 
 #include "core/error.h"
 #include "core/validate.h"
+#include "geometry/exact_distance.h"
+#include "geometry/segment_frame.h"
 #include "hand/anthropometry.h"
 #include "hand/hand_model.h"
 #include "solver/depenetration.h"
@@ -325,6 +329,54 @@ TEST(HandSolver, TheGraphicPoseIsTheGraphicStatesKinematicsEveryStep) {
     }
   }
   EXPECT_GT(steps, 1000);
+}
+
+// The contacts a step reports are every pair within the contact distance of the hand
+// where it ended, as a fresh detection there finds them: whatever the sub-steps kept of
+// what they detected (a finger that settled in an earlier sub-step is not looked for
+// again) must hold them all.
+TEST(HandSolver, TheContactsAStepReportsAreEveryPairWithinTheContactDistance) {
+  const HandModel model = default_model();
+  const HandReach reach = hand_reach(model);
+  const SolverParams params;
+  CandidateSet fresh;
+  int contacts = 0;
+  auto scenarios = scenes::hand_scenario_names();
+  for (const std::string& name : scenarios) {
+    const HandScenario s = make_hand_scenario(name);
+    HandSolver solver(model, params);
+    const auto count = static_cast<int32_t>(s.objects.size());
+    for (int t = 0; t < s.steps; ++t) {
+      ASSERT_EQ(solver.step(s.haptic(t), s.objects.data(), count, nullptr), FRUSTA_OK);
+      if (!solver.started()) continue;
+      detect_candidates(model, reach, solver.graphic_pose(), s.objects.data(), count,
+                        DetectionMargins(params.contact_distance), TreeCut(), fresh);
+      std::vector<std::array<int32_t, 4>> expected, reported;
+      for (int body = 0; body < kBodyCount; ++body) {
+        const Candidate* c = fresh.of(body);
+        for (int32_t i = 0; i < fresh.count(body); ++i) {
+          double gap;
+          if (body == kPalmBody) {
+            const Sphere hand = palm_sphere(model, solver.graphic_pose(), c[i].part);
+            gap = glm::length(hand.center - c[i].world.center) - hand.radius - c[i].world.radius;
+          } else {
+            const SegmentFrame frame = make_segment_frame(finger_segment(
+                model, solver.graphic_pose(), body / FRUSTA_SEGMENTS_PER_FINGER,
+                body % FRUSTA_SEGMENTS_PER_FINGER));
+            gap = exact_proximity(frame, c[i].world).distance;
+          }
+          if (gap <= params.contact_distance) expected.push_back({body, c[i].object, c[i].leaf, c[i].part});
+        }
+      }
+      for (const SolverContact& c : solver.contacts())
+        reported.push_back({c.body, c.object, c.leaf, c.part});
+      std::sort(expected.begin(), expected.end());
+      std::sort(reported.begin(), reported.end());
+      ASSERT_EQ(reported, expected) << name << " step " << t;
+      contacts += static_cast<int>(reported.size());
+    }
+  }
+  EXPECT_GT(contacts, 10000);
 }
 
 // An object the host moves into a still hand (a kinematic object, faster than Delta_r a
