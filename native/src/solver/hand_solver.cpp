@@ -327,7 +327,8 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
                          int32_t object_count, bool first, bool last, StepStats& stats,
                          double& budget, bool& moved) {
   const HandState start = graphic_;
-  const PalmPlacement palm_from = placement(graphic_);
+  const PalmPlacement palm_from = placement(graphic_), palm_to = placement(target);
+  const double palm_move = palm_motion(reach_, palm_from, palm_to);
   const double whole_move = hand_motion(reach_, graphic_, target);
 
   // the objects a broad phase finds within reach of the whole move: every one that the
@@ -369,7 +370,7 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
   // the palm up to its part of the allowance if it moves at all, a finger segment that
   // and its share of the rest (the stages below keep to these)
   const double allowance = std::min(params_.prediction_margin, budget);
-  const double palm_part = palm_motion(reach_, palm_from, placement(target)) > 0.0
+  const double palm_part = palm_move > 0.0
                                ? std::min(0.5 * params_.prediction_margin, allowance)
                                : 0.0;
   DetectionMargins margins;
@@ -389,7 +390,7 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
   // move since, which is at least the contact distance (margins cover a body's move):
   // kept, with no margin to be kept again by, since they were looked for elsewhere.
   uint32_t kept = 0;
-  if (!first && detected_ && !(palm_motion(reach_, palm_from, placement(target)) > 0.0))
+  if (!first && detected_ && !(palm_move > 0.0))
     for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f)
       if (settled_[f])
         for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s) kept |= 1u << (f * FRUSTA_SEGMENTS_PER_FINGER + s);
@@ -442,14 +443,12 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
   const double allowed =
       recovering ? params_.prediction_margin : std::min(params_.prediction_margin, budget);
   const double cap = std::min(0.5 * params_.prediction_margin, allowed);
-  const PalmPlacement palm_to = placement(target);
   // this sub-step is the step's last whole one: a stage cut short now stays short
   const bool budget_binds = !recovering && (last || budget < params_.prediction_margin);
   bool slid = false;
 
   // A part with candidates solves towards its full target and its stage stops at the
   // motion bound; a part with none moves straight, cut at the bound.
-  const double palm_move = palm_motion(reach_, palm_from, palm_to);
   if (palm_move > 0.0 || recovering) {
     if (candidates_.candidates.empty()) {
       const double s = std::min(1.0, cap / palm_move);

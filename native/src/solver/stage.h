@@ -187,8 +187,9 @@ StageStats solve_stage(Problem& problem, const SolverParams& params, std::vector
     if (!(gap >= working_floor)) break;  // the current estimate is as far as it goes
     problem.commit();
     ++stats.iterations;
-    radius = kRowRadius * s * problem.step_motion(d);
-    if (it == 0) problem.hints().first_step = s * problem.step_motion(d);
+    const double stepped = s * problem.step_motion(d);
+    radius = kRowRadius * stepped;
+    if (it == 0) problem.hints().first_step = stepped;
     safe = gap >= problem.floor();
     if (safe) problem.save();
     if (!(largest * s > params.convergence)) break;
