@@ -139,7 +139,9 @@ HandReach hand_reach(const HandModel& model) {
 }
 
 Sphere object_bound(const SolverObject& object) {
-  const Sphere local = object.tree->node_sphere(0);
+  const SphereTree& tree = *object.tree;
+  Sphere local = tree.node_sphere(0);
+  if (!tree.node_overhang.empty()) local.radius += static_cast<double>(tree.node_overhang[0]);
   return {object.pose.rotation * local.center + object.pose.position, local.radius};
 }
 

@@ -244,5 +244,47 @@ TEST(SolverDetection, NoPointOfASegmentMovesFurtherThanItsLeversBound) {
   }
 }
 
+// Under a cut, the nodes standing in for their leaves may stick out of the root's sphere
+// (node_overhang): an object's bound includes that, or a palm sphere just outside the
+// root's sphere missed the node it touches (found by the cached detection, which looked
+// further, while a fresh one did not).
+TEST(SolverDetection, ACutNodeStickingOutOfTheRootsSphereIsFound) {
+  const HandModel model = make_hand_model(default_hand_def());
+  const HandReach reach = hand_reach(model);
+  const std::shared_ptr<const TreeFile> ball = scenes::ball_shell(4000, 0.04);
+  const SphereTree& tree = ball->tree;
+  const TreeCut cut(2);
+  // the level-2 node sticking out furthest, and the palm's first sphere half that far
+  // outside the root's sphere, towards it
+  const Sphere root = tree.node_sphere(0);
+  double out = 0.0;
+  vec3 toward(1.0, 0.0, 0.0);
+  for (int32_t a = 0; a < tree.nodes[0].count; ++a)
+    for (int32_t c = 0; c < tree.nodes[static_cast<size_t>(tree.nodes[0].first + a)].count; ++c) {
+      const int32_t node = tree.nodes[static_cast<size_t>(tree.nodes[0].first + a)].first + c;
+      const Sphere s = tree.node_sphere(node);
+      const double beyond = glm::length(s.center - root.center) + s.radius - root.radius;
+      if (beyond > out) {
+        out = beyond;
+        toward = glm::normalize(s.center - root.center);
+      }
+    }
+  ASSERT_GT(out, 1e-4) << "the cut's nodes stick out of the root's sphere";
+  HandState state = scenes::open_hand();
+  const Sphere& palm = model.palm_spheres[0];
+  state.palm_position = root.center + toward * (root.radius + palm.radius + 0.5 * out) - palm.center;
+  HandPose pose;
+  forward_kinematics(model, state, pose);
+  const SolverObject object{&tree, {}};
+  CandidateSet set;
+  detect_candidates(model, reach, pose, &object, 1, 0.0, cut, set);
+  std::vector<TreeHit> hits(4096);
+  const TreeQueryStats walked = query_sphere(tree, palm_sphere(model, pose, 0), 0.0, cut, hits.data(), 4096);
+  ASSERT_GT(walked.hits, 0);
+  int32_t found = 0;
+  for (int32_t i = 0; i < set.count(kPalmBody); ++i) found += set.of(kPalmBody)[i].part == 0 ? 1 : 0;
+  EXPECT_EQ(found, walked.hits);
+}
+
 }  // namespace
 }  // namespace frusta
