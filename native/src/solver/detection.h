@@ -97,12 +97,10 @@ struct DetectionMargins {
   double largest() const { return *std::max_element(body.begin(), body.end()); }
 };
 
-// What a detection may copy from an earlier one instead of walking the trees again:
-// the candidates of `bodies` (bit b: body b) in `last`, which was detected with the
-// same objects, margin and cut, and with those bodies where they are now (a walk would
-// find the same spheres in the same order); or, for a body the caller will not move
-// and only asks what touches it, with a margin that covers its move since (the same
-// spheres within the contact distance, among more).
+// What a detection copies from an earlier one instead of walking the trees again: the
+// candidates of `bodies` (bit b: body b) in `last`, made with the same objects, which
+// hold what the caller needs of those bodies now (CandidateCache keeps, with each body's
+// walk, where it looked from and how far).
 struct DetectionReuse {
   const CandidateSet* last = nullptr;
   uint32_t bodies = 0;

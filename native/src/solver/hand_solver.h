@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "solver/broad_phase.h"
+#include "solver/candidate_cache.h"
 #include "solver/depenetration.h"
 #include "solver/detection.h"
 #include "solver/palm_stage.h"
@@ -112,7 +113,7 @@ class HandSolver {
   // One sub-step, moving no point further than `budget` (metres, less what it moved);
   // true when every part reached its own target (or stopped against objects) without
   // hitting a motion cap. The step's `last` one slides where it is cut short; one after
-  // its `first` does not detect again for a finger that will not move in it.
+  // its `first` looks only the contact distance from a finger that will not move in it.
   bool substep(const HandState& target, const SolverObject* objects, int32_t object_count,
                bool first, bool last, StepStats& stats, double& budget, bool& moved);
   // A stage built by make(slide) solved on the graphic hand; where `budget_binds` and the
@@ -142,12 +143,8 @@ class HandSolver {
   Clock::duration overrun_{0};
   PalmHeading heading_;        // this step's: the graphic palm does not go back against it
   CandidateSet candidates_;
-  // the last detection, made at detected_pose_ (false once candidates_ served as scratch):
-  // a sub-step copies the candidates of the bodies that have not moved since, while the
-  // objects have not (within a step, or across steps with objects_as_before)
-  CandidateSet last_candidates_;
-  HandPose detected_pose_;
-  DetectionMargins detected_margins_;  // how far it looked (detection_margin)
+  CandidateCache cache_;  // the trees' walks, kept while the objects are as before
+  // candidates_ holds this pose's detection (false once it served as scratch)
   bool detected_ = false;
   // the last step ended where it began (within kStandstill), neither lagging nor held
   // back by its bound: the same inputs would leave the hand there again

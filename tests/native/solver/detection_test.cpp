@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
-// Contact prediction walks each tree once for many probes (issue 21), and copies the
-// candidates of the bodies that did not move since the last detection: its candidates
-// must be those of one walk per finger segment and per palm sphere, in that order, bit
-// for bit, since the solver's answer depends on their order.
+// Contact prediction walks each tree once for many probes (issue 21), copies the
+// candidates of the bodies that did not move since the last detection, and takes those of
+// bodies that moved less than its room from a wider walk before: its candidates must be
+// those of one walk per finger segment and per palm sphere, in that order, bit for bit,
+// since the solver's answer depends on their order.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -18,6 +19,7 @@
 #include "hand/hand_model.h"
 #include "hand/kinematics.h"
 #include "scenes/hand_scenarios.h"
+#include "solver/candidate_cache.h"
 #include "solver/detection.h"
 
 namespace frusta {
@@ -284,6 +286,68 @@ TEST(SolverDetection, ACutNodeStickingOutOfTheRootsSphereIsFound) {
   int32_t found = 0;
   for (int32_t i = 0; i < set.count(kPalmBody); ++i) found += set.of(kPalmBody)[i].part == 0 ? 1 : 0;
   EXPECT_EQ(found, walked.hits);
+}
+
+// A hand wandering about a ball, a box and a plate, each step a random move of every
+// joint and the palm (some within the cache's room, some beyond, some none), asking
+// each body for a random margin (some the contact distance of a body that stays): the
+// cache answers what a fresh detection finds, in its order, whether it walked or not.
+TEST(SolverDetection, ACachedDetectionFindsWhatAFreshOneFinds) {
+  const HandModel model = make_hand_model(default_hand_def());
+  const HandReach reach = hand_reach(model);
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<double> unit(0.0, 1.0), offset(-0.04, 0.04);
+  const std::shared_ptr<const TreeFile> ball = scenes::ball_shell(4000, 0.04);
+  const std::shared_ptr<const TreeFile> box = scenes::sample_tree("box"), plate = scenes::sample_tree("plate");
+  const TreeCut cuts[] = {TreeCut(), TreeCut(2), TreeCut(-1, 0.0005)};
+  constexpr double kRoom = 0.0005;
+  CandidateSet cached, fresh;
+  int64_t calls = 0, from_cache = 0, walked = 0, candidates = 0;
+  for (int run = 0; run < 24; ++run) {
+    HandState state = scenes::open_hand();
+    const double closed = unit(rng);
+    for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) scenes::set_flexion(state, f, 1.6 * closed, 1.6 * closed, 1.6 * closed);
+    state.palm_rotation = glm::quat_cast(random_rotation(rng));
+    HandPose pose;
+    forward_kinematics(model, state, pose);
+    std::vector<SolverObject> objects;
+    for (const auto& tree : {ball, box, plate}) {
+      const Sphere local = tree->tree.node_sphere(0);
+      const glm::dmat3 rotation = random_rotation(rng);
+      const vec3 at = pose.fingers[static_cast<int>(unit(rng) * 5) % 5].joint[3];
+      const vec3 toward = glm::normalize(vec3(offset(rng), offset(rng), offset(rng)) + vec3(1e-9));
+      objects.push_back({&tree->tree, {at - rotation * local.center + toward * local.radius * unit(rng), rotation}});
+    }
+    const TreeCut cut = cuts[run % 3];
+    CandidateCache cache;
+    for (int step = 0; step < 40; ++step) {
+      // no move, a few microns, a tenth of a millimetre, or a millimetre
+      const double size = std::array<double, 4>{0.0, 2e-4, 2e-3, 2e-2}[static_cast<size_t>(unit(rng) * 4) % 4];
+      for (double& a : state.angles) a += size * (2.0 * unit(rng) - 1.0);
+      clamp_to_limits(model, state);
+      if (unit(rng) < 0.5) {
+        state.palm_position += 0.05 * size * vec3(offset(rng), offset(rng), offset(rng));
+        state.palm_rotation = glm::normalize(
+            state.palm_rotation * glm::dquat(1.0, size * offset(rng), size * offset(rng), size * offset(rng)));
+      }
+      forward_kinematics(model, state, pose);
+      DetectionMargins needs;
+      for (double& need : needs.body) need = unit(rng) < 0.2 ? 1e-4 : 0.002 * unit(rng);
+      cache.detect(model, reach, pose, objects.data(), static_cast<int32_t>(objects.size()), needs, kRoom, cut,
+                   cached);
+      detect_candidates(model, reach, pose, objects.data(), static_cast<int32_t>(objects.size()), needs, cut, fresh);
+      const std::string what = "run " + std::to_string(run) + ", step " + std::to_string(step);
+      expect_same(fresh.candidates, fresh.begin, cached, what);
+      if (testing::Test::HasFatalFailure()) return;
+      ++calls;
+      (cached.tree_nodes_visited == 0 ? from_cache : walked) += 1;
+      candidates += static_cast<int64_t>(cached.candidates.size());
+    }
+  }
+  // the moves both keep to the room and leave it, near many spheres
+  EXPECT_GT(from_cache, calls / 8);
+  EXPECT_GT(walked, calls / 5);
+  EXPECT_GT(candidates, 50 * calls);
 }
 
 }  // namespace
