@@ -14,20 +14,6 @@
 
 namespace frusta {
 
-double segment_motion(const HandReach& reach, int finger, int segment, const FingerAngles& from,
-                      const FingerAngles& to) {
-  double motion = 0.0;
-  for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j)
-    motion += std::fabs(to[j] - from[j]) * reach.segment_lever[finger][segment][j];
-  return motion;
-}
-
-double finger_motion(const HandReach& reach, int finger, const FingerAngles& from,
-                     const FingerAngles& to) {
-  // the fingertip's segment moves furthest: its levers are the finger's
-  return segment_motion(reach, finger, FRUSTA_SEGMENTS_PER_FINGER - 1, from, to);
-}
-
 FingerStage::FingerStage(const StageInputs& inputs, int finger, const FingerAngles& target,
                          double motion_cap, FingerBound bound, QpHints& hints, HandState& state,
                          HandPose& pose, double start_gap)
@@ -41,6 +27,8 @@ FingerStage::FingerStage(const StageInputs& inputs, int finger, const FingerAngl
   // never worse than the start, which a rounding or a curvature may have left a hair deep
   assert(start_gap == clearance(pose));
   floor_ = std::min(-inputs.params.penetration_tolerance, start_gap);
+  for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s)
+    if (inputs.candidates.count(finger * FRUSTA_SEGMENTS_PER_FINGER + s) > 0) near_ |= 1u << s;
 }
 
 FingerAngles FingerStage::angles(const HandState& state) const {
@@ -64,7 +52,6 @@ int32_t FingerStage::row_capacity() const {
 int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights, double radius) {
   const FingerAngles now = angles(state_);
   const FingerModel& finger = inputs_.model.fingers[finger_];
-  const FingerPose& p = pose_.fingers[finger_];
   int32_t count = 0;
   for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j) {
     target[j] = target_[j] - now[j];
@@ -79,6 +66,8 @@ int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights, dou
     rows[count++].b = now[j] - finger.joint_max[j];
   }
   rows_ = rows;
+  linearised_ = now;
+  finger_jacobian(pose_.fingers[finger_], near_, jacobian_);
   for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s) {
     const int body = finger_ * FRUSTA_SEGMENTS_PER_FINGER + s;
     segment_rows_[static_cast<size_t>(s)] = count;
@@ -90,17 +79,10 @@ int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights, dou
     // (and one a step within `radius` cannot reach no row of that step's)
     const double share = inputs_.reach.segment_share[finger_][s];
     const double reach =
-        std::min(share * motion_cap_ + segment_motion(inputs_.reach, finger_, s, start_, now),
+        std::min(share * motion_cap_ + segment_lever_motion(inputs_.reach, finger_, s, start_, now),
                  share * radius);
-    // dD/dq and dE/dq: D = joint s, E = joint s + 1; flexion j turns about joint j - 1
-    vec3 column_d[FRUSTA_JOINTS_PER_FINGER], column_e[FRUSTA_JOINTS_PER_FINGER];
-    column_d[0] = glm::cross(p.abduction_axis, p.joint[s] - p.joint[0]);
-    column_e[0] = glm::cross(p.abduction_axis, p.joint[s + 1] - p.joint[0]);
-    for (int j = 1; j < FRUSTA_JOINTS_PER_FINGER; ++j) {
-      const bool moves = j - 1 <= s;
-      column_d[j] = moves ? glm::cross(p.flexion_axis, p.joint[s] - p.joint[j - 1]) : vec3(0.0);
-      column_e[j] = moves ? glm::cross(p.flexion_axis, p.joint[s + 1] - p.joint[j - 1]) : vec3(0.0);
-    }
+    const auto& column_d = jacobian_.proximal[s];  // dD/dq, D = joint s
+    const auto& column_e = jacobian_.distal[s];    // dE/dq, E = joint s + 1
     const Candidate* c = inputs_.candidates.of(body);
     for (int32_t i = 0; i < inputs_.candidates.count(body); ++i) {
       if (!may_touch(frame, c[i].world, reach)) continue;
@@ -120,10 +102,14 @@ int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights, dou
 }
 
 double FingerStage::step_motion(const double* d) const {
-  double motion = 0.0;
+  // from where the rows were made, within the joints' limits as try_step takes it: a
+  // joint held at its limit no longer turns against the others, as the pose's bound counts
+  const FingerModel& finger = inputs_.model.fingers[finger_];
+  FingerAngles turn;
   for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j)
-    motion += std::fabs(d[j]) * inputs_.reach.lever[finger_][j];
-  return motion;
+    turn[j] = std::clamp(linearised_[j] + d[j], finger.joint_min[j], finger.joint_max[j]) -
+              linearised_[j];
+  return finger_motion(inputs_.model, inputs_.reach, jacobian_, finger_, turn, near_);
 }
 
 double FingerStage::row_bound_now() const {
@@ -131,7 +117,7 @@ double FingerStage::row_bound_now() const {
   if (bound_ == FingerBound::kTrust) return (1.0 - 1e-9) * motion_cap_;
   // sliding: half the cap's rest, the rest left for the next linearisations to press
   // back onto a surface this one stepped off
-  const double moved = finger_motion(inputs_.reach, finger_, start_, angles(state_));
+  const double moved = finger_lever_motion(inputs_.reach, finger_, start_, angles(state_));
   return moved + 0.5 * std::max(0.0, motion_cap_ - moved);
 }
 
@@ -175,7 +161,7 @@ double FingerStage::try_step(const double* d, double s) {
   FingerAngles next = angles(state_);
   for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j)
     next[j] = std::clamp(next[j] + s * d[j], finger.joint_min[j], finger.joint_max[j]);
-  const double motion = finger_motion(inputs_.reach, finger_, start_, next);
+  const double motion = finger_lever_motion(inputs_.reach, finger_, start_, next);
   if (motion > motion_cap_) {
     capped_ = true;
     return -INFINITY;

@@ -7,20 +7,12 @@
 #include <array>
 
 #include "solver/detection.h"
+#include "solver/finger_motion.h"
 #include "solver/qp.h"
 #include "solver/solver_params.h"
 #include "solver/stage.h"
 
 namespace frusta {
-
-using FingerAngles = std::array<double, FRUSTA_JOINTS_PER_FINGER>;
-
-// Motion bound of a finger's change of angles: no point of it moves further.
-double finger_motion(const HandReach& reach, int finger, const FingerAngles& from,
-                     const FingerAngles& to);
-// ... of one of its segments: no point of that segment moves further.
-double segment_motion(const HandReach& reach, int finger, int segment, const FingerAngles& from,
-                      const FingerAngles& to);
 
 // The smallest exact gap (0 when apart) between a finger at `pose` and its candidates.
 double finger_clearance(const HandModel& model, const HandPose& pose,
@@ -51,6 +43,8 @@ class FingerStage : public StageEstimate {
   double objective() const;
   int32_t row_capacity() const;
   int32_t linearise(QpRow* rows, double* target, double* weights, double radius);
+  // the pose's motion bound (finger_motion) of the step d from the last linearisation,
+  // over the segments with candidates
   double step_motion(const double* d) const;
   double try_step(const double* d, double s);
   double try_between(double s);
@@ -76,6 +70,11 @@ class FingerStage : public StageEstimate {
   // the last linearisation's rows (valid until the next) and where each segment's
   // contact rows begin in them
   const QpRow* rows_ = nullptr;
+  // the segments with candidates (bit s: segment s): the others have no rows, touch
+  // nothing, and their motion bounds nothing
+  uint32_t near_ = 0;
+  FingerAngles linearised_{};  // where the last linearisation was made
+  FingerJacobian jacobian_;    // ... and the first-order motion there of the segments near
   std::array<int32_t, FRUSTA_SEGMENTS_PER_FINGER + 1> segment_rows_{};
 };
 

@@ -45,7 +45,8 @@ void set_finger_angles(HandState& state, int finger, const FingerAngles& a) {
 double hand_motion(const HandReach& reach, const HandState& a, const HandState& b) {
   double finger = 0.0;
   for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f)
-    finger = std::max(finger, finger_motion(reach, f, finger_angles(a, f), finger_angles(b, f)));
+    finger =
+        std::max(finger, finger_lever_motion(reach, f, finger_angles(a, f), finger_angles(b, f)));
   return palm_motion(reach, placement(a), placement(b)) + finger;
 }
 
@@ -53,7 +54,7 @@ double hand_motion(const HandReach& reach, const HandState& a, const HandState& 
 double total_motion(const HandReach& reach, const HandState& a, const HandState& b) {
   double motion = palm_motion(reach, placement(a), placement(b));
   for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f)
-    motion += finger_motion(reach, f, finger_angles(a, f), finger_angles(b, f));
+    motion += finger_lever_motion(reach, f, finger_angles(a, f), finger_angles(b, f));
   return motion;
 }
 
@@ -467,7 +468,7 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
   for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
     if (settled_[f] && !palm_moved) continue;
     const FingerAngles from = finger_angles(graphic_, f), to = finger_angles(target, f);
-    const double move = finger_motion(reach_, f, from, to);
+    const double move = finger_lever_motion(reach_, f, from, to);
     settled_[f] = true;
     if (!(move > 0.0) && !recovering) continue;
     if (candidates_.finger_count(f) == 0) {  // nothing near: the haptic angles as they are

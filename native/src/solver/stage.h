@@ -94,7 +94,8 @@ inline double row_bound(const SolverParams& params, double value, double reach) 
 //     target and weights for the step d from the current estimate: the rows of every
 //     sphere that a step moving the hand no further than `radius` (step_motion) may reach,
 //     and at least those of every sphere an admissible trial may reach when it is infinite;
-//   double step_motion(const double* d): no point of the hand moves further in the step d;
+//   double step_motion(const double* d): no point of the part near its candidates moves
+//     further in the step d from where linearise was made (the unit of `radius`);
 //   double try_step(const double* d, double s): the smallest gap at current + s d, or
 //     -infinity when that moves the hand further than the stage allows;
 //   double try_between(double s): the same for the trial a fraction s of the way from
@@ -169,11 +170,14 @@ StageStats solve_stage(Problem& problem, const SolverParams& params, std::vector
     }
     double d[kMaxQpVariables] = {};
     QpResult qp = solve_within(radius, d);
+    double motion = problem.step_motion(d);
     // An optimum within the radius is the one every row makes: the rows left out are
     // of spheres further than it moves the hand, met there, and the QP is convex. One
     // beyond it, or none, is made again with every row.
-    if (radius < INFINITY && (qp.status != QpStatus::kOptimal || problem.step_motion(d) > radius))
+    if (radius < INFINITY && (qp.status != QpStatus::kOptimal || motion > radius)) {
       qp = solve_within(INFINITY, d);
+      motion = problem.step_motion(d);
+    }
     stats.infeasible |= qp.status == QpStatus::kInfeasible;
     double largest = 0.0;
     for (int j = 0; j < n; ++j) largest = std::max(largest, std::fabs(d[j]));
@@ -187,7 +191,7 @@ StageStats solve_stage(Problem& problem, const SolverParams& params, std::vector
     if (!(gap >= working_floor)) break;  // the current estimate is as far as it goes
     problem.commit();
     ++stats.iterations;
-    const double stepped = s * problem.step_motion(d);
+    const double stepped = s * motion;
     radius = kRowRadius * stepped;
     if (it == 0) problem.hints().first_step = stepped;
     safe = gap >= problem.floor();

@@ -491,7 +491,7 @@ TEST(HandSolver, AHandCreepingLessThanANanometreAStepRests) {
       FingerAngles from, to;
       std::copy_n(a.angles.begin() + f * FRUSTA_JOINTS_PER_FINGER, from.size(), from.begin());
       std::copy_n(b.angles.begin() + f * FRUSTA_JOINTS_PER_FINGER, to.size(), to.begin());
-      m += finger_motion(reach, f, from, to);
+      m += finger_lever_motion(reach, f, from, to);
     }
     return m;
   };
