@@ -75,4 +75,53 @@ double finger_motion(const HandModel& model, const HandReach& reach, const Finge
   return motion;
 }
 
+namespace {
+
+constexpr uint32_t kEverySegment = (1u << FRUSTA_SEGMENTS_PER_FINGER) - 1u;
+
+// what within_cap cuts a move to, the pose's bound worked out by `posed` where needed
+template <class Posed>
+double cap_share(const HandReach& reach, int finger, const FingerAngles& from,
+                 const FingerAngles& to, const FingerCap& cap, Posed posed) {
+  const double levers = finger_lever_motion(reach, finger, from, to);
+  double share = levers > cap.levers ? cap.levers / levers : 1.0;
+  // the pose's bound is no more than the levers': it cuts the move shorter only where the
+  // levers' would by its cap
+  if (levers * share > cap.pose) {
+    const double motion = posed();
+    if (motion > cap.pose) share = std::min(share, cap.pose / motion);
+  }
+  return share;
+}
+
+FingerAngles turn_between(const FingerAngles& from, const FingerAngles& to) {
+  FingerAngles turn;
+  for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j) turn[j] = to[j] - from[j];
+  return turn;
+}
+
+}  // namespace
+
+double finger_motion(const HandModel& model, const HandReach& reach, const FingerPose& pose,
+                     int finger, const FingerAngles& from, const FingerAngles& to) {
+  FingerJacobian jacobian;
+  finger_jacobian(pose, kEverySegment, jacobian);
+  return finger_motion(model, reach, jacobian, finger, turn_between(from, to), kEverySegment);
+}
+
+double within_cap(const HandModel& model, const HandReach& reach, const FingerPose& pose,
+                  int finger, const FingerAngles& from, const FingerAngles& to,
+                  const FingerCap& cap) {
+  return cap_share(reach, finger, from, to, cap,
+                   [&] { return finger_motion(model, reach, pose, finger, from, to); });
+}
+
+double within_cap(const HandModel& model, const HandReach& reach, const FingerJacobian& jacobian,
+                  int finger, const FingerAngles& from, const FingerAngles& to,
+                  const FingerCap& cap) {
+  return cap_share(reach, finger, from, to, cap, [&] {
+    return finger_motion(model, reach, jacobian, finger, turn_between(from, to), kEverySegment);
+  });
+}
+
 }  // namespace frusta

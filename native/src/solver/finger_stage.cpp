@@ -15,20 +15,36 @@
 namespace frusta {
 
 FingerStage::FingerStage(const StageInputs& inputs, int finger, const FingerAngles& target,
-                         double motion_cap, FingerBound bound, QpHints& hints, HandState& state,
+                         const FingerCap& cap, FingerBound bound, QpHints& hints, HandState& state,
                          HandPose& pose, double start_gap)
     : StageEstimate(state, pose, hints),
       inputs_(inputs),
       finger_(finger),
       target_(target),
       start_(angles(state)),
-      motion_cap_(motion_cap),
+      cap_(cap),
+      row_cap_(std::min(cap.levers, cap.pose)),
       bound_(bound) {
   // never worse than the start, which a rounding or a curvature may have left a hair deep
   assert(start_gap == clearance(pose));
   floor_ = std::min(-inputs.params.penetration_tolerance, start_gap);
   for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s)
     if (inputs.candidates.count(finger * FRUSTA_SEGMENTS_PER_FINGER + s) > 0) near_ |= 1u << s;
+  if (cap.levers > cap.pose) {
+    finger_jacobian(pose.fingers[finger], (1u << FRUSTA_SEGMENTS_PER_FINGER) - 1u, start_jacobian_);
+    // Rows bound the levers' motion (linear in the step); the pose's bound lets a finger
+    // further, by as much as the levers' bound exceeds it on a step of the cap's size
+    // towards the target (a step elsewhere that goes past the cap is refused, and halved)
+    const double levers = finger_lever_motion(inputs.reach, finger, start_, target);
+    if (levers > cap.pose) {
+      FingerAngles turn;
+      for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j)
+        turn[j] = (cap.pose / levers) * (target[j] - start_[j]);
+      const double posed = finger_motion(inputs.model, inputs.reach, start_jacobian_, finger, turn,
+                                         (1u << FRUSTA_SEGMENTS_PER_FINGER) - 1u);
+      if (posed > 0.0) row_cap_ = std::min(cap.levers, cap.pose * cap.pose / posed);
+    }
+  }
 }
 
 FingerAngles FingerStage::angles(const HandState& state) const {
@@ -78,9 +94,9 @@ int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights, dou
     // segment by at most its share of that)
     // (and one a step within `radius` cannot reach no row of that step's)
     const double share = inputs_.reach.segment_share[finger_][s];
-    const double reach =
-        std::min(share * motion_cap_ + segment_lever_motion(inputs_.reach, finger_, s, start_, now),
-                 share * radius);
+    const double reach = std::min(share * std::min(cap_.levers, cap_.pose) +
+                                      segment_lever_motion(inputs_.reach, finger_, s, start_, now),
+                                  share * radius);
     const auto& column_d = jacobian_.proximal[s];  // dD/dq, D = joint s
     const auto& column_e = jacobian_.distal[s];    // dE/dq, E = joint s + 1
     const Candidate* c = inputs_.candidates.of(body);
@@ -114,11 +130,11 @@ double FingerStage::step_motion(const double* d) const {
 
 double FingerStage::row_bound_now() const {
   // trusting: the cap itself, a hair inside so that rounding cannot refuse the step
-  if (bound_ == FingerBound::kTrust) return (1.0 - 1e-9) * motion_cap_;
+  if (bound_ == FingerBound::kTrust) return (1.0 - 1e-9) * row_cap_;
   // sliding: half the cap's rest, the rest left for the next linearisations to press
   // back onto a surface this one stepped off
   const double moved = finger_lever_motion(inputs_.reach, finger_, start_, angles(state_));
-  return moved + 0.5 * std::max(0.0, motion_cap_ - moved);
+  return moved + 0.5 * std::max(0.0, row_cap_ - moved);
 }
 
 int32_t FingerStage::bound_rows(QpRow* rows) const {
@@ -161,26 +177,36 @@ double FingerStage::try_step(const double* d, double s) {
   FingerAngles next = angles(state_);
   for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j)
     next[j] = std::clamp(next[j] + s * d[j], finger.joint_min[j], finger.joint_max[j]);
-  const double motion = finger_lever_motion(inputs_.reach, finger_, start_, next);
-  if (motion > motion_cap_) {
+  if (beyond_cap(next)) {
     capped_ = true;
     return -INFINITY;
   }
   // a step the rows stopped at the cap: the stage did not reach its target
-  if (bound_ == FingerBound::kTrust && motion >= (1.0 - 1e-6) * motion_cap_) capped_ = true;
+  if (bound_ == FingerBound::kTrust &&
+      finger_lever_motion(inputs_.reach, finger_, start_, next) >= (1.0 - 1e-6) * row_cap_)
+    capped_ = true;
   trial_state_ = state_;
   std::copy(next.begin(), next.end(), trial_state_.angles.begin() + finger_ * FRUSTA_JOINTS_PER_FINGER);
   return step_clearance();
+}
+
+bool FingerStage::beyond_cap(const FingerAngles& next) const {
+  // (the pose's bound is needed, and start_jacobian_ made, only where cap_.levers > cap_.pose)
+  return within_cap(inputs_.model, inputs_.reach, start_jacobian_, finger_, start_, next, cap_) <
+         1.0;
 }
 
 double FingerStage::try_between(double s) {
   // this finger's angles alone: a blend of the whole hand turns the palm by a rounding
   // (a slerp between equal rotations), which this finger's pose would not follow
   const FingerAngles from = angles(saved_state_), to = angles(state_);
+  FingerAngles blend;
+  for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j) blend[j] = from[j] + s * (to[j] - from[j]);
+  // both ends keep to the cap, but the pose's bound is not convex: a blend may not
+  if (beyond_cap(blend)) return -INFINITY;
   trial_state_ = state_;
-  for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j)
-    trial_state_.angles[static_cast<size_t>(finger_ * FRUSTA_JOINTS_PER_FINGER + j)] =
-        from[j] + s * (to[j] - from[j]);
+  std::copy(blend.begin(), blend.end(),
+            trial_state_.angles.begin() + finger_ * FRUSTA_JOINTS_PER_FINGER);
   return trial_clearance();
 }
 

@@ -33,11 +33,11 @@ enum class FingerBound {
 class FingerStage : public StageEstimate {
  public:
   // state/pose: the graphic hand, updated in place; target: this stage's goal angles;
-  // motion_cap: how far (m) any point may move from where the stage starts; start_gap:
+  // cap: how far (m) any point may move from where the stage starts; start_gap:
   // clearance(pose), which the caller has measured.
-  FingerStage(const StageInputs& inputs, int finger, const FingerAngles& target, double motion_cap,
-              FingerBound bound, QpHints& hints, HandState& state, HandPose& pose,
-              double start_gap);
+  FingerStage(const StageInputs& inputs, int finger, const FingerAngles& target,
+              const FingerCap& cap, FingerBound bound, QpHints& hints, HandState& state,
+              HandPose& pose, double start_gap);
 
   int dofs() const { return FRUSTA_JOINTS_PER_FINGER; }
   double objective() const;
@@ -59,13 +59,20 @@ class FingerStage : public StageEstimate {
   // rows name every candidate such a trial can reach
   double step_clearance();
   double row_bound_now() const;  // what bound_rows keeps the move from the start within
+  bool beyond_cap(const FingerAngles& next) const;  // further from the start than the cap
   FingerAngles angles(const HandState& state) const;
 
   const StageInputs inputs_;
   int finger_;
   FingerAngles target_;
   FingerAngles start_;
-  double motion_cap_;
+  FingerCap cap_;
+  // what bound_rows keeps the levers' motion within: the cap, by the pose's bound as far
+  // as the levers' goes along the move to the target
+  double row_cap_;
+  // the finger's first-order motion where the stage starts, for its cap's pose bound:
+  // made where that can bind (the budget allows more than Delta_r)
+  FingerJacobian start_jacobian_;
   FingerBound bound_;
   // the last linearisation's rows (valid until the next) and where each segment's
   // contact rows begin in them

@@ -463,7 +463,10 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
   // earlier sub-step on a palm that has not moved since would solve the same problem
   // again, so it is skipped
   const double palm_moved_by = palm_motion(reach_, palm_from, placement(graphic_));
-  const double finger_cap = allowed - palm_moved_by;
+  // by the levers, the budget (none when recovering); by the pose, Delta_r: the margins
+  // above hold a segment's move under either
+  const FingerCap finger_cap{(recovering ? INFINITY : budget) - palm_moved_by,
+                             params_.prediction_margin - palm_moved_by};
   const bool palm_moved = palm_moved_by > 0.0;
   for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
     if (settled_[f] && !palm_moved) continue;
@@ -471,11 +474,12 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
     const double move = finger_lever_motion(reach_, f, from, to);
     settled_[f] = true;
     if (!(move > 0.0) && !recovering) continue;
+    const double share = within_cap(model_, reach_, pose_.fingers[f], f, from, to, finger_cap);
     if (candidates_.finger_count(f) == 0) {  // nothing near: the haptic angles as they are
       FingerAngles goal = to;
-      if (move > finger_cap) {
+      if (share < 1.0) {
         for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j)
-          goal[j] = from[j] + (finger_cap / move) * (to[j] - from[j]);
+          goal[j] = from[j] + share * (to[j] - from[j]);
         reached = false;
         settled_[f] = false;
       }
@@ -484,7 +488,7 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
       continue;
     }
     // a target beyond the cap: the best step the cap allows (FingerBound::kTrust)
-    const FingerBound bound = move > finger_cap ? FingerBound::kTrust : FingerBound::kHalve;
+    const FingerBound bound = share < 1.0 ? FingerBound::kTrust : FingerBound::kHalve;
     // where the palm has not moved, the finger is where the sub-step began
     double start_gap = 0.0;
     if (palm_moved)

@@ -515,6 +515,48 @@ TEST(HandSolver, AHandCreepingLessThanANanometreAStepRests) {
   EXPECT_TRUE(solver.contacts().size() > 0);
 }
 
+// A sub-step moves no finger point further than Delta_r, by the finger's pose's motion
+// bound (what the sub-step's detection covers), though its levers' bound may go further
+// where the budget allows: a closing grasp's fingers reach in one sub-step what the
+// levers' bound split over two. Checked on every step that took one sub-step with the
+// palm still, in the grasp with a generous budget and every scenario.
+TEST(HandSolver, ASubStepMovesNoFingerFurtherThanDeltaRByItsPose) {
+  const HandModel model = default_model();
+  const HandReach reach = hand_reach(model);
+  SolverParams generous;
+  generous.follow_factor = 4.0;
+  int32_t checked = 0, past_levers = 0;
+  auto run = [&](const HandScenario& s, const SolverParams& params, const std::string& name) {
+    HandSolver solver(model, params);
+    for (int t = 0; t < s.steps; ++t) {
+      const HandState before = solver.graphic();
+      const HandPose posed = solver.graphic_pose();
+      const bool started = solver.started();
+      StepStats stats;
+      ASSERT_EQ(solver.step(s.haptic(t), s.objects.data(), static_cast<int32_t>(s.objects.size()), &stats),
+                FRUSTA_OK);
+      const HandState& after = solver.graphic();
+      if (!started || stats.substeps != 1 || before.palm_position != after.palm_position ||
+          before.palm_rotation != after.palm_rotation)
+        continue;
+      for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
+        FingerAngles from, to;
+        std::copy_n(before.angles.begin() + f * FRUSTA_JOINTS_PER_FINGER, from.size(), from.begin());
+        std::copy_n(after.angles.begin() + f * FRUSTA_JOINTS_PER_FINGER, to.size(), to.begin());
+        ASSERT_LE(finger_motion(model, reach, posed.fingers[f], f, from, to),
+                  params.prediction_margin * (1.0 + 1e-9))
+            << name << " step " << t << " finger " << f;
+        past_levers += finger_lever_motion(reach, f, from, to) > params.prediction_margin ? 1 : 0;
+        ++checked;
+      }
+    }
+  };
+  run(scenes::ball_grasp(scenes::ball_shell(2000, 0.04)), generous, "grasp");
+  for (const std::string& name : scenes::hand_scenario_names()) run(make_hand_scenario(name), SolverParams{}, name);
+  EXPECT_GT(checked, 5000);
+  EXPECT_GT(past_levers, 20) << "the levers' bound went past Delta_r in one sub-step";
+}
+
 // A grasp of a coarse ball (100 leaves of ~8 mm) held still comes to rest. Before, the
 // little fingertip slid a few microns a step towards its target (each step further:
 // the fixed point there is unstable) until its budget cut a step short, and that

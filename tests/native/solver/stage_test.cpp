@@ -116,7 +116,7 @@ void check_scenario(const scenes::HandScenario& s, Tally& fingers, Tally& palm, 
         compare_radii(
             [&] {
               reset();
-              return FingerStage(inputs, f, to, params.prediction_margin, bound, hints, state, pose,
+              return FingerStage(inputs, f, to, {params.prediction_margin, params.prediction_margin}, bound, hints, state, pose,
                                  finger_clearance(model, pose, candidates, f));
             },
             trials_see_every_candidate, rows, fingers, s.name.c_str(), t);
