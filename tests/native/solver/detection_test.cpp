@@ -101,6 +101,16 @@ glm::dmat3 random_rotation(std::mt19937_64& rng) {
   return glm::mat3_cast(glm::normalize(glm::dquat{gauss(rng), gauss(rng), gauss(rng), gauss(rng)}));
 }
 
+// A hand closed by a random amount and turned at random, and its pose.
+void random_hand(const HandModel& model, std::mt19937_64& rng, HandState& state, HandPose& pose) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  state = scenes::open_hand();
+  const double closed = unit(rng);
+  for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) scenes::set_flexion(state, f, 1.6 * closed, 1.6 * closed, 1.6 * closed);
+  state.palm_rotation = glm::quat_cast(random_rotation(rng));
+  forward_kinematics(model, state, pose);
+}
+
 // Hands closed by random amounts and moved about a ball, a box and a plate turned at
 // random, so that fingers and palm cross them at every depth; leaves and both cuts.
 void check_random_hands(const HandModel& model, int32_t draws, uint64_t seed) {
@@ -114,12 +124,9 @@ void check_random_hands(const HandModel& model, int32_t draws, uint64_t seed) {
   std::vector<TreeHit> hits(1 << 16);
   int64_t finger_candidates = 0, palm_candidates = 0;
   for (int32_t draw = 0; draw < draws; ++draw) {
-    HandState state = scenes::open_hand();
-    const double closed = unit(rng);
-    for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) scenes::set_flexion(state, f, 1.6 * closed, 1.6 * closed, 1.6 * closed);
-    state.palm_rotation = glm::quat_cast(random_rotation(rng));
+    HandState state;
     HandPose pose;
-    forward_kinematics(model, state, pose);
+    random_hand(model, rng, state, pose);
     // each object near a random point of the hand: a fingertip, a knuckle or the palm
     std::vector<SolverObject> objects;
     for (const auto& tree : {ball, box, plate}) {
@@ -322,12 +329,9 @@ TEST(SolverDetection, ACachedDetectionFindsWhatAFreshOneFinds) {
   CandidateSet cached, fresh;
   int64_t calls = 0, from_cache = 0, walked = 0, candidates = 0;
   for (int run = 0; run < 24; ++run) {
-    HandState state = scenes::open_hand();
-    const double closed = unit(rng);
-    for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) scenes::set_flexion(state, f, 1.6 * closed, 1.6 * closed, 1.6 * closed);
-    state.palm_rotation = glm::quat_cast(random_rotation(rng));
+    HandState state;
     HandPose pose;
-    forward_kinematics(model, state, pose);
+    random_hand(model, rng, state, pose);
     std::vector<SolverObject> objects;
     for (const auto& tree : {ball, box, plate}) {
       const Sphere local = tree->tree.node_sphere(0);
