@@ -2,6 +2,7 @@
 #include "solver/candidate_cache.h"
 
 #include <algorithm>
+
 #include <glm/geometric.hpp>
 
 #include "geometry/contact_test.h"

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+
 #include <glm/geometric.hpp>
 
 namespace frusta {
