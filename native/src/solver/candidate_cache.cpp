@@ -47,8 +47,7 @@ void CandidateCache::detect(const HandModel& model, const HandReach& reach, cons
       move = segment_move(segments_[body], segments[body]);
     }
     // a sphere within the need now was within need + move where the walk looked from
-    if (((valid_ >> body) & 1u) != 0 && needs.body[body] + move <= margins_.body[body])
-      held |= 1u << body;
+    if (valid_ && needs.body[body] + move <= margins_.body[body]) held |= 1u << body;
   }
   const uint32_t all = (1u << kBodyCount) - 1u;
   out.tree_nodes_visited = 0;
@@ -57,7 +56,7 @@ void CandidateCache::detect(const HandModel& model, const HandReach& reach, cons
     for (int body = 0; body < kBodyCount; ++body)
       wide.body[body] = ((held >> body) & 1u) != 0 ? margins_.body[body] : needs.body[body] + room;
     detect_candidates(model, reach, pose, objects, object_count, wide, cut, spare_, only,
-                      only_count, {valid_ != 0 ? &wide_ : nullptr, held});
+                      only_count, {valid_ ? &wide_ : nullptr, held});
     std::swap(wide_, spare_);
     out.tree_nodes_visited = wide_.tree_nodes_visited;
     for (int body = 0; body < kBodyCount; ++body) {
@@ -70,7 +69,7 @@ void CandidateCache::detect(const HandModel& model, const HandReach& reach, cons
       }
     }
     margins_ = wide;
-    valid_ = all;
+    valid_ = true;
   }
 
   // each body's cached spheres within its need, in their walk's order

@@ -28,7 +28,7 @@ class CandidateCache {
               double room, TreeCut cut, CandidateSet& out, const int32_t* only = nullptr,
               int32_t only_count = 0);
   // The objects moved or changed: nothing cached holds.
-  void clear() { valid_ = 0; }
+  void clear() { valid_ = false; }
 
  private:
   CandidateSet wide_, spare_;
@@ -38,7 +38,7 @@ class CandidateCache {
   vec3 palm_position_{0.0};
   glm::dmat3 palm_rotation_{1.0};
   DetectionMargins margins_;
-  uint32_t valid_ = 0;  // bit b: body b's walk is cached
+  bool valid_ = false;  // a walk of every body is cached (the first call makes one)
 };
 
 }  // namespace frusta

@@ -78,8 +78,6 @@ double finger_motion(const HandModel& model, const HandReach& reach, const Finge
 
 namespace {
 
-constexpr uint32_t kEverySegment = (1u << FRUSTA_SEGMENTS_PER_FINGER) - 1u;
-
 // what within_cap cuts a move to, the pose's bound worked out by `posed` where needed
 template <class Posed>
 double cap_share(const HandReach& reach, int finger, const FingerAngles& from,

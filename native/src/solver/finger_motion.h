@@ -24,6 +24,9 @@ double finger_lever_motion(const HandReach& reach, int finger, const FingerAngle
 double segment_lever_motion(const HandReach& reach, int finger, int segment,
                             const FingerAngles& from, const FingerAngles& to);
 
+// Every segment of a finger, as a mask (bit s: segment s).
+constexpr uint32_t kEverySegment = (1u << FRUSTA_SEGMENTS_PER_FINGER) - 1u;
+
 // A finger's first-order motion at a pose: the velocity of each segment's two joint
 // centres per unit turn of each joint (dD/dq and dE/dq; a joint beyond the segment: 0),
 // made for the segments in a mask (bit s: segment s; the others are left as they were).

@@ -31,7 +31,7 @@ FingerStage::FingerStage(const StageInputs& inputs, int finger, const FingerAngl
   for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s)
     if (inputs.candidates.count(finger * FRUSTA_SEGMENTS_PER_FINGER + s) > 0) near_ |= 1u << s;
   if (cap.levers > cap.pose) {
-    finger_jacobian(pose.fingers[finger], (1u << FRUSTA_SEGMENTS_PER_FINGER) - 1u, start_jacobian_);
+    finger_jacobian(pose.fingers[finger], kEverySegment, start_jacobian_);
     // Rows bound the levers' motion (linear in the step); the pose's bound lets a finger
     // further, by as much as the levers' bound exceeds it on a step of the cap's size
     // towards the target (a step elsewhere that goes past the cap is refused, and halved)
@@ -40,8 +40,8 @@ FingerStage::FingerStage(const StageInputs& inputs, int finger, const FingerAngl
       FingerAngles turn;
       for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j)
         turn[j] = (cap.pose / levers) * (target[j] - start_[j]);
-      const double posed = finger_motion(inputs.model, inputs.reach, start_jacobian_, finger, turn,
-                                         (1u << FRUSTA_SEGMENTS_PER_FINGER) - 1u);
+      const double posed =
+          finger_motion(inputs.model, inputs.reach, start_jacobian_, finger, turn, kEverySegment);
       if (posed > 0.0) row_cap_ = std::min(cap.levers, cap.pose * cap.pose / posed);
     }
   }

@@ -226,7 +226,7 @@ TEST(SolverDetection, NoPointOfASegmentMovesFurtherThanItsBounds) {
       double tip_bound = 0.0;
       for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j) tip_bound += std::fabs(b[j] - a[j]) * reach.lever[f][j];
       FingerJacobian jacobian;
-      finger_jacobian(path[0].fingers[f], (1u << FRUSTA_SEGMENTS_PER_FINGER) - 1u, jacobian);
+      finger_jacobian(path[0].fingers[f], kEverySegment, jacobian);
       FingerAngles delta;
       for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j) delta[j] = b[j] - a[j];
       for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s) {
