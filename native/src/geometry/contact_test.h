@@ -57,4 +57,60 @@ inline bool may_touch(const SegmentFrame& frame, const Sphere& sphere, double ma
 // True when two spheres may lie within `margin` metres of each other.
 bool may_touch_sphere(const Sphere& a, const Sphere& b, double margin);
 
+namespace contact_detail {
+// what a least gap gives up to rounding, relative to the sizes it is made of: ten times
+// may_touch's slack, so that the one never contradicts the other
+constexpr double kLeastGapSlack = 10.0 * kRelativeSlack;
+}  // namespace contact_detail
+
+// The least margin at which may_touch(frame, sphere, margin) can hold, less a rounding
+// allowance: a floor of the exact gap (negative inside; may_touch holds only where it is
+// <= margin). Kept with a candidate, it lets a pass skip with one comparison the spheres
+// its body has not moved near enough to since (a solid that moved m is within m of where
+// it was). Branch for branch may_touch's tests, each solved for its reach.
+inline double least_gap(const SegmentFrame& frame, const Sphere& sphere) {
+  const vec3 w = sphere.center - frame.distal;
+  const double allowance =
+      contact_detail::kLeastGapSlack *
+      (std::fabs(frame.distal.x) + std::fabs(frame.distal.y) + std::fabs(frame.distal.z) + std::fabs(w.x) +
+       std::fabs(w.y) + std::fabs(w.z) + frame.length + frame.r_distal + frame.r_proximal + sphere.radius);
+  // the end balls: |c - E| <= reach + r2, |c - D| <= reach + r1
+  double reach = std::min(glm::length(w) - frame.r_distal,
+                          glm::length(sphere.center - frame.proximal) - frame.r_proximal);
+  if (!frame.degenerate) {
+    // the side: |radial| <= reach / cos(alpha) + r2 + axial slope, with the touching
+    // point in the band, -axial <= reach sin(alpha) <= length - axial, for a reach of
+    // at least the sphere's radius (no margin is negative)
+    const double axial = glm::dot(w, frame.axis);
+    const vec3 radial = w - axial * frame.axis;
+    double low = (glm::length(radial) - frame.r_distal - axial * frame.slope) * frame.cos_alpha;
+    double high = INFINITY;
+    if (frame.sin_alpha > 0.0) {
+      low = std::max(low, -axial / frame.sin_alpha);
+      high = (frame.length - axial) / frame.sin_alpha;
+    } else if (frame.sin_alpha < 0.0) {
+      low = std::max(low, (frame.length - axial) / frame.sin_alpha);
+      high = -axial / frame.sin_alpha;
+    } else if (axial < 0.0 || axial > frame.length) {
+      low = INFINITY;
+    }
+    if (low <= high + allowance && high >= sphere.radius - allowance) reach = std::min(reach, low);
+  }
+  return reach - sphere.radius - allowance;
+}
+
+// The same for two spheres and may_touch_sphere.
+inline double least_gap_sphere(const Sphere& a, const Sphere& b) {
+  const double apart = glm::length(a.center - b.center);
+  const double allowance = contact_detail::kLeastGapSlack * (std::fabs(a.center.x) + std::fabs(a.center.y) +
+                                                             std::fabs(a.center.z) + apart + a.radius + b.radius);
+  return apart - a.radius - b.radius - allowance;
+}
+
+// Whether a sphere whose least gap to a body was `gap` may lie within `margin` of it
+// now that it moved no further than `move` (the comparison's own rounding allowed for).
+inline bool may_be_within(double gap, double move, double margin) {
+  return gap - move <= margin * (1.0 + contact_detail::kLeastGapSlack);
+}
+
 }  // namespace frusta

@@ -31,12 +31,8 @@ class CandidateCache {
   void clear() { valid_ = false; }
 
  private:
+  // each body's last walk (where it looked from: its placed) and how far it looked
   CandidateSet wide_, spare_;
-  // where each finger segment and the palm were when their candidates were walked, and
-  // how far that walk looked
-  std::array<Segment, FRUSTA_HAND_SEGMENT_COUNT> segments_{};
-  vec3 palm_position_{0.0};
-  glm::dmat3 palm_rotation_{1.0};
   DetectionMargins margins_;
   bool valid_ = false;  // a walk of every body is cached (the first call makes one)
 };

@@ -32,7 +32,7 @@ int32_t query_into(std::vector<TreeHit>& hits, Query query) {
 // Deal the hits of the walks for palm spheres [first, first + run) out to the spheres
 // that reach them, sphere by sphere, keeping their order (object, then node): the order
 // of one walk per sphere.
-void deal_out(const SolverObject* objects, int32_t first, int run, CandidateSet& out) {
+void deal_out(const SolverObject* objects, const Sphere* palm, int32_t first, int run, CandidateSet& out) {
   int32_t count[kMaxProbes] = {};
   for (const MaskedHit& h : out.masked_hits)
     for (uint64_t rest = h.probes; rest != 0; rest &= rest - 1) ++count[lowest_bit(rest)];
@@ -49,7 +49,8 @@ void deal_out(const SolverObject* objects, int32_t first, int run, CandidateSet&
     const Sphere world{pose.rotation * h.local.center + pose.position, h.local.radius};
     for (uint64_t rest = h.probes; rest != 0; rest &= rest - 1) {
       const int k = lowest_bit(rest);
-      out.candidates[static_cast<size_t>(next[k]++)] = {h.object, h.hit.leaf, first + k, world};
+      out.candidates[static_cast<size_t>(next[k]++)] = {h.object, h.hit.leaf, first + k, world,
+                                                        least_gap_sphere(palm[k], world)};
     }
   }
 }
@@ -97,15 +98,41 @@ void detect_palm(const HandModel& model, const HandReach& reach, const HandPose&
         });
       out.tree_nodes_visited += stats.visited;
     }
-    deal_out(objects, first, run, out);
+    deal_out(objects, world, first, run, out);
   }
 }
 
 void copy_body(const CandidateSet& from, int body, CandidateSet& out) {
   out.candidates.insert(out.candidates.end(), from.of(body), from.of(body) + from.count(body));
+  if (body == kPalmBody) {
+    out.placed.palm_position = from.placed.palm_position;
+    out.placed.palm_rotation = from.placed.palm_rotation;
+  } else {
+    out.placed.segments[static_cast<size_t>(body)] = from.placed.segments[static_cast<size_t>(body)];
+  }
 }
 
 }  // namespace
+
+double segment_move(const Segment& then, const Segment& now) {
+  return std::max(glm::length(now.proximal - then.proximal), glm::length(now.distal - then.distal));
+}
+
+double palm_move(const HandModel& model, const vec3& position, const glm::dmat3& rotation,
+                 const HandPose& now) {
+  const vec3 shift = now.palm_position - position;
+  const glm::dmat3 turn = now.palm_rotation - rotation;
+  double move = 0.0;
+  for (const Sphere& s : model.palm_spheres) move = std::max(move, glm::length(shift + turn * s.center));
+  return move;
+}
+
+SegmentView segment_view(const HandModel& model, const HandPose& pose, const CandidateSet& set,
+                         int body) {
+  const Segment now =
+      finger_segment(model, pose, body / FRUSTA_SEGMENTS_PER_FINGER, body % FRUSTA_SEGMENTS_PER_FINGER);
+  return {make_segment_frame(now), segment_move(set.placed.segments[static_cast<size_t>(body)], now)};
+}
 
 HandReach hand_reach(const HandModel& model) {
   HandReach reach;
@@ -195,15 +222,15 @@ void detect_candidates(const HandModel& model, const HandReach& reach, const Han
       out.near_objects.push_back(o);
   }
 
-  auto add_hits = [&](int32_t object, int32_t count, int32_t part) {
+  auto add_hits = [&](int32_t object, int32_t count, const SegmentFrame& body) {
     const SolverObject& obj = objects[object];
     for (int32_t h = 0; h < count; ++h) {
       const TreeHit& hit = out.hits[static_cast<size_t>(h)];
       // an inner node cut off by the level stands in for every leaf below it
       const Sphere local = hit.leaf >= 0 ? obj.tree->leaves[static_cast<size_t>(hit.leaf)]
                                          : obj.tree->node_sphere(hit.node);
-      out.candidates.push_back({object, hit.leaf, part,
-                                {obj.pose.rotation * local.center + obj.pose.position, local.radius}});
+      const Sphere world{obj.pose.rotation * local.center + obj.pose.position, local.radius};
+      out.candidates.push_back({object, hit.leaf, 0, world, least_gap(body, world)});
     }
   };
 
@@ -217,25 +244,30 @@ void detect_candidates(const HandModel& model, const HandReach& reach, const Han
         copy_body(*reuse.last, body, out);
         continue;
       }
+      const Segment segment = finger_segment(model, pose, f, s);
+      out.placed.segments[static_cast<size_t>(body)] = segment;
+      const SegmentFrame world = make_segment_frame(segment);
       for (int32_t o : out.near_objects) {
         const SolverObject& obj = objects[o];
         if (!bounds_meet(finger_bound, object_bound(obj), margin)) continue;
-        const SegmentFrame frame =
-            make_segment_frame(to_object_frame(obj.pose, finger_segment(model, pose, f, s)));
+        const SegmentFrame frame = make_segment_frame(to_object_frame(obj.pose, segment));
         const int32_t count = query_into(out.hits, [&](TreeHit* hits, int32_t capacity) {
           const TreeQueryStats stats = query_segment(*obj.tree, frame, margin, cut, hits, capacity);
           out.tree_nodes_visited += stats.visited;
           return stats;
         });
-        add_hits(o, count, 0);
+        add_hits(o, count, world);
       }
     }
   }
   out.begin[kPalmBody] = static_cast<int32_t>(out.candidates.size());
-  if (reuse.has(kPalmBody))
+  if (reuse.has(kPalmBody)) {
     copy_body(*reuse.last, kPalmBody, out);
-  else
+  } else {
+    out.placed.palm_position = pose.palm_position;
+    out.placed.palm_rotation = pose.palm_rotation;
     detect_palm(model, reach, pose, objects, margins.body[kPalmBody], cut, out);
+  }
   out.begin[kBodyCount] = static_cast<int32_t>(out.candidates.size());
 }
 

@@ -4,10 +4,13 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
 #include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
 
 #include "geometry/contact_test.h"
 #include "geometry/exact_distance.h"
@@ -33,6 +36,17 @@ struct Candidate {
   int32_t leaf = 0;  // -1: an inner node standing in for its leaves (a level cut)
   int32_t part = 0;  // the palm sphere's index on the palm body, else 0
   Sphere world;      // the leaf in world coordinates
+  // a floor of its exact gap to its body (its palm sphere) where the set placed the body
+  // (CandidateSet::placed; least_gap): a pass over a body's candidates rules most out
+  // with one comparison (SegmentView)
+  double least_gap = -INFINITY;
+};
+
+// Where a candidate set's bodies stood when their candidates' least gaps were measured.
+struct BodyPlacements {
+  std::array<Segment, FRUSTA_HAND_SEGMENT_COUNT> segments{};
+  vec3 palm_position{0.0};
+  glm::dmat3 palm_rotation{1.0};
 };
 
 // A node one walk for many probes reached (walk_tree_masked), with the probes that reach
@@ -48,6 +62,7 @@ struct MaskedHit {
 struct CandidateSet {
   std::vector<Candidate> candidates;
   int32_t begin[kBodyCount + 1] = {};
+  BodyPlacements placed;
   int32_t tree_nodes_visited = 0;
   // scratch kept between calls
   std::vector<TreeHit> hits;
@@ -64,6 +79,28 @@ struct CandidateSet {
     return begin[(finger + 1) * FRUSTA_SEGMENTS_PER_FINGER] - begin[finger * FRUSTA_SEGMENTS_PER_FINGER];
   }
 };
+
+// The most any point of a segment solid moved between two placements: the solid is the
+// union of balls centred along its axis with radii interpolated along it, each of which
+// moves as the same interpolation of its ends' moves.
+double segment_move(const Segment& then, const Segment& now);
+
+// ... of the palm's spheres, from a placement to `now`.
+double palm_move(const HandModel& model, const vec3& position, const glm::dmat3& rotation,
+                 const HandPose& now);
+
+// A finger segment at a pose, for a pass over its candidates: its frame, and how far it
+// moved from where the set measured their least gaps.
+struct SegmentView {
+  SegmentFrame frame;
+  double moved = 0.0;
+  // may_touch, after one comparison that rules out most spheres not within the margin
+  bool may_touch(const Candidate& c, double margin) const {
+    return may_be_within(c.least_gap, moved, margin) && frusta::may_touch(frame, c.world, margin);
+  }
+};
+SegmentView segment_view(const HandModel& model, const HandPose& pose, const CandidateSet& set,
+                         int body);
 
 // Bounds of a hand model that do not depend on its pose.
 struct HandReach {
@@ -146,12 +183,11 @@ double body_clearance_over(const HandModel& model, const HandPose& pose,
     }
     return gap;
   }
-  const SegmentFrame frame = make_segment_frame(finger_segment(
-      model, pose, body / FRUSTA_SEGMENTS_PER_FINGER, body % FRUSTA_SEGMENTS_PER_FINGER));
+  const SegmentView view = segment_view(model, pose, candidates, body);
   for (int32_t k = 0; k < count; ++k) {
-    const Sphere& sphere = all[index(k)].world;
+    const Candidate& c = all[index(k)];
     // the cheap conservative test first: only a sphere that may touch can sink in
-    if (may_touch(frame, sphere, 0.0)) gap = std::min(gap, exact_distance(frame, sphere));
+    if (view.may_touch(c, 0.0)) gap = std::min(gap, exact_distance(view.frame, c.world));
   }
   return gap;
 }

@@ -88,7 +88,8 @@ int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights, dou
     const int body = finger_ * FRUSTA_SEGMENTS_PER_FINGER + s;
     segment_rows_[static_cast<size_t>(s)] = count;
     if (inputs_.candidates.count(body) == 0) continue;
-    const SegmentFrame frame = make_segment_frame(finger_segment(inputs_.model, pose_, finger_, s));
+    const SegmentView view = segment_view(inputs_.model, pose_, inputs_.candidates, body);
+    const SegmentFrame& frame = view.frame;
     // a sphere further than any admissible trial can move the segment is no row: exact,
     // not a guess (a trial moves the finger within the cap from the start, and the
     // segment by at most its share of that)
@@ -101,7 +102,7 @@ int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights, dou
     const auto& column_e = jacobian_.distal[s];    // dE/dq, E = joint s + 1
     const Candidate* c = inputs_.candidates.of(body);
     for (int32_t i = 0; i < inputs_.candidates.count(body); ++i) {
-      if (!may_touch(frame, c[i].world, reach)) continue;
+      if (!view.may_touch(c[i], reach)) continue;
       const Constraint g = contact_constraint(frame, c[i].world, inputs_.params.form);
       QpRow& row = rows[count++];
       for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j)

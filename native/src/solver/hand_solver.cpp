@@ -518,11 +518,10 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
 
 void HandSolver::report_contacts() {
   contacts_.clear();
-  SegmentFrame frames[FRUSTA_HAND_SEGMENT_COUNT];
-  for (int body = 0; body < FRUSTA_HAND_SEGMENT_COUNT; ++body)
-    frames[body] = make_segment_frame(finger_segment(model_, pose_, body / FRUSTA_SEGMENTS_PER_FINGER,
-                                                     body % FRUSTA_SEGMENTS_PER_FINGER));
   for (int body = 0; body < kBodyCount; ++body) {
+    if (candidates_.count(body) == 0) continue;
+    const SegmentView view =
+        body == kPalmBody ? SegmentView{} : segment_view(model_, pose_, candidates_, body);
     const Candidate* c = candidates_.of(body);
     for (int32_t i = 0; i < candidates_.count(body); ++i) {
       SolverContact contact;
@@ -539,9 +538,8 @@ void HandSolver::report_contacts() {
         contact.hand_point = hand.center - hand.radius * contact.normal;
         contact.object_point = c[i].world.center + c[i].world.radius * contact.normal;
       } else {
-        const SegmentFrame& frame = frames[body];
-        if (!may_touch(frame, c[i].world, params_.contact_distance)) continue;
-        const Proximity p = exact_proximity(frame, c[i].world);
+        if (!view.may_touch(c[i], params_.contact_distance)) continue;
+        const Proximity p = exact_proximity(view.frame, c[i].world);
         contact.distance = p.distance;
         contact.hand_point = p.hand_point;
         contact.object_point = p.object_point;

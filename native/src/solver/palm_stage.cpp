@@ -90,11 +90,11 @@ int32_t PalmStage::linearise(QpRow* rows, double* target, double* weights, doubl
   int32_t count = 0;
   for (int body = 0; body < FRUSTA_HAND_SEGMENT_COUNT; ++body) {
     if (inputs_.candidates.count(body) == 0) continue;
-    const int f = body / FRUSTA_SEGMENTS_PER_FINGER, s = body % FRUSTA_SEGMENTS_PER_FINGER;
-    const SegmentFrame frame = make_segment_frame(finger_segment(inputs_.model, pose_, f, s));
+    const SegmentView view = segment_view(inputs_.model, pose_, inputs_.candidates, body);
+    const SegmentFrame& frame = view.frame;
     const Candidate* c = inputs_.candidates.of(body);
     for (int32_t i = 0; i < inputs_.candidates.count(body); ++i) {
-      if (!may_touch(frame, c[i].world, reach)) continue;
+      if (!view.may_touch(c[i], reach)) continue;
       const Constraint g = contact_constraint(frame, c[i].world, inputs_.params.form);
       const double bound = row_bound(
           inputs_.params, g.value, c[i].world.radius + std::max(frame.r_proximal, frame.r_distal));

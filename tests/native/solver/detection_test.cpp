@@ -361,6 +361,25 @@ TEST(SolverDetection, ACachedDetectionFindsWhatAFreshOneFinds) {
       const std::string what = "run " + std::to_string(run) + ", step " + std::to_string(step);
       expect_same(fresh.candidates, fresh.begin, cached, what);
       if (testing::Test::HasFatalFailure()) return;
+      // both sets place the bodies where they are, and every least gap (a cached one
+      // lowered by its body's move since its walk) is a floor of the exact gap there
+      for (const CandidateSet* set : {&cached, &fresh})
+        for (int body = 0; body < kBodyCount; ++body) {
+          const Candidate* c = set->of(body);
+          for (int32_t i = 0; i < set->count(body); ++i) {
+            double exact = 0.0;
+            if (body == kPalmBody) {
+              ASSERT_EQ(set->placed.palm_position, pose.palm_position) << what;
+              const Sphere hand = palm_sphere(model, pose, c[i].part);
+              exact = glm::length(hand.center - c[i].world.center) - hand.radius - c[i].world.radius;
+            } else {
+              const SegmentView view = segment_view(model, pose, *set, body);
+              ASSERT_EQ(view.moved, 0.0) << what;
+              exact = exact_distance(view.frame, c[i].world);
+            }
+            ASSERT_LE(c[i].least_gap, std::max(exact, 0.0)) << what << ", body " << body << ", candidate " << i;
+          }
+        }
       ++calls;
       (cached.tree_nodes_visited == 0 ? from_cache : walked) += 1;
       candidates += static_cast<int64_t>(cached.candidates.size());
