@@ -58,20 +58,37 @@ inline bool may_touch(const SegmentFrame& frame, const Sphere& sphere, double ma
 bool may_touch_sphere(const Sphere& a, const Sphere& b, double margin);
 
 namespace contact_detail {
-// what a least gap gives up to rounding, relative to the sizes it is made of: ten times
+// what gap bounds give up to rounding, relative to the sizes they are made of: ten times
 // may_touch's slack, so that the one never contradicts the other
-constexpr double kLeastGapSlack = 10.0 * kRelativeSlack;
+constexpr double kGapBoundSlack = 10.0 * kRelativeSlack;
 }  // namespace contact_detail
 
-// The least margin at which may_touch(frame, sphere, margin) can hold, less a rounding
-// allowance: a floor of the exact gap (negative inside; may_touch holds only where it is
-// <= margin). Kept with a candidate, it lets a pass skip with one comparison the spheres
-// its body has not moved near enough to since (a solid that moved m is within m of where
-// it was). Branch for branch may_touch's tests, each solved for its reach.
-inline double least_gap(const SegmentFrame& frame, const Sphere& sphere) {
+// Bounds of a sphere's exact gap to a body, as may_touch sees it: may_touch(margin) holds
+// only where least <= margin, and surely where most <= margin. Kept with a candidate,
+// they let a pass decide most spheres with one comparison each, even after the body
+// moved (a solid that moved m is within m of where it was).
+struct GapBounds {
+  double least = -INFINITY, most = INFINITY;  // unknown: every test is made
+};
+
+// Whether a sphere whose gap to a body had `bounds` may lie within `margin` of it now
+// that the body moved no further than `move`, and whether it surely does (each
+// comparison's own rounding allowed for).
+inline bool may_be_within(const GapBounds& bounds, double move, double margin) {
+  return bounds.least - move <= margin * (1.0 + contact_detail::kGapBoundSlack);
+}
+inline bool surely_within(const GapBounds& bounds, double move, double margin) {
+  return bounds.most + move <= margin * (1.0 - contact_detail::kGapBoundSlack);
+}
+
+// The least margin at which may_touch(frame, sphere, margin) holds, as bounds: branch for
+// branch may_touch's tests solved for their reach, less and plus a rounding allowance.
+// In exact arithmetic that margin is the exact gap (0 inside), since may_touch is
+// exact_distance <= margin; each branch that holds at a reach bounds the gap from above.
+inline GapBounds gap_bounds(const SegmentFrame& frame, const Sphere& sphere) {
   const vec3 w = sphere.center - frame.distal;
   const double allowance =
-      contact_detail::kLeastGapSlack *
+      contact_detail::kGapBoundSlack *
       (std::fabs(frame.distal.x) + std::fabs(frame.distal.y) + std::fabs(frame.distal.z) + std::fabs(w.x) +
        std::fabs(w.y) + std::fabs(w.z) + frame.length + frame.r_distal + frame.r_proximal + sphere.radius);
   // the end balls: |c - E| <= reach + r2, |c - D| <= reach + r1
@@ -96,21 +113,18 @@ inline double least_gap(const SegmentFrame& frame, const Sphere& sphere) {
     }
     if (low <= high + allowance && high >= sphere.radius - allowance) reach = std::min(reach, low);
   }
-  return reach - sphere.radius - allowance;
+  // a reach below the radius holds at margin 0: the sphere sinks in by an unknown depth
+  const double margin = reach - sphere.radius;
+  return {margin - allowance, std::max(margin, 0.0) + allowance};
 }
 
 // The same for two spheres and may_touch_sphere.
-inline double least_gap_sphere(const Sphere& a, const Sphere& b) {
+inline GapBounds gap_bounds_sphere(const Sphere& a, const Sphere& b) {
   const double apart = glm::length(a.center - b.center);
-  const double allowance = contact_detail::kLeastGapSlack * (std::fabs(a.center.x) + std::fabs(a.center.y) +
+  const double allowance = contact_detail::kGapBoundSlack * (std::fabs(a.center.x) + std::fabs(a.center.y) +
                                                              std::fabs(a.center.z) + apart + a.radius + b.radius);
-  return apart - a.radius - b.radius - allowance;
-}
-
-// Whether a sphere whose least gap to a body was `gap` may lie within `margin` of it
-// now that it moved no further than `move` (the comparison's own rounding allowed for).
-inline bool may_be_within(double gap, double move, double margin) {
-  return gap - move <= margin * (1.0 + contact_detail::kLeastGapSlack);
+  const double margin = apart - a.radius - b.radius;
+  return {margin - allowance, std::max(margin, 0.0) + allowance};
 }
 
 }  // namespace frusta

@@ -46,11 +46,12 @@ void CandidateCache::detect(const HandModel& model, const HandReach& reach, cons
     valid_ = true;
   }
 
-  // each body's cached spheres within its need, in their walk's order, their least gaps
-  // lowered by the body's move since
+  // each body's cached spheres within its need, in their walk's order, their gap bounds
+  // widened by the body's move since
   out.candidates.clear();
   auto keep = [&](Candidate c, double move) {
-    c.least_gap -= move;
+    c.gap.least -= move;
+    c.gap.most += move;
     out.candidates.push_back(c);
   };
   for (int body = 0; body < kBodyCount; ++body) {
@@ -60,8 +61,9 @@ void CandidateCache::detect(const HandModel& model, const HandReach& reach, cons
     const double need = needs.body[body], move = moves[body];
     if (body == kPalmBody) {
       for (int32_t k = 0; k < count; ++k)
-        if (may_be_within(c[k].least_gap, move, need) &&
-            may_touch_sphere(palm_sphere(model, pose, c[k].part), c[k].world, need))
+        if (may_be_within(c[k].gap, move, need) &&
+            (surely_within(c[k].gap, move, need) ||
+             may_touch_sphere(palm_sphere(model, pose, c[k].part), c[k].world, need)))
           keep(c[k], move);
     } else {
       const SegmentView view{make_segment_frame(now.segments[body]), move};

@@ -50,7 +50,7 @@ void deal_out(const SolverObject* objects, const Sphere* palm, int32_t first, in
     for (uint64_t rest = h.probes; rest != 0; rest &= rest - 1) {
       const int k = lowest_bit(rest);
       out.candidates[static_cast<size_t>(next[k]++)] = {h.object, h.hit.leaf, first + k, world,
-                                                        least_gap_sphere(palm[k], world)};
+                                                        gap_bounds_sphere(palm[k], world)};
     }
   }
 }
@@ -230,7 +230,7 @@ void detect_candidates(const HandModel& model, const HandReach& reach, const Han
       const Sphere local = hit.leaf >= 0 ? obj.tree->leaves[static_cast<size_t>(hit.leaf)]
                                          : obj.tree->node_sphere(hit.node);
       const Sphere world{obj.pose.rotation * local.center + obj.pose.position, local.radius};
-      out.candidates.push_back({object, hit.leaf, 0, world, least_gap(body, world)});
+      out.candidates.push_back({object, hit.leaf, 0, world, gap_bounds(body, world)});
     }
   };
 

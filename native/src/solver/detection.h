@@ -36,13 +36,13 @@ struct Candidate {
   int32_t leaf = 0;  // -1: an inner node standing in for its leaves (a level cut)
   int32_t part = 0;  // the palm sphere's index on the palm body, else 0
   Sphere world;      // the leaf in world coordinates
-  // a floor of its exact gap to its body (its palm sphere) where the set placed the body
-  // (CandidateSet::placed; least_gap): a pass over a body's candidates rules most out
-  // with one comparison (SegmentView)
-  double least_gap = -INFINITY;
+  // bounds of its exact gap to its body (its palm sphere) where the set placed the body
+  // (CandidateSet::placed): a pass over a body's candidates decides most with one
+  // comparison (SegmentView)
+  GapBounds gap;
 };
 
-// Where a candidate set's bodies stood when their candidates' least gaps were measured.
+// Where a candidate set's bodies stood when their candidates' gap bounds were measured.
 struct BodyPlacements {
   std::array<Segment, FRUSTA_HAND_SEGMENT_COUNT> segments{};
   vec3 palm_position{0.0};
@@ -90,13 +90,14 @@ double palm_move(const HandModel& model, const vec3& position, const glm::dmat3&
                  const HandPose& now);
 
 // A finger segment at a pose, for a pass over its candidates: its frame, and how far it
-// moved from where the set measured their least gaps.
+// moved from where the set measured their gap bounds.
 struct SegmentView {
   SegmentFrame frame;
   double moved = 0.0;
-  // may_touch, after one comparison that rules out most spheres not within the margin
+  // may_touch, its answer known from the bounds for all but the spheres near the margin
   bool may_touch(const Candidate& c, double margin) const {
-    return may_be_within(c.least_gap, moved, margin) && frusta::may_touch(frame, c.world, margin);
+    if (!may_be_within(c.gap, moved, margin)) return false;
+    return surely_within(c.gap, moved, margin) || frusta::may_touch(frame, c.world, margin);
   }
 };
 SegmentView segment_view(const HandModel& model, const HandPose& pose, const CandidateSet& set,

@@ -151,37 +151,43 @@ TEST(MayTouchProperty, NeverMissesAContactAtAnyMargin) {
   EXPECT_GT(boundary_cases, n / 20);
 }
 
-// A candidate's least gap stands in for may_touch in every pass over candidates, from
-// where the body was when it was measured: it must never exceed a margin at which
-// may_touch holds, there or after a move of the body (else a pass drops a sphere its
-// body touches), and should sit close under the exact gap (else it skips nothing).
-TEST(LeastGapProperty, NeverAboveAMarginMayTouchHoldsAtNearOrMoved) {
+// A candidate's gap bounds stand in for may_touch in every pass over candidates, from
+// where the body was when they were measured: may_touch must never hold at a margin
+// below the least or fail at one above the most, there or after a move of the body
+// (else a pass drops a sphere its body touches, or keeps one it does not), and both
+// should sit close around the exact gap (else they decide nothing).
+TEST(GapBoundsProperty, MayTouchHoldsBelowNeitherAndFailsAboveNeitherNearOrMoved) {
   const std::uint64_t n = scenes::property_case_count();
   scenes::CaseGenerator gen(scenes::kPropertySeed + 7);
   std::mt19937_64 rng(scenes::kPropertySeed + 8);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  property::PropertyLog log("least_gap");
+  property::PropertyLog log("gap_bounds");
   constexpr std::array<double, 5> kMargins = {0.0, 1e-5, 1e-4, 2e-3, 1e-2};
-  double loosest = 0.0;  // the most the least gap falls short of a positive exact gap, by
-                         // the case's world scale (its rounding allowance grows with it)
+  double loosest = 0.0;  // the widest bounds around a positive exact gap, by the case's
+                         // world scale (their rounding allowance grows with it)
   std::uint64_t moved_tested = 0;
   for (std::uint64_t i = 0; i < n; ++i) {
     const Case c = gen.next();
     log.seen(c);
     const SegmentFrame f = make_segment_frame(c.segment);
-    const double least = least_gap(f, c.sphere);
+    const GapBounds bounds = gap_bounds(f, c.sphere);
     const double gap = exact_distance(f, c.sphere);
-    for (double margin : kMargins)
-      log.check(!may_touch(f, c.sphere, margin) || least <= margin, "may_touch implies least <= margin", c,
-                [&] { return format("margin=%.3g least=%.17g", margin, least); });
-    // just under the least gap may_touch must fail (it is the least margin that holds)
-    if (least > 0.0)
-      log.check(!may_touch(f, c.sphere, least * (1.0 - 1e-9)), "may_touch fails below the least gap", c,
-                [&] { return format("least=%.17g gap=%.17g", least, gap); });
-    // a floor of the exact gap, which a move of m lowers by at most m
-    log.check(least <= std::max(gap, 0.0), "least <= exact gap", c,
-              [&] { return format("least=%.17g gap=%.17g", least, gap); });
-    if (gap > 0.0) loosest = std::max(loosest, (gap - least) / property::world_scale(c));
+    auto describe = [&] { return format("least=%.17g most=%.17g gap=%.17g", bounds.least, bounds.most, gap); };
+    for (double margin : kMargins) {
+      const bool touch = may_touch(f, c.sphere, margin);
+      log.check(!touch || may_be_within(bounds, 0.0, margin), "may_touch implies may_be_within", c, describe);
+      log.check(touch || !surely_within(bounds, 0.0, margin), "surely_within implies may_touch", c, describe);
+    }
+    // just past the bounds may_touch must fail, and hold (the least margin that holds
+    // lies between them)
+    if (bounds.least > 0.0)
+      log.check(!may_touch(f, c.sphere, bounds.least * (1.0 - 1e-9)), "may_touch fails below the least", c,
+                describe);
+    log.check(may_touch(f, c.sphere, bounds.most * (1.0 + 1e-9)), "may_touch holds above the most", c, describe);
+    // bounds of the exact gap (0 inside), which a move of m shifts by at most m
+    log.check(bounds.least <= std::max(gap, 0.0) && gap <= bounds.most, "least <= exact gap <= most", c,
+              describe);
+    if (gap > 0.0) loosest = std::max(loosest, (bounds.most - bounds.least) / property::world_scale(c));
     // the body moved: each end by up to 5 mm, the same radii
     Segment moved = c.segment;
     const double size = 0.005 * std::fabs(unit(rng));
@@ -191,24 +197,29 @@ TEST(LeastGapProperty, NeverAboveAMarginMayTouchHoldsAtNearOrMoved) {
                                  glm::length(moved.distal - c.segment.distal));
     const SegmentFrame g = make_segment_frame(moved);
     for (double margin : kMargins) {
-      if (!may_touch(g, c.sphere, margin)) continue;
-      ++moved_tested;
-      log.check(may_be_within(least, move, margin), "may_touch after a move implies may_be_within", c,
-                [&] { return format("margin=%.3g least=%.17g move=%.17g", margin, least, move); });
+      const bool touch = may_touch(g, c.sphere, margin);
+      moved_tested += touch ? 1 : 0;
+      log.check(!touch || may_be_within(bounds, move, margin), "moved: may_touch implies may_be_within", c,
+                [&] { return format("margin=%.3g move=%.17g ", margin, move) + describe(); });
+      log.check(touch || !surely_within(bounds, move, margin), "moved: surely_within implies may_touch", c,
+                [&] { return format("margin=%.3g move=%.17g ", margin, move) + describe(); });
     }
     // two spheres: the tip ball against the case's sphere
     const Sphere tip{c.segment.distal, c.segment.distal_radius};
-    const double ball_least = least_gap_sphere(tip, c.sphere);
-    for (double margin : kMargins)
-      log.check(!may_touch_sphere(tip, c.sphere, margin) || ball_least <= margin,
-                "may_touch_sphere implies least <= margin", c,
-                [&] { return format("margin=%.3g least=%.17g", margin, ball_least); });
+    const GapBounds ball = gap_bounds_sphere(tip, c.sphere);
+    for (double margin : kMargins) {
+      const bool touch = may_touch_sphere(tip, c.sphere, margin);
+      log.check(!touch || may_be_within(ball, 0.0, margin), "may_touch_sphere implies may_be_within", c,
+                [&] { return format("margin=%.3g least=%.17g", margin, ball.least); });
+      log.check(touch || !surely_within(ball, 0.0, margin), "surely_within implies may_touch_sphere", c,
+                [&] { return format("margin=%.3g most=%.17g", margin, ball.most); });
+    }
   }
   log.report();
-  std::printf("[ least_gap ] largest shortfall under a positive exact gap %.3g of the world scale; %llu moved "
+  std::printf("[ gap_bounds ] widest bounds around a positive exact gap %.3g of the world scale; %llu moved "
               "contacts\n",
               loosest, static_cast<unsigned long long>(moved_tested));
-  property::record("least_gap_shortfall_relative", loosest);
+  property::record("gap_bounds_width_relative", loosest);
   EXPECT_LT(loosest, 1e-11);  // rounding only: the gap itself, not a looser bound of it
   EXPECT_GT(moved_tested, n / 10);
 }

@@ -49,7 +49,7 @@ std::vector<Candidate> walk_per_probe(const HandModel& model, const HandReach& r
       const TreeHit& hit = hits[static_cast<size_t>(h)];
       const Sphere local = hit.leaf >= 0 ? obj.tree->leaves[static_cast<size_t>(hit.leaf)]
                                          : obj.tree->node_sphere(hit.node);
-      out.push_back({o, hit.leaf, part, {obj.pose.rotation * local.center + obj.pose.position, local.radius}});
+      out.push_back({o, hit.leaf, part, {obj.pose.rotation * local.center + obj.pose.position, local.radius}, {}});
     }
   };
   for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
@@ -361,8 +361,8 @@ TEST(SolverDetection, ACachedDetectionFindsWhatAFreshOneFinds) {
       const std::string what = "run " + std::to_string(run) + ", step " + std::to_string(step);
       expect_same(fresh.candidates, fresh.begin, cached, what);
       if (testing::Test::HasFatalFailure()) return;
-      // both sets place the bodies where they are, and every least gap (a cached one
-      // lowered by its body's move since its walk) is a floor of the exact gap there
+      // both sets place the bodies where they are, and every gap's bounds (a cached
+      // one's widened by its body's move since its walk) hold the exact gap there
       for (const CandidateSet* set : {&cached, &fresh})
         for (int body = 0; body < kBodyCount; ++body) {
           const Candidate* c = set->of(body);
@@ -377,7 +377,8 @@ TEST(SolverDetection, ACachedDetectionFindsWhatAFreshOneFinds) {
               ASSERT_EQ(view.moved, 0.0) << what;
               exact = exact_distance(view.frame, c[i].world);
             }
-            ASSERT_LE(c[i].least_gap, std::max(exact, 0.0)) << what << ", body " << body << ", candidate " << i;
+            ASSERT_TRUE(c[i].gap.least <= std::max(exact, 0.0) && exact <= c[i].gap.most)
+                << what << ", body " << body << ", candidate " << i;
           }
         }
       ++calls;
