@@ -17,7 +17,7 @@ double dot(int n, const Vec& a, const Vec& b) {
   return s;
 }
 
-// The active set: normals (in scaled variables) and multipliers. With G = I after
+// The active set: unit normals (in scaled variables) and multipliers. With G = I after
 // scaling, the primal step is n_p with its part in the active normals' span removed
 // and the dual step the coefficients of that part, both from the small Gram system.
 struct ActiveSet {
@@ -89,12 +89,26 @@ QpResult solve_projection_qp(int n, const double* weights, const double* target,
   for (int32_t i = 0; i < row_count; ++i) {
     QpRow& row = rows[i];
     for (int j = 0; j < n; ++j) row.a[j] *= scale[j];
+    row.active = false;
+    row.unit = false;
+  }
+  // A row is made unit the first time it is found violated (most never are): its slack
+  // per unit normal is its raw slack over the normal's length, which has the raw one's
+  // sign, so a row that holds raw holds made unit too (to rounding, a millionth of the
+  // tolerance below)
+  auto violated = [&](QpRow& row) {
+    if (row.unit) return true;
+    if (dot(n, row.a, y) - row.b >= 0.0) return false;
     const double length = std::sqrt(dot(n, row.a, row.a));
-    row.active = !(length > 0.0);  // no normal: it holds or not whatever x is; ignore it
-    if (row.active) continue;
+    if (!(length > 0.0)) {  // no normal: it holds or not whatever x is; ignore it
+      row.active = true;
+      return false;
+    }
     for (int j = 0; j < n; ++j) row.a[j] /= length;
     row.b /= length;
-  }
+    row.unit = true;
+    return true;
+  };
   ActiveSet active;
   active.n = n;
   auto finish = [&](QpStatus status) {
@@ -111,7 +125,7 @@ QpResult solve_projection_qp(int n, const double* weights, const double* target,
     double worst = 0.0;
     bool preferred = false;
     for (int32_t i = 0; i < row_count; ++i) {
-      if (rows[i].active || (preferred && !rows[i].preferred)) continue;
+      if (rows[i].active || (preferred && !rows[i].preferred) || !violated(rows[i])) continue;
       const double slack = dot(n, rows[i].a, y) - rows[i].b;
       const double tolerance = 1e-12 * (1.0 + std::fabs(rows[i].b));
       if (slack < -tolerance && ((rows[i].preferred && !preferred) || slack < worst - tolerance)) {

@@ -20,7 +20,8 @@ struct QpRow {
   int64_t key = 0;         // the caller's name for the row (0: none); not read here
   int32_t source = -1;     // the caller's index of what it stands for; not read here
   bool preferred = false;  // the caller's guess that it binds: among rows violated, it joins first
-  bool active = false;     // the solver's own mark
+  bool active = false;     // the solver's own marks
+  bool unit = false;
 };
 
 enum class QpStatus : int { kOptimal = 0, kInfeasible = 1, kIterationCap = 2 };
@@ -48,8 +49,8 @@ struct QpHints {
 };
 
 // x holds the solution on return (the best point reached when not optimal). The rows
-// are rescaled in place (scaled variables, unit normals) so each pass over them is a
-// plain dot product; a row with a zero normal is dropped. Allocates nothing; rows are
+// are rescaled in place (scaled variables; a row found violated to a unit normal) so
+// each pass over them is a plain dot product; a row with a zero normal is dropped. Allocates nothing; rows are
 // read in order, so equal inputs give equal outputs.
 QpResult solve_projection_qp(int n, const double* weights, const double* target, QpRow* rows,
                              int32_t row_count, int32_t iteration_cap, double* x);
