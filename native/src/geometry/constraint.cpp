@@ -91,11 +91,14 @@ Constraint contact_constraint(const SegmentFrame& frame, const Sphere& sphere,
   // side or the other ball; the union's constraint is the tightest of the three. Compare
   // in the distance form, whose values are all signed distances, then evaluate the
   // winner in the form asked for.
+  // (a ball's gradient made only where it wins: most rows' balls lose)
   Constraint tightest = feature_constraint(frame, rule, sphere, ConstraintForm::kDistance);
   for (Feature ball : {Feature::kDistalBall, Feature::kProximalBall}) {
     if (ball == rule) continue;
-    const Constraint g = ball_constraint(frame, ball, sphere, ConstraintForm::kDistance);
-    if (g.value < tightest.value) tightest = g;
+    const bool distal = ball == Feature::kDistalBall;
+    const double value = glm::length((distal ? frame.distal : frame.proximal) - sphere.center) -
+                         ((distal ? frame.r_distal : frame.r_proximal) + sphere.radius);
+    if (value < tightest.value) tightest = ball_constraint(frame, ball, sphere, ConstraintForm::kDistance);
   }
   if (form == ConstraintForm::kDistance) return tightest;
   return feature_constraint(frame, tightest.feature, sphere, form);
