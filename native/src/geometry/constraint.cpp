@@ -98,7 +98,8 @@ Constraint contact_constraint(const SegmentFrame& frame, const Sphere& sphere,
     const bool distal = ball == Feature::kDistalBall;
     const double value = glm::length((distal ? frame.distal : frame.proximal) - sphere.center) -
                          ((distal ? frame.r_distal : frame.r_proximal) + sphere.radius);
-    if (value < tightest.value) tightest = ball_constraint(frame, ball, sphere, ConstraintForm::kDistance);
+    if (value < tightest.value)
+      tightest = ball_constraint(frame, ball, sphere, ConstraintForm::kDistance);
   }
   if (form == ConstraintForm::kDistance) return tightest;
   return feature_constraint(frame, tightest.feature, sphere, form);

@@ -89,8 +89,9 @@ inline GapBounds gap_bounds(const SegmentFrame& frame, const Sphere& sphere) {
   const vec3 w = sphere.center - frame.distal;
   const double allowance =
       contact_detail::kGapBoundSlack *
-      (std::fabs(frame.distal.x) + std::fabs(frame.distal.y) + std::fabs(frame.distal.z) + std::fabs(w.x) +
-       std::fabs(w.y) + std::fabs(w.z) + frame.length + frame.r_distal + frame.r_proximal + sphere.radius);
+      (std::fabs(frame.distal.x) + std::fabs(frame.distal.y) + std::fabs(frame.distal.z) +
+       std::fabs(w.x) + std::fabs(w.y) + std::fabs(w.z) + frame.length + frame.r_distal +
+       frame.r_proximal + sphere.radius);
   // the end balls: |c - E| <= reach + r2, |c - D| <= reach + r1
   double reach = std::min(glm::length(w) - frame.r_distal,
                           glm::length(sphere.center - frame.proximal) - frame.r_proximal);
@@ -121,8 +122,9 @@ inline GapBounds gap_bounds(const SegmentFrame& frame, const Sphere& sphere) {
 // The same for two spheres and may_touch_sphere.
 inline GapBounds gap_bounds_sphere(const Sphere& a, const Sphere& b) {
   const double apart = glm::length(a.center - b.center);
-  const double allowance = contact_detail::kGapBoundSlack * (std::fabs(a.center.x) + std::fabs(a.center.y) +
-                                                             std::fabs(a.center.z) + apart + a.radius + b.radius);
+  const double allowance =
+      contact_detail::kGapBoundSlack * (std::fabs(a.center.x) + std::fabs(a.center.y) +
+                                        std::fabs(a.center.z) + apart + a.radius + b.radius);
   const double margin = apart - a.radius - b.radius;
   return {margin - allowance, std::max(margin, 0.0) + allowance};
 }

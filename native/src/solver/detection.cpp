@@ -32,7 +32,8 @@ int32_t query_into(std::vector<TreeHit>& hits, Query query) {
 // Deal the hits of the walks for palm spheres [first, first + run) out to the spheres
 // that reach them, sphere by sphere, keeping their order (object, then node): the order
 // of one walk per sphere.
-void deal_out(const SolverObject* objects, const Sphere* palm, int32_t first, int run, CandidateSet& out) {
+void deal_out(const SolverObject* objects, const Sphere* palm, int32_t first, int run,
+              CandidateSet& out) {
   int32_t count[kMaxProbes] = {};
   for (const MaskedHit& h : out.masked_hits)
     for (uint64_t rest = h.probes; rest != 0; rest &= rest - 1) ++count[lowest_bit(rest)];
@@ -108,7 +109,8 @@ void copy_body(const CandidateSet& from, int body, CandidateSet& out) {
     out.placed.palm_position = from.placed.palm_position;
     out.placed.palm_rotation = from.placed.palm_rotation;
   } else {
-    out.placed.segments[static_cast<size_t>(body)] = from.placed.segments[static_cast<size_t>(body)];
+    out.placed.segments[static_cast<size_t>(body)] =
+        from.placed.segments[static_cast<size_t>(body)];
   }
 }
 
@@ -123,15 +125,17 @@ double palm_move(const HandModel& model, const vec3& position, const glm::dmat3&
   const vec3 shift = now.palm_position - position;
   const glm::dmat3 turn = now.palm_rotation - rotation;
   double move = 0.0;
-  for (const Sphere& s : model.palm_spheres) move = std::max(move, glm::length(shift + turn * s.center));
+  for (const Sphere& s : model.palm_spheres)
+    move = std::max(move, glm::length(shift + turn * s.center));
   return move;
 }
 
 SegmentView segment_view(const HandModel& model, const HandPose& pose, const CandidateSet& set,
                          int body) {
-  const Segment now =
-      finger_segment(model, pose, body / FRUSTA_SEGMENTS_PER_FINGER, body % FRUSTA_SEGMENTS_PER_FINGER);
-  return {make_segment_frame(now), segment_move(set.placed.segments[static_cast<size_t>(body)], now)};
+  const Segment now = finger_segment(model, pose, body / FRUSTA_SEGMENTS_PER_FINGER,
+                                     body % FRUSTA_SEGMENTS_PER_FINGER);
+  return {make_segment_frame(now),
+          segment_move(set.placed.segments[static_cast<size_t>(body)], now)};
 }
 
 HandReach hand_reach(const HandModel& model) {

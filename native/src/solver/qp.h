@@ -50,8 +50,8 @@ struct QpHints {
 
 // x holds the solution on return (the best point reached when not optimal). The rows
 // are rescaled in place (scaled variables; a row found violated to a unit normal) so
-// each pass over them is a plain dot product; a row with a zero normal is dropped. Allocates nothing; rows are
-// read in order, so equal inputs give equal outputs.
+// each pass over them is a plain dot product; a row with a zero normal is dropped. Allocates
+// nothing; rows are read in order, so equal inputs give equal outputs.
 QpResult solve_projection_qp(int n, const double* weights, const double* target, QpRow* rows,
                              int32_t row_count, int32_t iteration_cap, double* x);
 

@@ -172,22 +172,28 @@ TEST(GapBoundsProperty, MayTouchHoldsBelowNeitherAndFailsAboveNeitherNearOrMoved
     const SegmentFrame f = make_segment_frame(c.segment);
     const GapBounds bounds = gap_bounds(f, c.sphere);
     const double gap = exact_distance(f, c.sphere);
-    auto describe = [&] { return format("least=%.17g most=%.17g gap=%.17g", bounds.least, bounds.most, gap); };
+    auto describe = [&] {
+      return format("least=%.17g most=%.17g gap=%.17g", bounds.least, bounds.most, gap);
+    };
     for (double margin : kMargins) {
       const bool touch = may_touch(f, c.sphere, margin);
-      log.check(!touch || may_be_within(bounds, 0.0, margin), "may_touch implies may_be_within", c, describe);
-      log.check(touch || !surely_within(bounds, 0.0, margin), "surely_within implies may_touch", c, describe);
+      log.check(!touch || may_be_within(bounds, 0.0, margin), "may_touch implies may_be_within", c,
+                describe);
+      log.check(touch || !surely_within(bounds, 0.0, margin), "surely_within implies may_touch", c,
+                describe);
     }
     // just past the bounds may_touch must fail, and hold (the least margin that holds
     // lies between them)
     if (bounds.least > 0.0)
-      log.check(!may_touch(f, c.sphere, bounds.least * (1.0 - 1e-9)), "may_touch fails below the least", c,
-                describe);
-    log.check(may_touch(f, c.sphere, bounds.most * (1.0 + 1e-9)), "may_touch holds above the most", c, describe);
+      log.check(!may_touch(f, c.sphere, bounds.least * (1.0 - 1e-9)),
+                "may_touch fails below the least", c, describe);
+    log.check(may_touch(f, c.sphere, bounds.most * (1.0 + 1e-9)), "may_touch holds above the most",
+              c, describe);
     // bounds of the exact gap (0 inside), which a move of m shifts by at most m
-    log.check(bounds.least <= std::max(gap, 0.0) && gap <= bounds.most, "least <= exact gap <= most", c,
-              describe);
-    if (gap > 0.0) loosest = std::max(loosest, (bounds.most - bounds.least) / property::world_scale(c));
+    log.check(bounds.least <= std::max(gap, 0.0) && gap <= bounds.most,
+              "least <= exact gap <= most", c, describe);
+    if (gap > 0.0)
+      loosest = std::max(loosest, (bounds.most - bounds.least) / property::world_scale(c));
     // the body moved: each end by up to 5 mm, the same radii
     Segment moved = c.segment;
     const double size = 0.005 * std::fabs(unit(rng));
@@ -199,9 +205,11 @@ TEST(GapBoundsProperty, MayTouchHoldsBelowNeitherAndFailsAboveNeitherNearOrMoved
     for (double margin : kMargins) {
       const bool touch = may_touch(g, c.sphere, margin);
       moved_tested += touch ? 1 : 0;
-      log.check(!touch || may_be_within(bounds, move, margin), "moved: may_touch implies may_be_within", c,
+      log.check(!touch || may_be_within(bounds, move, margin),
+                "moved: may_touch implies may_be_within", c,
                 [&] { return format("margin=%.3g move=%.17g ", margin, move) + describe(); });
-      log.check(touch || !surely_within(bounds, move, margin), "moved: surely_within implies may_touch", c,
+      log.check(touch || !surely_within(bounds, move, margin),
+                "moved: surely_within implies may_touch", c,
                 [&] { return format("margin=%.3g move=%.17g ", margin, move) + describe(); });
     }
     // two spheres: the tip ball against the case's sphere
@@ -209,16 +217,20 @@ TEST(GapBoundsProperty, MayTouchHoldsBelowNeitherAndFailsAboveNeitherNearOrMoved
     const GapBounds ball = gap_bounds_sphere(tip, c.sphere);
     for (double margin : kMargins) {
       const bool touch = may_touch_sphere(tip, c.sphere, margin);
-      log.check(!touch || may_be_within(ball, 0.0, margin), "may_touch_sphere implies may_be_within", c,
+      log.check(!touch || may_be_within(ball, 0.0, margin),
+                "may_touch_sphere implies may_be_within", c,
                 [&] { return format("margin=%.3g least=%.17g", margin, ball.least); });
-      log.check(touch || !surely_within(ball, 0.0, margin), "surely_within implies may_touch_sphere", c,
+      log.check(touch || !surely_within(ball, 0.0, margin),
+                "surely_within implies may_touch_sphere", c,
                 [&] { return format("margin=%.3g most=%.17g", margin, ball.most); });
     }
   }
   log.report();
-  std::printf("[ gap_bounds ] widest bounds around a positive exact gap %.3g of the world scale; %llu moved "
-              "contacts\n",
-              loosest, static_cast<unsigned long long>(moved_tested));
+  std::printf(
+      "[ gap_bounds ] widest bounds around a positive exact gap %.3g of the world scale; %llu "
+      "moved "
+      "contacts\n",
+      loosest, static_cast<unsigned long long>(moved_tested));
   property::record("gap_bounds_width_relative", loosest);
   EXPECT_LT(loosest, 1e-11);  // rounding only: the gap itself, not a looser bound of it
   EXPECT_GT(moved_tested, n / 10);

@@ -49,7 +49,11 @@ std::vector<Candidate> walk_per_probe(const HandModel& model, const HandReach& r
       const TreeHit& hit = hits[static_cast<size_t>(h)];
       const Sphere local = hit.leaf >= 0 ? obj.tree->leaves[static_cast<size_t>(hit.leaf)]
                                          : obj.tree->node_sphere(hit.node);
-      out.push_back({o, hit.leaf, part, {obj.pose.rotation * local.center + obj.pose.position, local.radius}, {}});
+      out.push_back({o,
+                     hit.leaf,
+                     part,
+                     {obj.pose.rotation * local.center + obj.pose.position, local.radius},
+                     {}});
     }
   };
   for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
@@ -371,7 +375,8 @@ TEST(SolverDetection, ACachedDetectionFindsWhatAFreshOneFinds) {
             if (body == kPalmBody) {
               ASSERT_EQ(set->placed.palm_position, pose.palm_position) << what;
               const Sphere hand = palm_sphere(model, pose, c[i].part);
-              exact = glm::length(hand.center - c[i].world.center) - hand.radius - c[i].world.radius;
+              exact =
+                  glm::length(hand.center - c[i].world.center) - hand.radius - c[i].world.radius;
             } else {
               const SegmentView view = segment_view(model, pose, *set, body);
               ASSERT_EQ(view.moved, 0.0) << what;
