@@ -44,7 +44,7 @@ inline bool may_touch(const SegmentFrame& frame, const Sphere& sphere, double ma
     const double axial = glm::dot(w, frame.axis);
     const double shift = reach * frame.sin_alpha;
     if (axial >= -shift && axial <= frame.length - shift) {
-      const double threshold = reach / frame.cos_alpha + frame.r_distal + axial * frame.slope;
+      const double threshold = reach * frame.sec_alpha + frame.r_distal + axial * frame.slope;
       const vec3 radial = w - axial * frame.axis;
       if (threshold >= 0.0 && glm::dot(radial, radial) <= threshold * threshold) return true;
     }

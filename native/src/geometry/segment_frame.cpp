@@ -32,6 +32,7 @@ SegmentFrame make_segment_frame(const Segment& segment) {
   // cos and sin from the side's own lengths rather than through atan: exact for a cylinder
   const double side = slant_length(f.length, f.r_distal, f.r_proximal);
   f.cos_alpha = f.length / side;
+  f.sec_alpha = side / f.length;
   f.sin_alpha = (f.r_proximal - f.r_distal) / side;
   return f;
 }

@@ -16,6 +16,7 @@ struct SegmentFrame {
   double r_proximal = 0.0;  // r1
   double slope = 0.0;   // tan(alpha) = (r1 - r2) / L; 0 when L == 0
   double cos_alpha = 1.0;
+  double sec_alpha = 1.0;  // 1 / cos(alpha): a division per node test in every walk was dear
   double sin_alpha = 0.0;
   bool degenerate = false;  // L too short for an axis: the solid is its two balls
 };
