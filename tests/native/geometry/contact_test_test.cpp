@@ -168,8 +168,8 @@ TEST(GapBoundsProperty, MayTouchHoldsBelowNeitherAndFailsAboveNeitherNearOrMoved
   std::uint64_t moved_tested = 0;
   for (std::uint64_t i = 0; i < n; ++i) {
     const Case c = gen.next();
-    log.seen(c);
     const SegmentFrame f = make_segment_frame(c.segment);
+    log.seen(c);
     const GapBounds bounds = gap_bounds(f, c.sphere);
     const double gap = exact_distance(f, c.sphere);
     auto describe = [&] {
