@@ -81,6 +81,14 @@ inline bool surely_within(const GapBounds& bounds, double move, double margin) {
   return bounds.most + move <= margin * (1.0 - contact_detail::kGapBoundSlack);
 }
 
+// A contact test's answer (`test`: may_touch or may_touch_sphere at `margin`), asked only
+// where the bounds leave it open.
+template <class Test>
+bool decided_may_touch(const GapBounds& bounds, double move, double margin, Test test) {
+  if (!may_be_within(bounds, move, margin)) return false;
+  return surely_within(bounds, move, margin) || test();
+}
+
 // The least margin at which may_touch(frame, sphere, margin) holds, as bounds: branch for
 // branch may_touch's tests solved for their reach, less and plus a rounding allowance.
 // In exact arithmetic that margin is the exact gap (0 inside), since may_touch is

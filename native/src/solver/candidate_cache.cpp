@@ -61,9 +61,9 @@ void CandidateCache::detect(const HandModel& model, const HandReach& reach, cons
     const double need = needs.body[body], move = moves[body];
     if (body == kPalmBody) {
       for (int32_t k = 0; k < count; ++k)
-        if (may_be_within(c[k].gap, move, need) &&
-            (surely_within(c[k].gap, move, need) ||
-             may_touch_sphere(palm_sphere(model, pose, c[k].part), c[k].world, need)))
+        if (decided_may_touch(c[k].gap, move, need, [&] {
+              return may_touch_sphere(palm_sphere(model, pose, c[k].part), c[k].world, need);
+            }))
           keep(c[k], move);
     } else {
       const SegmentView view{make_segment_frame(now.segments[body]), move};

@@ -6,10 +6,8 @@
 // step was a quarter of a closing grasp's time.
 #pragma once
 
-#include <array>
 #include <cstdint>
 
-#include "geometry/types.h"
 #include "hand/kinematics.h"
 #include "solver/detection.h"
 

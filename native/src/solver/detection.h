@@ -96,8 +96,8 @@ struct SegmentView {
   double moved = 0.0;
   // may_touch, its answer known from the bounds for all but the spheres near the margin
   bool may_touch(const Candidate& c, double margin) const {
-    if (!may_be_within(c.gap, moved, margin)) return false;
-    return surely_within(c.gap, moved, margin) || frusta::may_touch(frame, c.world, margin);
+    return decided_may_touch(c.gap, moved, margin,
+                             [&] { return frusta::may_touch(frame, c.world, margin); });
   }
 };
 SegmentView segment_view(const HandModel& model, const HandPose& pose, const CandidateSet& set,
