@@ -219,8 +219,8 @@ double FingerStage::trial_clearance() {
 
 double FingerStage::step_clearance() {
   // A sphere that made no row lies further from its segment than the step can move it
-  // (linearise's reach; a step beyond its radius was linearised again whole), so it
-  // cannot touch: the same gap as every candidate's, from the few near
+  // (linearise's reach; a step beyond its radius was linearised again for a radius it
+  // keeps within), so it cannot touch: the same gap as every candidate's, from the few near
   trial_pose_ = pose_;
   finger_kinematics(inputs_.model, trial_state_, finger_, trial_pose_);
   double gap = 0.0;

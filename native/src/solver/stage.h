@@ -122,7 +122,7 @@ constexpr int kBisections = 8;  // 1/256 of the last step: less is not worth its
 constexpr int32_t kMaxBoundRows = 64;  // the palm's 2^6 faces of its motion bound
 constexpr double kWorkingDepth = 2.5e-4;  // metres
 // A linearisation makes only the rows of spheres a step of a guessed size can reach;
-// where its step goes further, it is made again with every row (solve_stage). The rows of
+// where its step goes further, it is made again for that step (solve_stage). The rows of
 // every sphere a whole step could reach were 150-250 a finger on the 10^4-leaf grasp,
 // most of a linearisation's and its QP's time. A linearisation after the first guesses
 // the step before (it corrects that step for the curvature it missed, and moved 2-20 %

@@ -53,7 +53,7 @@ void compare_radii(MakeStage make, CheckStep check_step, std::vector<QpRow>& row
     double d[kMaxQpVariables] = {};
     int32_t count = 0;
     auto stage = make();
-    if (solve(stage, radius, d, count) > radius) continue;  // solve_stage makes it again whole
+    if (solve(stage, radius, d, count) > radius) continue;  // solve_stage makes it again, further
     ++tally.within;
     tally.fewer += count < whole_rows;
     for (int j = 0; j < kMaxQpVariables; ++j)
