@@ -138,26 +138,24 @@ double FingerStage::row_bound_now() const {
   return moved + 0.5 * std::max(0.0, row_cap_ - moved);
 }
 
-int32_t FingerStage::bound_rows(QpRow* rows) const {
-  if (bound_ == FingerBound::kHalve) return 0;
+bool FingerStage::bound_face(const double* d, QpRow& row) const {
+  if (bound_ == FingerBound::kHalve) return false;
   // finger_motion(start, now + d) <= bound exactly: sum_j lever_j s_j (now_j + d_j -
-  // start_j) <= bound for every choice of signs s
+  // start_j) <= bound for every choice of signs s, of which d's own signs bind
   const FingerAngles now = angles(state_);
-  const double bound = row_bound_now();
-  int32_t count = 0;
-  for (int signs = 0; signs < (1 << FRUSTA_JOINTS_PER_FINGER); ++signs) {
-    QpRow& row = rows[count++];
-    row.a = {};
-    row.b = -bound;
-    row.key = row_key(RowKind::kMotionBound, signs);
-    for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j) {
-      const double s = (signs >> j) & 1 ? -1.0 : 1.0;
-      const double lever = inputs_.reach.lever[finger_][j];
-      row.a[static_cast<size_t>(j)] = -s * lever;
-      row.b += s * lever * (now[j] - start_[j]);
-    }
+  int signs = 0;
+  for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j)
+    if (now[j] + d[j] - start_[j] < 0.0) signs |= 1 << j;
+  row.a = {};
+  row.b = -row_bound_now();
+  row.key = row_key(RowKind::kMotionBound, signs);
+  for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j) {
+    const double s = (signs >> j) & 1 ? -1.0 : 1.0;
+    const double lever = inputs_.reach.lever[finger_][j];
+    row.a[static_cast<size_t>(j)] = -s * lever;
+    row.b += s * lever * (now[j] - start_[j]);
   }
-  return count;
+  return true;
 }
 
 double finger_clearance(const HandModel& model, const HandPose& pose,

@@ -48,7 +48,7 @@ class FingerStage : public StageEstimate {
   double step_motion(const double* d) const;
   double try_step(const double* d, double s);
   double try_between(double s);
-  int32_t bound_rows(QpRow* rows) const;
+  bool bound_face(const double* d, QpRow& row) const;
 
   // The smallest exact gap between this finger and its candidates.
   double clearance(const HandPose& pose) const;
@@ -58,7 +58,7 @@ class FingerStage : public StageEstimate {
   // ... of the trial of a step the last linearisation's rows were made for: its contact
   // rows name every candidate such a trial can reach
   double step_clearance();
-  double row_bound_now() const;  // what bound_rows keeps the move from the start within
+  double row_bound_now() const;  // what bound_face keeps the move from the start within
   bool beyond_cap(const FingerAngles& next) const;  // further from the start than the cap
   FingerAngles angles(const HandState& state) const;
 
@@ -67,7 +67,7 @@ class FingerStage : public StageEstimate {
   FingerAngles target_;
   FingerAngles start_;
   FingerCap cap_;
-  // what bound_rows keeps the levers' motion within: the cap, by the pose's bound as far
+  // what bound_face keeps the levers' motion within: the cap, by the pose's bound as far
   // as the levers' goes along the move to the target
   double row_cap_;
   // the finger's first-order motion where the stage starts, for its cap's pose bound:

@@ -134,23 +134,23 @@ double PalmStage::step_motion(const double* d) const {
          glm::length(vec3(d[3], d[4], d[5])) * inputs_.reach.hand;
 }
 
-int32_t PalmStage::bound_rows(QpRow* rows) const {
-  if (!slide_) return 0;
+bool PalmStage::bound_face(const double* d, QpRow& row) const {
+  if (!slide_) return false;
   // the step moves no point further than |dt| + |dw| reach <= |dt|_1 + |dw|_1 reach: that
   // kept within half the bound's rest (the rest left for the next linearisations to
-  // press back onto a surface this one stepped off), for every choice of signs
+  // press back onto a surface this one stepped off), for every choice of signs, of which
+  // d's own bind
   const double rest =
       0.5 * std::max(0.0, motion_cap_ - palm_motion(inputs_.reach, start_, placement(state_)));
-  int32_t count = 0;
-  for (int signs = 0; signs < (1 << 6); ++signs) {
-    QpRow& row = rows[count++];
-    for (int k = 0; k < 6; ++k)
-      row.a[static_cast<size_t>(k)] =
-          ((signs >> k) & 1 ? 1.0 : -1.0) * (k < 3 ? 1.0 : inputs_.reach.hand);
-    row.b = -rest;
-    row.key = row_key(RowKind::kMotionBound, signs);
-  }
-  return count;
+  int signs = 0;
+  for (int k = 0; k < 6; ++k)
+    if (d[k] < 0.0) signs |= 1 << k;
+  for (int k = 0; k < 6; ++k)
+    row.a[static_cast<size_t>(k)] =
+        ((signs >> k) & 1 ? 1.0 : -1.0) * (k < 3 ? 1.0 : inputs_.reach.hand);
+  row.b = -rest;
+  row.key = row_key(RowKind::kMotionBound, signs);
+  return true;
 }
 
 double PalmStage::clearance(const HandPose& pose) const {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "solver/qp.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -77,7 +78,7 @@ struct ActiveSet {
 }  // namespace
 
 QpResult solve_projection_qp(int n, const double* weights, const double* target, QpRow* rows,
-                             int32_t row_count, int32_t iteration_cap, double* x) {
+                             int32_t row_count, int32_t iteration_cap, double* x, QpLazyRows lazy) {
   QpResult result;
   // scale to y_j = sqrt(w_j) x_j so the objective is half the squared distance to the
   // target; with unit normals a row's slack is its distance, whatever its units
@@ -86,12 +87,13 @@ QpResult solve_projection_qp(int n, const double* weights, const double* target,
     scale[j] = 1.0 / std::sqrt(weights[j]);
     y[j] = target[j] / scale[j];
   }
-  for (int32_t i = 0; i < row_count; ++i) {
-    QpRow& row = rows[i];
+  auto scale_row = [&](QpRow& row) {
     for (int j = 0; j < n; ++j) row.a[j] *= scale[j];
     row.active = false;
     row.unit = false;
-  }
+  };
+  for (int32_t i = 0; i < row_count; ++i) scale_row(rows[i]);
+  const int32_t row_limit = row_count + std::max(0, lazy.face ? lazy.capacity : 0);
   // A row is made unit the first time it is found violated (most never are): its slack
   // per unit normal is its raw slack over the normal's length, which has the raw one's
   // sign, so a row that holds raw holds made unit too (to rounding, a millionth of the
@@ -113,25 +115,45 @@ QpResult solve_projection_qp(int n, const double* weights, const double* target,
   active.n = n;
   auto finish = [&](QpStatus status) {
     result.status = status;
+    result.rows = row_count;
     result.active = active.size;
     for (int k = 0; k < active.size; ++k) result.active_rows[static_cast<size_t>(k)] = active.row[k];
     for (int j = 0; j < n; ++j) x[j] = y[j] * scale[j];
     return result;
   };
 
+  auto beyond_tolerance = [&](QpRow& row, double& slack) {
+    if (!violated(row)) return false;
+    slack = dot(n, row.a, y) - row.b;
+    return slack < -1e-12 * (1.0 + std::fabs(row.b));
+  };
   for (;;) {
     // the most violated row, a preferred one if any is violated
     int32_t p = -1;
     double worst = 0.0;
     bool preferred = false;
     for (int32_t i = 0; i < row_count; ++i) {
-      if (rows[i].active || (preferred && !rows[i].preferred) || !violated(rows[i])) continue;
-      const double slack = dot(n, rows[i].a, y) - rows[i].b;
+      double slack = 0.0;
+      if (rows[i].active || (preferred && !rows[i].preferred) || !beyond_tolerance(rows[i], slack))
+        continue;
       const double tolerance = 1e-12 * (1.0 + std::fabs(rows[i].b));
-      if (slack < -tolerance && ((rows[i].preferred && !preferred) || slack < worst - tolerance)) {
+      if ((rows[i].preferred && !preferred) || slack < worst - tolerance) {
         worst = slack;
         p = i;
         preferred = rows[i].preferred;
+      }
+    }
+    // every listed row holds: the face of a lazy bound this point lies beyond, if any (a
+    // face listed already holds here, so one found violated is new)
+    if (p < 0 && row_count < row_limit) {
+      Vec at{};
+      for (int j = 0; j < n; ++j) at[j] = y[j] * scale[j];
+      QpRow& face = rows[row_count];
+      face = QpRow{};
+      double slack = 0.0;
+      if (lazy.face(lazy.context, at.data(), &face)) {
+        scale_row(face);
+        if (beyond_tolerance(face, slack)) p = row_count++;
       }
     }
     if (p < 0) break;  // every row holds: optimal

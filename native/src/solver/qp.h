@@ -29,6 +29,7 @@ enum class QpStatus : int { kOptimal = 0, kInfeasible = 1, kIterationCap = 2 };
 struct QpResult {
   QpStatus status = QpStatus::kOptimal;
   int32_t iterations = 0;  // constraints added or dropped
+  int32_t rows = 0;        // rows listed and appended (QpLazyRows)
   int32_t active = 0;      // rows active at the solution
   std::array<int32_t, kMaxQpVariables> active_rows{};  // their indices, the first `active`
 };
@@ -48,11 +49,24 @@ struct QpHints {
   void mark(QpRow* rows, int32_t row_count) const;
 };
 
+// Rows made only where a point needs them: the faces of a bound such as sum_j |c_j x_j|
+// <= r, 2^n rows of which a point meets at most one. face(context, x, row) writes the
+// row of the face that x lies beyond, if any (it may hold there), and returns false when
+// there is none to write. The QP asks once no listed row is violated and appends a face
+// found violated, up to `capacity` of them.
+struct QpLazyRows {
+  bool (*face)(const void* context, const double* x, QpRow* row) = nullptr;
+  const void* context = nullptr;
+  int32_t capacity = 0;  // rows the array has room for beyond row_count
+};
+
 // x holds the solution on return (the best point reached when not optimal). The rows
 // are rescaled in place (scaled variables; a row found violated to a unit normal) so
-// each pass over them is a plain dot product; a row with a zero normal is dropped. Allocates
-// nothing; rows are read in order, so equal inputs give equal outputs.
+// each pass over them is a plain dot product; a row with a zero normal is dropped. Lazy
+// rows are appended after row_count (QpResult::rows counts them too). Allocates nothing;
+// rows are read in order, so equal inputs give equal outputs.
 QpResult solve_projection_qp(int n, const double* weights, const double* target, QpRow* rows,
-                             int32_t row_count, int32_t iteration_cap, double* x);
+                             int32_t row_count, int32_t iteration_cap, double* x,
+                             QpLazyRows lazy = {});
 
 }  // namespace frusta

@@ -88,6 +88,78 @@ TEST(ProjectionQp, PreferringTheLastActiveRowsFindsTheSameOptimumSooner) {
   EXPECT_LT(4 * warm_iterations, 3 * cold_iterations) << warm_iterations << " vs " << cold_iterations;
 }
 
+// A bound sum_j c_j |x_j - centre_j| <= r as lazy faces (QpLazyRows, as the stages' motion
+// bounds): the same optimum as with all 2^n faces listed, the faces made as the answers
+// reach them, never more than one per face.
+struct L1Bound {
+  int n = 0;
+  double c[kMaxQpVariables] = {}, centre[kMaxQpVariables] = {}, r = 0.0;
+  QpRow face(int signs) const {  // sum_j s_j c_j (x_j - centre_j) <= r, s_j = -1 for bit j
+    QpRow row;
+    row.b = -r;
+    for (int j = 0; j < n; ++j) {
+      const double s = (signs >> j) & 1 ? -1.0 : 1.0;
+      row.a[j] = -s * c[j];
+      row.b -= s * c[j] * centre[j];
+    }
+    row.key = signs + 1;
+    return row;
+  }
+  static bool face_at(const void* self, const double* x, QpRow* row) {
+    const L1Bound& b = *static_cast<const L1Bound*>(self);
+    int signs = 0;
+    for (int j = 0; j < b.n; ++j)
+      if (x[j] - b.centre[j] < 0.0) signs |= 1 << j;
+    *row = b.face(signs);
+    return true;
+  }
+};
+
+TEST(ProjectionQp, LazyFacesOfABoundGiveTheOptimumEveryFaceGives) {
+  std::mt19937_64 rng(20261205);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  int binding = 0;
+  int64_t listed_rows = 0, lazy_rows = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    const Problem p = random_problem(rng);
+    L1Bound bound;
+    bound.n = p.n;
+    for (int j = 0; j < p.n; ++j) {
+      bound.c[j] = std::exp(unit(rng));
+      bound.centre[j] = 0.2 * unit(rng);
+    }
+    // around the rows' feasible point often enough to meet them, sometimes infeasible
+    bound.r = 0.05 + std::fabs(unit(rng));
+    std::vector<QpRow> every = p.rows;
+    for (int signs = 0; signs < (1 << p.n); ++signs) every.push_back(bound.face(signs));
+    std::vector<QpRow> lazy = p.rows;
+    lazy.resize(p.rows.size() + (size_t{1} << p.n));
+    double x_every[kMaxQpVariables] = {}, x_lazy[kMaxQpVariables] = {};
+    const QpResult r_every = solve_projection_qp(p.n, p.weights, p.target, every.data(),
+                                                 static_cast<int32_t>(every.size()), 400, x_every);
+    const QpResult r_lazy = solve_projection_qp(p.n, p.weights, p.target, lazy.data(),
+                                                static_cast<int32_t>(p.rows.size()), 400, x_lazy,
+                                                {&L1Bound::face_at, &bound, 1 << p.n});
+    ASSERT_EQ(r_lazy.status, r_every.status) << "trial " << trial;
+    ASSERT_GE(r_lazy.rows, static_cast<int32_t>(p.rows.size()));
+    std::vector<int64_t> keys;
+    for (int32_t i = static_cast<int32_t>(p.rows.size()); i < r_lazy.rows; ++i)
+      keys.push_back(lazy[i].key);
+    std::sort(keys.begin(), keys.end());
+    ASSERT_TRUE(std::adjacent_find(keys.begin(), keys.end()) == keys.end()) << "a face made twice";
+    if (r_every.status != QpStatus::kOptimal) continue;
+    for (int j = 0; j < p.n; ++j) ASSERT_NEAR(x_lazy[j], x_every[j], 1e-9) << "trial " << trial;
+    double l1 = 0.0;
+    for (int j = 0; j < p.n; ++j) l1 += bound.c[j] * std::fabs(x_lazy[j] - bound.centre[j]);
+    ASSERT_LE(l1, bound.r * (1.0 + 1e-9) + 1e-12) << "trial " << trial;
+    binding += !keys.empty();
+    listed_rows += static_cast<int64_t>(every.size());
+    lazy_rows += r_lazy.rows;
+  }
+  EXPECT_GT(binding, 2000) << "the bound should bind in many trials";
+  EXPECT_LT(lazy_rows, listed_rows) << "faces made only where met";
+}
+
 // Multipliers of the rows the solution meets, by non-negative least squares on the
 // stationarity condition W (x - target) = sum_i lambda_i a_i (projected gradient).
 TEST(ProjectionQp, SolutionsMeetTheOptimalityConditions) {

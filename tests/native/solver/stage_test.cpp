@@ -39,8 +39,8 @@ void compare_radii(MakeStage make, CheckStep check_step, std::vector<QpRow>& row
     rows.resize(static_cast<size_t>(stage.row_capacity() + kMaxBoundRows));
     double target[kMaxQpVariables] = {}, weights[kMaxQpVariables] = {};
     count = stage.linearise(rows.data(), target, weights, radius);
-    count += stage.bound_rows(rows.data() + count);
-    solve_projection_qp(stage.dofs(), weights, target, rows.data(), count, 64, d);
+    solve_projection_qp(stage.dofs(), weights, target, rows.data(), count, 64, d,
+                        bound_faces(stage));
     return stage.step_motion(d);
   };
   double whole[kMaxQpVariables] = {};
