@@ -67,19 +67,15 @@ int32_t FingerStage::row_capacity() const {
 
 int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights, double radius) {
   const FingerAngles now = angles(state_);
-  const FingerModel& finger = inputs_.model.fingers[finger_];
   int32_t count = 0;
   for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j) {
     target[j] = target_[j] - now[j];
     weights[j] = inputs_.params.joint_stiffness[j];
-    rows[count].a = {};
-    rows[count].a[j] = 1.0;
-    rows[count].key = row_key(RowKind::kJointLimit, j, 0);
-    rows[count++].b = finger.joint_min[j] - now[j];
-    rows[count].a = {};
-    rows[count].a[j] = -1.0;
-    rows[count].key = row_key(RowKind::kJointLimit, j, 1);
-    rows[count++].b = now[j] - finger.joint_max[j];
+    // a joint limit is made where a step passes it (lazy_rows), or here where the last QP
+    // ended on it: listed, it joins first (QpHints), as it did then
+    for (int side = 0; side < 2; ++side)
+      if (hints_.names(row_key(RowKind::kJointLimit, j, side)))
+        count += limit_row(j, side == 0, now, rows[count]);
   }
   rows_ = rows;
   linearised_ = now;
@@ -138,11 +134,28 @@ double FingerStage::row_bound_now() const {
   return moved + 0.5 * std::max(0.0, row_cap_ - moved);
 }
 
-bool FingerStage::bound_face(const double* d, QpRow& row) const {
-  if (bound_ == FingerBound::kHalve) return false;
+int32_t FingerStage::limit_row(int j, bool lower, const FingerAngles& now, QpRow& row) const {
+  const FingerModel& finger = inputs_.model.fingers[finger_];
+  row.a = {};
+  row.a[static_cast<size_t>(j)] = lower ? 1.0 : -1.0;
+  row.b = lower ? finger.joint_min[j] - now[j] : now[j] - finger.joint_max[j];
+  row.key = row_key(RowKind::kJointLimit, j, lower ? 0 : 1);
+  return 1;
+}
+
+int32_t FingerStage::lazy_rows(const double* d, QpRow* rows) const {
+  const FingerAngles now = angles(state_);
+  const FingerModel& finger = inputs_.model.fingers[finger_];
+  int32_t count = 0;
+  for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j) {
+    const bool below = now[j] + d[j] < finger.joint_min[j];
+    if (below || now[j] + d[j] > finger.joint_max[j])
+      count += limit_row(j, below, now, rows[count]);
+  }
+  if (bound_ == FingerBound::kHalve) return count;
   // finger_motion(start, now + d) <= bound exactly: sum_j lever_j s_j (now_j + d_j -
   // start_j) <= bound for every choice of signs s, of which d's own signs bind
-  const FingerAngles now = angles(state_);
+  QpRow& row = rows[count++];
   int signs = 0;
   for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j)
     if (now[j] + d[j] - start_[j] < 0.0) signs |= 1 << j;
@@ -155,7 +168,7 @@ bool FingerStage::bound_face(const double* d, QpRow& row) const {
     row.a[static_cast<size_t>(j)] = -s * lever;
     row.b += s * lever * (now[j] - start_[j]);
   }
-  return true;
+  return count;
 }
 
 double finger_clearance(const HandModel& model, const HandPose& pose,

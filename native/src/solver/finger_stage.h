@@ -48,7 +48,9 @@ class FingerStage : public StageEstimate {
   double step_motion(const double* d) const;
   double try_step(const double* d, double s);
   double try_between(double s);
-  bool bound_face(const double* d, QpRow& row) const;
+  int32_t lazy_rows(const double* d, QpRow* rows) const;
+  // the row of joint j's lower or upper limit, for a step from `now`; 1 (rows written)
+  int32_t limit_row(int j, bool lower, const FingerAngles& now, QpRow& row) const;
 
   // The smallest exact gap between this finger and its candidates.
   double clearance(const HandPose& pose) const;
@@ -58,7 +60,7 @@ class FingerStage : public StageEstimate {
   // ... of the trial of a step the last linearisation's rows were made for: its contact
   // rows name every candidate such a trial can reach
   double step_clearance();
-  double row_bound_now() const;  // what bound_face keeps the move from the start within
+  double row_bound_now() const;  // what the bound's faces keep the move from the start within
   bool beyond_cap(const FingerAngles& next) const;  // further from the start than the cap
   FingerAngles angles(const HandState& state) const;
 
@@ -67,7 +69,7 @@ class FingerStage : public StageEstimate {
   FingerAngles target_;
   FingerAngles start_;
   FingerCap cap_;
-  // what bound_face keeps the levers' motion within: the cap, by the pose's bound as far
+  // what the bound's faces keep the levers' motion within: the cap, by the pose's bound as far
   // as the levers' goes along the move to the target
   double row_cap_;
   // the finger's first-order motion where the stage starts, for its cap's pose bound:

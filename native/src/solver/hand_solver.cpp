@@ -291,7 +291,7 @@ StageStats HandSolver::solve_within_budget(MakeStage make, bool budget_binds, bo
   // Cut short by its budget: cut short on a straight step towards its target it ends
   // in the air over a convex edge (a step along a surface's tangent lifts off it), its
   // contacts and forces gone for the step. So it slides instead, from where it started,
-  // within rows that keep it in its bound (stage.h, bound_faces).
+  // within rows that keep it in its bound (stage.h, lazy_rows).
   graphic_ = state;
   pose_ = pose;
   auto sliding = make(true);

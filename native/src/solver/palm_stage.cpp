@@ -134,8 +134,8 @@ double PalmStage::step_motion(const double* d) const {
          glm::length(vec3(d[3], d[4], d[5])) * inputs_.reach.hand;
 }
 
-bool PalmStage::bound_face(const double* d, QpRow& row) const {
-  if (!slide_) return false;
+int32_t PalmStage::lazy_rows(const double* d, QpRow* rows) const {
+  if (!slide_) return 0;
   // the step moves no point further than |dt| + |dw| reach <= |dt|_1 + |dw|_1 reach: that
   // kept within half the bound's rest (the rest left for the next linearisations to
   // press back onto a surface this one stepped off), for every choice of signs, of which
@@ -145,12 +145,13 @@ bool PalmStage::bound_face(const double* d, QpRow& row) const {
   int signs = 0;
   for (int k = 0; k < 6; ++k)
     if (d[k] < 0.0) signs |= 1 << k;
+  QpRow& row = rows[0];
   for (int k = 0; k < 6; ++k)
     row.a[static_cast<size_t>(k)] =
         ((signs >> k) & 1 ? 1.0 : -1.0) * (k < 3 ? 1.0 : inputs_.reach.hand);
   row.b = -rest;
   row.key = row_key(RowKind::kMotionBound, signs);
-  return true;
+  return 1;
 }
 
 double PalmStage::clearance(const HandPose& pose) const {

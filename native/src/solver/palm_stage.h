@@ -39,7 +39,7 @@ constexpr double kRecoveryTolerances = 10.0;
 class PalmStage : public StageEstimate {
  public:
   // motion_cap: how far (m) any point may move from where the stage starts; heading: the
-  // way it may not go back; slide: step within bound_face (the hand held back by its
+  // way it may not go back; slide: step within its bound's faces (the hand held back by its
   // continuity budget); start_gap: clearance(pose), which the caller has measured
   PalmStage(const StageInputs& inputs, const PalmPlacement& target, double motion_cap,
             const PalmHeading& heading, bool slide, QpHints& hints, HandState& state,
@@ -54,7 +54,7 @@ class PalmStage : public StageEstimate {
   double step_motion(const double* d) const;
   double try_step(const double* d, double s);
   double try_between(double s);
-  bool bound_face(const double* d, QpRow& row) const;
+  int32_t lazy_rows(const double* d, QpRow* rows) const;
 
   // The smallest exact gap between the whole hand and every candidate.
   double clearance(const HandPose& pose) const;

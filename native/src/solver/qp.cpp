@@ -93,7 +93,7 @@ QpResult solve_projection_qp(int n, const double* weights, const double* target,
     row.unit = false;
   };
   for (int32_t i = 0; i < row_count; ++i) scale_row(rows[i]);
-  const int32_t row_limit = row_count + std::max(0, lazy.face ? lazy.capacity : 0);
+  const int32_t row_limit = row_count + std::max(0, lazy.rows_at ? lazy.capacity : 0);
   // A row is made unit the first time it is found violated (most never are): its slack
   // per unit normal is its raw slack over the normal's length, which has the raw one's
   // sign, so a row that holds raw holds made unit too (to rounding, a millionth of the
@@ -143,17 +143,27 @@ QpResult solve_projection_qp(int n, const double* weights, const double* target,
         preferred = rows[i].preferred;
       }
     }
-    // every listed row holds: the face of a lazy bound this point lies beyond, if any (a
-    // face listed already holds here, so one found violated is new)
+    // every listed row holds: the most violated of the lazy rows this point lies beyond,
+    // if any (a row listed already holds here, so one found violated is new)
     if (p < 0 && row_count < row_limit) {
       Vec at{};
       for (int j = 0; j < n; ++j) at[j] = y[j] * scale[j];
-      QpRow& face = rows[row_count];
-      face = QpRow{};
-      double slack = 0.0;
-      if (lazy.face(lazy.context, at.data(), &face)) {
-        scale_row(face);
-        if (beyond_tolerance(face, slack)) p = row_count++;
+      QpRow made[kMaxLazyRowsAtOnce];
+      const int32_t count =
+          std::min(lazy.rows_at(lazy.context, at.data(), made), kMaxLazyRowsAtOnce);
+      int32_t most = -1;
+      for (int32_t k = 0; k < count; ++k) {
+        double slack = 0.0;
+        scale_row(made[k]);
+        made[k].preferred = false;
+        if (beyond_tolerance(made[k], slack) && slack < worst) {
+          worst = slack;
+          most = k;
+        }
+      }
+      if (most >= 0) {
+        rows[row_count] = made[most];
+        p = row_count++;
       }
     }
     if (p < 0) break;  // every row holds: optimal

@@ -46,16 +46,22 @@ struct QpHints {
   double first_step = INFINITY;
 
   void keep(const QpRow* rows, const QpResult& result);
+  bool names(int64_t key) const {
+    for (int32_t k = 0; k < count; ++k)
+      if (keys[static_cast<size_t>(k)] == key) return true;
+    return false;
+  }
   void mark(QpRow* rows, int32_t row_count) const;
 };
 
 // Rows made only where a point needs them: the faces of a bound such as sum_j |c_j x_j|
-// <= r, 2^n rows of which a point meets at most one. face(context, x, row) writes the
-// row of the face that x lies beyond, if any (it may hold there), and returns false when
-// there is none to write. The QP asks once no listed row is violated and appends a face
-// found violated, up to `capacity` of them.
+// <= r (2^n rows, of which a point meets at most one), bounds on single variables.
+// rows_at(context, x, rows) writes up to kMaxLazyRowsAtOnce rows that x may lie beyond
+// and returns how many. The QP asks once no listed row is violated and appends the most
+// violated of them, up to `capacity` rows in all.
+constexpr int32_t kMaxLazyRowsAtOnce = kMaxQpVariables + 1;
 struct QpLazyRows {
-  bool (*face)(const void* context, const double* x, QpRow* row) = nullptr;
+  int32_t (*rows_at)(const void* context, const double* x, QpRow* rows) = nullptr;
   const void* context = nullptr;
   int32_t capacity = 0;  // rows the array has room for beyond row_count
 };

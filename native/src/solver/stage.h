@@ -100,10 +100,11 @@ inline double row_bound(const SolverParams& params, double value, double reach) 
 //     -infinity when that moves the hand further than the stage allows;
 //   double try_between(double s): the same for the trial a fraction s of the way from
 //     the last estimate save() kept to the current one;
-//   bool bound_face(const double* d, QpRow& row): for a stage that steps within rows
-//     keeping it in its motion bound (one sliding, a finger aimed beyond its cap), the
-//     row of that bound's face (one of at most kMaxBoundRows) which the step d lies
-//     beyond, if any; false for a stage that does not;
+//   int32_t lazy_rows(const double* d, QpRow* rows): rows the step d may lie beyond,
+//     made only for the steps that reach them (QpLazyRows, at most kMaxLazyRowsAtOnce):
+//     the joint limits d passes, and for a stage that steps within rows keeping it in its
+//     motion bound (one sliding, a finger aimed beyond its cap) the face of that bound d
+//     lies beyond (one of at most 2^6);
 //   bool capped(): whether some trial was refused for moving too far (or, stepping
 //     within bound rows, stopped at the cap by them);
 //   void commit(): make the last trial the current estimate;
@@ -120,7 +121,9 @@ inline double row_bound(const SolverParams& params, double value, double reach) 
 // jumped when a step at last landed clear (8 mm in a step on a 30-degree wedge).
 constexpr int kMaxHalvings = 16;  // 2^-16 of a step is not worth re-linearising for
 constexpr int kBisections = 8;  // 1/256 of the last step: less is not worth its cost
-constexpr int32_t kMaxBoundRows = 64;  // the palm's 2^6 faces of its motion bound
+// the rows a QP may make lazily: the palm's 2^6 faces of its motion bound, a finger's
+// 2^4 and its 8 joint limits
+constexpr int32_t kMaxLazyRows = 64;
 constexpr double kWorkingDepth = 2.5e-4;  // metres
 // A linearisation makes only the rows of spheres a step of a guessed size can reach;
 // where its step goes further, it is made again for that step (solve_stage). The rows of
@@ -142,15 +145,16 @@ constexpr double kRedoRadius = 1.5;
 // A hand held back by its budget steps within rows that keep it inside its bound
 // (sliding as far as they allow, pressed on the surface by the target behind it), rather
 // than towards its target cut short (off the surface, in the air). The bound's faces are
-// 2^dofs rows of which a step meets one, so the QP makes them as its answers reach them
-// (QpLazyRows): 16 of a finger QP's 36 rows on the 10^4-leaf grasp were faces, almost
-// never met.
+// 2^dofs rows of which a step meets one, and a step meets few joint limits, so the QP
+// makes those rows as its answers reach them (QpLazyRows): 16 faces and 8 limits were
+// 24 of a finger QP's 36 rows on the 10^4-leaf grasp, scanned at every change of its
+// active set and almost never met.
 template <class Problem>
-QpLazyRows bound_faces(const Problem& problem) {
-  return {[](const void* p, const double* d, QpRow* row) {
-            return static_cast<const Problem*>(p)->bound_face(d, *row);
+QpLazyRows lazy_rows(const Problem& problem) {
+  return {[](const void* p, const double* d, QpRow* rows) {
+            return static_cast<const Problem*>(p)->lazy_rows(d, rows);
           },
-          &problem, kMaxBoundRows};
+          &problem, kMaxLazyRows};
 }
 
 // `deadline`: a linearisation that, at the average cost of this stage's so far, would
@@ -164,7 +168,7 @@ StageStats solve_stage(Problem& problem, const SolverParams& params, std::vector
   const Clock::time_point started = timed ? Clock::now() : Clock::time_point();
   StageStats stats;
   const int n = problem.dofs();
-  const size_t capacity = static_cast<size_t>(problem.row_capacity() + kMaxBoundRows);
+  const size_t capacity = static_cast<size_t>(problem.row_capacity() + kMaxLazyRows);
   if (rows.size() < capacity) rows.resize(capacity);
   const double working_floor = std::min(problem.floor(), -kWorkingDepth);
   bool safe = true;
@@ -174,7 +178,7 @@ StageStats solve_stage(Problem& problem, const SolverParams& params, std::vector
     const int32_t count = problem.linearise(rows.data(), target, weights, radius);
     problem.hints().mark(rows.data(), count);
     const QpResult qp = solve_projection_qp(n, weights, target, rows.data(), count,
-                                            params.qp_iteration_cap, d, bound_faces(problem));
+                                            params.qp_iteration_cap, d, lazy_rows(problem));
     problem.hints().keep(rows.data(), qp);
     stats.qp_iterations += qp.iterations;
     return qp;

@@ -88,9 +88,9 @@ TEST(ProjectionQp, PreferringTheLastActiveRowsFindsTheSameOptimumSooner) {
   EXPECT_LT(4 * warm_iterations, 3 * cold_iterations) << warm_iterations << " vs " << cold_iterations;
 }
 
-// A bound sum_j c_j |x_j - centre_j| <= r as lazy faces (QpLazyRows, as the stages' motion
-// bounds): the same optimum as with all 2^n faces listed, the faces made as the answers
-// reach them, never more than one per face.
+// A bound sum_j c_j |x_j - centre_j| <= r and lower limits as lazy rows (QpLazyRows, as
+// the stages' motion bounds and a finger's joint limits): the same optimum as with every
+// row listed, rows made as the answers reach them, never one twice.
 struct L1Bound {
   int n = 0;
   double c[kMaxQpVariables] = {}, centre[kMaxQpVariables] = {}, r = 0.0;
@@ -105,17 +105,29 @@ struct L1Bound {
     row.key = signs + 1;
     return row;
   }
-  static bool face_at(const void* self, const double* x, QpRow* row) {
+  // and x_j >= low_j, as a finger's joint limits: several made at once where x passes them
+  double low[kMaxQpVariables] = {};
+  QpRow limit(int j) const {
+    QpRow row;
+    row.a[j] = 1.0;
+    row.b = low[j];
+    row.key = 1000 + j;
+    return row;
+  }
+  static int32_t rows_at(const void* self, const double* x, QpRow* rows) {
     const L1Bound& b = *static_cast<const L1Bound*>(self);
+    int32_t count = 0;
     int signs = 0;
-    for (int j = 0; j < b.n; ++j)
+    for (int j = 0; j < b.n; ++j) {
       if (x[j] - b.centre[j] < 0.0) signs |= 1 << j;
-    *row = b.face(signs);
-    return true;
+      if (x[j] < b.low[j]) rows[count++] = b.limit(j);
+    }
+    rows[count++] = b.face(signs);
+    return count;
   }
 };
 
-TEST(ProjectionQp, LazyFacesOfABoundGiveTheOptimumEveryFaceGives) {
+TEST(ProjectionQp, LazyRowsGiveTheOptimumEveryRowListedGives) {
   std::mt19937_64 rng(20261205);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   int binding = 0;
@@ -127,30 +139,35 @@ TEST(ProjectionQp, LazyFacesOfABoundGiveTheOptimumEveryFaceGives) {
     for (int j = 0; j < p.n; ++j) {
       bound.c[j] = std::exp(unit(rng));
       bound.centre[j] = 0.2 * unit(rng);
+      bound.low[j] = trial % 2 ? -1e9 : -0.3 - 0.5 * std::fabs(unit(rng));
     }
     // around the rows' feasible point often enough to meet them, sometimes infeasible
     bound.r = 0.05 + std::fabs(unit(rng));
     std::vector<QpRow> every = p.rows;
     for (int signs = 0; signs < (1 << p.n); ++signs) every.push_back(bound.face(signs));
+    for (int j = 0; j < p.n; ++j) every.push_back(bound.limit(j));
     std::vector<QpRow> lazy = p.rows;
-    lazy.resize(p.rows.size() + (size_t{1} << p.n));
+    lazy.resize(p.rows.size() + (size_t{1} << p.n) + static_cast<size_t>(p.n));
     double x_every[kMaxQpVariables] = {}, x_lazy[kMaxQpVariables] = {};
     const QpResult r_every = solve_projection_qp(p.n, p.weights, p.target, every.data(),
                                                  static_cast<int32_t>(every.size()), 400, x_every);
     const QpResult r_lazy = solve_projection_qp(p.n, p.weights, p.target, lazy.data(),
                                                 static_cast<int32_t>(p.rows.size()), 400, x_lazy,
-                                                {&L1Bound::face_at, &bound, 1 << p.n});
+                                                {&L1Bound::rows_at, &bound, (1 << p.n) + p.n});
     ASSERT_EQ(r_lazy.status, r_every.status) << "trial " << trial;
     ASSERT_GE(r_lazy.rows, static_cast<int32_t>(p.rows.size()));
     std::vector<int64_t> keys;
     for (int32_t i = static_cast<int32_t>(p.rows.size()); i < r_lazy.rows; ++i)
       keys.push_back(lazy[i].key);
     std::sort(keys.begin(), keys.end());
-    ASSERT_TRUE(std::adjacent_find(keys.begin(), keys.end()) == keys.end()) << "a face made twice";
+    ASSERT_TRUE(std::adjacent_find(keys.begin(), keys.end()) == keys.end()) << "a row made twice";
     if (r_every.status != QpStatus::kOptimal) continue;
     for (int j = 0; j < p.n; ++j) ASSERT_NEAR(x_lazy[j], x_every[j], 1e-9) << "trial " << trial;
     double l1 = 0.0;
-    for (int j = 0; j < p.n; ++j) l1 += bound.c[j] * std::fabs(x_lazy[j] - bound.centre[j]);
+    for (int j = 0; j < p.n; ++j) {
+      l1 += bound.c[j] * std::fabs(x_lazy[j] - bound.centre[j]);
+      ASSERT_GE(x_lazy[j], bound.low[j] - 1e-9) << "trial " << trial;
+    }
     ASSERT_LE(l1, bound.r * (1.0 + 1e-9) + 1e-12) << "trial " << trial;
     binding += !keys.empty();
     listed_rows += static_cast<int64_t>(every.size());

@@ -36,11 +36,10 @@ template <class MakeStage, class CheckStep>
 void compare_radii(MakeStage make, CheckStep check_step, std::vector<QpRow>& rows, Tally& tally,
                    const char* what, int step) {
   auto solve = [&](auto& stage, double radius, double* d, int32_t& count) {
-    rows.resize(static_cast<size_t>(stage.row_capacity() + kMaxBoundRows));
+    rows.resize(static_cast<size_t>(stage.row_capacity() + kMaxLazyRows));
     double target[kMaxQpVariables] = {}, weights[kMaxQpVariables] = {};
     count = stage.linearise(rows.data(), target, weights, radius);
-    solve_projection_qp(stage.dofs(), weights, target, rows.data(), count, 64, d,
-                        bound_faces(stage));
+    solve_projection_qp(stage.dofs(), weights, target, rows.data(), count, 64, d, lazy_rows(stage));
     return stage.step_motion(d);
   };
   double whole[kMaxQpVariables] = {};
