@@ -155,7 +155,6 @@ QpResult solve_projection_qp(int n, const double* weights, const double* target,
       for (int32_t k = 0; k < count; ++k) {
         double slack = 0.0;
         scale_row(made[k]);
-        made[k].preferred = false;
         if (beyond_tolerance(made[k], slack) && slack < worst) {
           worst = slack;
           most = k;
@@ -220,11 +219,7 @@ void QpHints::keep(const QpRow* rows, const QpResult& result) {
 }
 
 void QpHints::mark(QpRow* rows, int32_t row_count) const {
-  for (int32_t i = 0; i < row_count; ++i) {
-    rows[i].preferred = false;
-    for (int32_t k = 0; k < count && !rows[i].preferred; ++k)
-      rows[i].preferred = rows[i].key != 0 && rows[i].key == keys[static_cast<size_t>(k)];
-  }
+  for (int32_t i = 0; i < row_count; ++i) rows[i].preferred = rows[i].key != 0 && names(rows[i].key);
 }
 
 }  // namespace frusta

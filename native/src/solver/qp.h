@@ -46,6 +46,7 @@ struct QpHints {
   double first_step = INFINITY;
 
   void keep(const QpRow* rows, const QpResult& result);
+  // whether the last QP ended with the row of this key active
   bool names(int64_t key) const {
     for (int32_t k = 0; k < count; ++k)
       if (keys[static_cast<size_t>(k)] == key) return true;
