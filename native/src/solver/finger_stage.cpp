@@ -75,7 +75,7 @@ int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights, dou
     // ended on it: listed, it joins first (QpHints), as it did then
     for (int side = 0; side < 2; ++side)
       if (hints_.names(row_key(RowKind::kJointLimit, j, side)))
-        count += limit_row(j, side == 0, now, rows[count]);
+        rows[count++] = limit_row(j, side == 0, now);
   }
   rows_ = rows;
   linearised_ = now;
@@ -134,13 +134,13 @@ double FingerStage::row_bound_now() const {
   return moved + 0.5 * std::max(0.0, row_cap_ - moved);
 }
 
-int32_t FingerStage::limit_row(int j, bool lower, const FingerAngles& now, QpRow& row) const {
+QpRow FingerStage::limit_row(int j, bool lower, const FingerAngles& now) const {
   const FingerModel& finger = inputs_.model.fingers[finger_];
-  row.a = {};
+  QpRow row;
   row.a[static_cast<size_t>(j)] = lower ? 1.0 : -1.0;
   row.b = lower ? finger.joint_min[j] - now[j] : now[j] - finger.joint_max[j];
   row.key = row_key(RowKind::kJointLimit, j, lower ? 0 : 1);
-  return 1;
+  return row;
 }
 
 int32_t FingerStage::lazy_rows(const double* d, QpRow* rows) const {
@@ -150,7 +150,7 @@ int32_t FingerStage::lazy_rows(const double* d, QpRow* rows) const {
   for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j) {
     const bool below = now[j] + d[j] < finger.joint_min[j];
     if (below || now[j] + d[j] > finger.joint_max[j])
-      count += limit_row(j, below, now, rows[count]);
+      rows[count++] = limit_row(j, below, now);
   }
   if (bound_ == FingerBound::kHalve) return count;
   // finger_motion(start, now + d) <= bound exactly: sum_j lever_j s_j (now_j + d_j -

@@ -49,8 +49,6 @@ class FingerStage : public StageEstimate {
   double try_step(const double* d, double s);
   double try_between(double s);
   int32_t lazy_rows(const double* d, QpRow* rows) const;
-  // the row of joint j's lower or upper limit, for a step from `now`; 1 (rows written)
-  int32_t limit_row(int j, bool lower, const FingerAngles& now, QpRow& row) const;
 
   // The smallest exact gap between this finger and its candidates.
   double clearance(const HandPose& pose) const;
@@ -60,6 +58,8 @@ class FingerStage : public StageEstimate {
   // ... of the trial of a step the last linearisation's rows were made for: its contact
   // rows name every candidate such a trial can reach
   double step_clearance();
+  // the row of joint j's lower or upper limit, for a step from `now`
+  QpRow limit_row(int j, bool lower, const FingerAngles& now) const;
   double row_bound_now() const;  // what the bound's faces keep the move from the start within
   bool beyond_cap(const FingerAngles& next) const;  // further from the start than the cap
   FingerAngles angles(const HandState& state) const;
