@@ -228,8 +228,7 @@ TEST(GapBoundsProperty, MayTouchHoldsBelowNeitherAndFailsAboveNeitherNearOrMoved
   log.report();
   std::printf(
       "[ gap_bounds ] widest bounds around a positive exact gap %.3g of the world scale; %llu "
-      "moved "
-      "contacts\n",
+      "moved contacts\n",
       loosest, static_cast<unsigned long long>(moved_tested));
   property::record("gap_bounds_width_relative", loosest);
   EXPECT_LT(loosest, 1e-11);  // rounding only: the gap itself, not a looser bound of it
