@@ -30,8 +30,9 @@ set(ENV{PKG_CONFIG_SYSROOT_DIR} "")
 set(CMAKE_EXE_LINKER_FLAGS_INIT "-static")
 set(CMAKE_SHARED_LINKER_FLAGS_INIT "-static")
 
-# Debian's wine64 package has no wrapper on PATH
+# Debian's wine64 package has no wrapper on PATH; wine-run starts a listing of a test
+# program's tests again where Wine failed to start it
 find_program(FRUSTA_WINE64 NAMES wine64 PATHS /usr/lib/wine NO_CMAKE_FIND_ROOT_PATH)
 if(FRUSTA_WINE64)
-  set(CMAKE_CROSSCOMPILING_EMULATOR ${FRUSTA_WINE64})
+  set(CMAKE_CROSSCOMPILING_EMULATOR ${CMAKE_CURRENT_LIST_DIR}/wine-run ${FRUSTA_WINE64})
 endif()
