@@ -31,30 +31,39 @@ int32_t walk_overlapping_leaves(const SphereTree& a, const SphereTree& b, const 
   struct Entry {
     int32_t a, b;
   };
-  // each pop pushes at most one node's children, and a pair descends one tree a level:
-  // at most (depth_a + depth_b) levels of kMaxBranching - 1 entries left behind
+  // every pair on the stack overlaps: a pair is tested as its parent pair opens, against
+  // the side that stays, whose sphere (b's placed in a's frame) is made once for all of
+  // the children, and pushed only if it passes. Each pop pushes at most one node's
+  // children, and a pair descends one tree a level: at most (depth_a + depth_b) levels of
+  // kMaxBranching - 1 entries left behind
   Entry stack[2 * kMaxTreeDepth * kMaxBranching + 1];
   int top = 0;
-  stack[top++] = {0, 0};
-  int32_t tested = 0;
-  while (top > 0) {
-    const Entry e = stack[--top];
-    const Sphere sa = sphere_a(e.a), sb = sphere_b(e.b);
-    ++tested;
+  auto overlap = [margin](const Sphere& sa, const Sphere& sb) {
     const vec3 d = sa.center - sb.center;
     const double reach = sa.radius + sb.radius + margin;
-    if (glm::dot(d, d) >= reach * reach) continue;
+    return glm::dot(d, d) < reach * reach;
+  };
+  int32_t tested = 1;
+  if (overlap(sphere_a(0), sphere_b(0))) stack[top++] = {0, 0};
+  while (top > 0) {
+    const Entry e = stack[--top];
     const TreeNode& na = a.nodes[static_cast<size_t>(e.a)];
     const TreeNode& nb = b.nodes[static_cast<size_t>(e.b)];
     if (na.count == 0 && nb.count == 0) {
-      emit(na.first, nb.first, sa, sb);
+      emit(na.first, nb.first, sphere_a(e.a), sphere_b(e.b));
       continue;
     }
-    // descend a where it is an inner node and no smaller than b (or b is a leaf)
+    // descend a where it is an inner node and no smaller than b (or b is a leaf); the
+    // children pushed last-first so that they pop in array order
+    const Sphere sa = sphere_a(e.a), sb = sphere_b(e.b);
     if (na.count > 0 && (nb.count == 0 || sa.radius >= sb.radius)) {
-      for (int32_t c = na.count - 1; c >= 0; --c) stack[top++] = {na.first + c, e.b};
+      tested += na.count;
+      for (int32_t c = na.first + na.count - 1; c >= na.first; --c)
+        if (overlap(sphere_a(c), sb)) stack[top++] = {c, e.b};
     } else {
-      for (int32_t c = nb.count - 1; c >= 0; --c) stack[top++] = {e.a, nb.first + c};
+      tested += nb.count;
+      for (int32_t c = nb.first + nb.count - 1; c >= nb.first; --c)
+        if (overlap(sa, sphere_b(c))) stack[top++] = {e.a, c};
     }
   }
   return tested;
