@@ -33,15 +33,15 @@ bool ContactCache::touch(int32_t sa, uint32_t ga, const ContactSide& a, int32_t 
                          const ContactSide& b, double dt, ObjectWrench* on_a, ObjectWrench* on_b) {
   const RigidPose now = relative_pose(a.def->pose, b.def->pose);
   Entry* entry = nullptr;
-  Entry* free = nullptr;
+  Entry* room = nullptr;  // free, or else the entry met longest ago and not this step
   for (Entry& e : entries_) {
     if (e.sa == sa && e.sb == sb && e.ga == ga && e.gb == gb) entry = &e;
-    if (e.sa < 0 && !free) free = &e;
+    if (e.met < step_ && (!room || (room->sa >= 0 && (e.sa < 0 || e.met < room->met)))) room = &e;
   }
   ContactPatchSums patch;
   if (entry && moved(entry->b_in_a, now, entry->reach_b) <= kMargin) {
     ++reuses_;
-    entry->used = true;
+    entry->met = step_;
     const LeafPair* kept = &leaves_[static_cast<size_t>(entry - entries_.data()) * kCachedLeafPairs];
     for (int32_t i = 0; i < entry->count; ++i) {
       const Sphere& la = a.tree->leaves[static_cast<size_t>(kept[i].a)];
@@ -52,7 +52,7 @@ bool ContactCache::touch(int32_t sa, uint32_t ga, const ContactSide& a, int32_t 
     return add_patch_wrench(patch, a, b, dt, on_a, on_b);
   }
   ++walks_;
-  if (!entry) entry = free;  // none free: this pair is walked every step
+  if (!entry) entry = room;  // none: every entry met this step, so this pair is walked
   LeafPair* kept =
       entry ? &leaves_[static_cast<size_t>(entry - entries_.data()) * kCachedLeafPairs] : nullptr;
   int32_t count = 0;
@@ -67,19 +67,12 @@ bool ContactCache::touch(int32_t sa, uint32_t ga, const ContactSide& a, int32_t 
   if (entry) {
     if (count <= kCachedLeafPairs) {
       const Sphere root = b.tree->node_sphere(0);
-      *entry = Entry{sa, sb, ga, gb, now, glm::length(root.center) + root.radius, count, true};
+      *entry = Entry{sa, sb, ga, gb, now, glm::length(root.center) + root.radius, count, step_};
     } else {
       entry->sa = -1;  // too many to keep
     }
   }
   return add_patch_wrench(patch, a, b, dt, on_a, on_b);
-}
-
-void ContactCache::end_step() {
-  for (Entry& e : entries_) {
-    if (!e.used) e.sa = -1;
-    e.used = false;
-  }
 }
 
 }  // namespace frusta

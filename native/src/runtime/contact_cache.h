@@ -31,8 +31,10 @@ class ContactCache {
   // generations (an object added in a slot is not the one cached for it).
   bool touch(int32_t sa, uint32_t ga, const ContactSide& a, int32_t sb, uint32_t gb,
              const ContactSide& b, double dt, ObjectWrench* on_a, ObjectWrench* on_b);
-  // The step's end: pairs no touch() met this step are forgotten.
-  void end_step();
+  // The step's end. Pairs no touch() met stay kept (a pair of objects asleep is met
+  // again, unmoved, when one wakes) until a pair that has none needs the room: the one
+  // met longest ago gives it up.
+  void end_step() { ++step_; }
 
   // Pairs walked, and pairs answered from the cache, so far.
   int64_t walks() const { return walks_; }
@@ -48,12 +50,13 @@ class ContactCache {
     RigidPose b_in_a;     // when walked
     double reach_b = 0.0;  // b's farthest leaf from its origin, metres
     int32_t count = 0;     // leaf pairs kept, from entry * kCachedLeafPairs
-    bool used = false;     // this step
+    int64_t met = -1;      // the step touch() last met it
   };
 
   std::vector<Entry> entries_;
   std::vector<LeafPair> leaves_;
   int64_t walks_ = 0, reuses_ = 0;
+  int64_t step_ = 0;  // end_step() calls so far
 };
 
 }  // namespace frusta

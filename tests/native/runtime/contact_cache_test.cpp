@@ -72,5 +72,60 @@ TEST(ContactCache, AnObjectAtRestIsNotWalkedAgain) {
   EXPECT_EQ(cache.reuses(), 99);
 }
 
+// A pair of objects asleep is met by no touch(); when one wakes, unmoved, its pair is
+// answered from what was kept (forgotten at the step's end, it was walked again: a box
+// resting on a box spent ~0.5 ms on that walk each time it woke)
+TEST(ContactCache, APairMetAgainAfterStepsWithoutItIsNotWalkedAgain) {
+  std::mt19937_64 rng(8);
+  SphereTree tree;
+  ASSERT_EQ(build_sphere_tree(testing::random_leaves(rng, 400, 0), {4}, &tree), FRUSTA_OK);
+  ObjectDef a, b;
+  b.pose.position = vec3(0.1, 0.0, 0.0);
+  ContactCache cache;
+  ObjectWrench first_a, first_b, again_a, again_b;
+  const bool first = cache.touch(0, 1, {&tree, &a, 1.0}, 1, 1, {&tree, &b, 0.0}, 1e-3, &first_a, &first_b);
+  for (int step = 0; step < 500; ++step) cache.end_step();
+  const bool again = cache.touch(0, 1, {&tree, &a, 1.0}, 1, 1, {&tree, &b, 0.0}, 1e-3, &again_a, &again_b);
+  EXPECT_TRUE(first);
+  EXPECT_EQ(again, first);
+  EXPECT_EQ(again_a.force, first_a.force);
+  EXPECT_EQ(again_b.torque, first_b.torque);
+  EXPECT_EQ(cache.walks(), 1);
+  EXPECT_EQ(cache.reuses(), 1);
+}
+
+// With more pairs than it has room for, a pair that has none takes the room of the one
+// met longest ago (not one met this step): the pairs met since stay answered from it.
+TEST(ContactCache, APairWithoutRoomTakesThatOfThePairMetLongestAgo) {
+  std::mt19937_64 rng(9);
+  SphereTree tree;
+  ASSERT_EQ(build_sphere_tree(testing::random_leaves(rng, 200, 0), {4}, &tree), FRUSTA_OK);
+  ObjectDef a, b;
+  b.pose.position = vec3(0.1, 0.0, 0.0);
+  ContactCache cache;
+  auto touch = [&](int32_t pair) {
+    ObjectWrench on_a, on_b;
+    cache.touch(2 * pair, 1, {&tree, &a, 1.0}, 2 * pair + 1, 1, {&tree, &b, 0.0}, 1e-3, &on_a, &on_b);
+  };
+  constexpr int32_t kPairs = ContactCache::kCachedPairs;
+  for (int32_t pair = 0; pair < kPairs; ++pair) {  // one pair a step: pair 0 met first
+    touch(pair);
+    cache.end_step();
+  }
+  touch(kPairs);  // a pair more: pair 0 gives up its room
+  EXPECT_EQ(cache.walks(), kPairs + 1);
+  touch(kPairs);  // met again in the same step: kept
+  for (int32_t pair = 1; pair < kPairs; ++pair) touch(pair);
+  EXPECT_EQ(cache.walks(), kPairs + 1);
+  EXPECT_EQ(cache.reuses(), kPairs);
+  touch(0);  // every room met this step: walked, and kept nowhere
+  touch(0);
+  EXPECT_EQ(cache.walks(), kPairs + 3);
+  cache.end_step();
+  touch(0);  // the next step: it takes the room met longest ago
+  touch(0);
+  EXPECT_EQ(cache.walks(), kPairs + 4);
+}
+
 }  // namespace
 }  // namespace frusta
