@@ -33,10 +33,10 @@ bool ContactCache::touch(int32_t sa, uint32_t ga, const ContactSide& a, int32_t 
                          const ContactSide& b, double dt, ObjectWrench* on_a, ObjectWrench* on_b) {
   const RigidPose now = relative_pose(a.def->pose, b.def->pose);
   Entry* entry = nullptr;
-  Entry* room = nullptr;  // free, or else the entry met longest ago and not this step
+  Entry* room = nullptr;  // the entry met longest ago (a free one never), not this step
   for (Entry& e : entries_) {
     if (e.sa == sa && e.sb == sb && e.ga == ga && e.gb == gb) entry = &e;
-    if (e.met < step_ && (!room || (room->sa >= 0 && (e.sa < 0 || e.met < room->met)))) room = &e;
+    if (e.met < step_ && (!room || e.met < room->met)) room = &e;
   }
   ContactPatchSums patch;
   if (entry && moved(entry->b_in_a, now, entry->reach_b) <= kMargin) {
@@ -69,7 +69,7 @@ bool ContactCache::touch(int32_t sa, uint32_t ga, const ContactSide& a, int32_t 
       const Sphere root = b.tree->node_sphere(0);
       *entry = Entry{sa, sb, ga, gb, now, glm::length(root.center) + root.radius, count, step_};
     } else {
-      entry->sa = -1;  // too many to keep
+      *entry = Entry{};  // too many to keep: free
     }
   }
   return add_patch_wrench(patch, a, b, dt, on_a, on_b);

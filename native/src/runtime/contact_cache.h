@@ -45,12 +45,12 @@ class ContactCache {
     int32_t a, b;
   };
   struct Entry {
-    int32_t sa = -1, sb = -1;  // sa -1: free
+    int32_t sa = -1, sb = -1;  // sa -1: free (never matches a pair)
     uint32_t ga = 0, gb = 0;
     RigidPose b_in_a;     // when walked
     double reach_b = 0.0;  // b's farthest leaf from its origin, metres
     int32_t count = 0;     // leaf pairs kept, from entry * kCachedLeafPairs
-    int64_t met = -1;      // the step touch() last met it
+    int64_t met = -1;      // the step touch() last met it; -1: free
   };
 
   std::vector<Entry> entries_;

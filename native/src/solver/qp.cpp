@@ -122,10 +122,12 @@ QpResult solve_projection_qp(int n, const double* weights, const double* target,
     return result;
   };
 
+  // how far a row's slack may fall below zero and still count as holding (rounding)
+  auto tolerance = [](const QpRow& row) { return 1e-12 * (1.0 + std::fabs(row.b)); };
   auto beyond_tolerance = [&](QpRow& row, double& slack) {
     if (!violated(row)) return false;
     slack = dot(n, row.a, y) - row.b;
-    return slack < -1e-12 * (1.0 + std::fabs(row.b));
+    return slack < -tolerance(row);
   };
   for (;;) {
     // the most violated row, a preferred one if any is violated
@@ -136,8 +138,7 @@ QpResult solve_projection_qp(int n, const double* weights, const double* target,
       double slack = 0.0;
       if (rows[i].active || (preferred && !rows[i].preferred) || !beyond_tolerance(rows[i], slack))
         continue;
-      const double tolerance = 1e-12 * (1.0 + std::fabs(rows[i].b));
-      if ((rows[i].preferred && !preferred) || slack < worst - tolerance) {
+      if ((rows[i].preferred && !preferred) || slack < worst - tolerance(rows[i])) {
         worst = slack;
         p = i;
         preferred = rows[i].preferred;
