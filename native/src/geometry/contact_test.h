@@ -35,8 +35,7 @@ inline bool may_touch(const SegmentFrame& frame, const Sphere& sphere, double ma
   // radial distance compared squared (the test runs per tree node and per candidate)
   const vec3 w = sphere.center - frame.distal;
   const double size = std::fabs(w.x) + std::fabs(w.y) + std::fabs(w.z);
-  const double scale =
-      size + frame.length + frame.r_distal + frame.r_proximal + sphere.radius + margin;
+  const double scale = size + frame.size + sphere.radius + margin;
   const double reach = sphere.radius + margin + contact_detail::kRelativeSlack * scale;
 
   if (!frame.degenerate) {

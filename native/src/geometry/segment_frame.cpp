@@ -24,8 +24,8 @@ SegmentFrame make_segment_frame(const Segment& segment) {
   f.r_proximal = segment.proximal_radius;
   const vec3 d = segment.proximal - segment.distal;
   f.length = glm::length(d);
-  const double size = f.length + segment.distal_radius + segment.proximal_radius;
-  f.degenerate = !(f.length > kDegenerateRelativeLength * size);
+  f.size = f.length + segment.distal_radius + segment.proximal_radius;
+  f.degenerate = !(f.length > kDegenerateRelativeLength * f.size);
   if (f.degenerate) return f;
   f.axis = d / f.length;
   f.slope = (f.r_proximal - f.r_distal) / f.length;

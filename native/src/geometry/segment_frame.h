@@ -18,6 +18,7 @@ struct SegmentFrame {
   double cos_alpha = 1.0;
   double sec_alpha = 1.0;  // 1 / cos(alpha): a division per node test in every walk was dear
   double sin_alpha = 0.0;
+  double size = 0.0;        // L + r1 + r2: the segment's part of every test's rounding scale
   bool degenerate = false;  // L too short for an axis: the solid is its two balls
 };
 
