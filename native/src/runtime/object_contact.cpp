@@ -15,10 +15,14 @@ namespace frusta {
 
 void ContactPatchSums::add(const Sphere& la, const Sphere& lb) {
   const vec3 d = la.center - lb.center;
-  const double distance = glm::length(d);
-  const double depth = la.radius + lb.radius - distance;
+  const double reach = la.radius + lb.radius;
+  const double squared = glm::dot(d, d);
+  // apart, as many a walk with a margin and the cache hand over are: no root taken
+  if (!(squared < reach * reach)) return;
+  const double distance = std::sqrt(squared);
+  const double depth = reach - distance;
   if (!(depth > 0.0) || !(distance > 0.0)) return;  // concentric: no direction to push in
-  const vec3 n = d / distance;                      // from b towards a
+  const vec3 n = d * (1.0 / distance);              // from b towards a
   deepest = std::max(deepest, depth);
   weight += depth;
   normal_sum += depth * n;
