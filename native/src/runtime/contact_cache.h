@@ -6,8 +6,10 @@
 // walk's, bit for bit. Where sphere bounds cover flat faces, walks are dear: a box
 // resting on a box tested 37,800 node pairs a step for 87 overlapping leaf pairs.
 //
-// Sized when the world is built (256 KB): kCachedPairs object pairs of at most
-// kCachedLeafPairs leaf pairs each; a pair beyond either is walked every step.
+// Sized when the world is built (512 KB): kCachedPairs object pairs of at most
+// kCachedLeafPairs leaf pairs each; a pair beyond either is walked every step. A 0.2 kg
+// box landing on a box at 0.6 m/s sinks 2 mm for a few steps, when the walk's margin
+// keeps up to 6,100 pairs: at 4,096 those steps all walked (settling p99 790 us).
 //
 // Threads: the stepping thread only.
 #pragma once
@@ -22,7 +24,7 @@ namespace frusta {
 class ContactCache {
  public:
   static constexpr int32_t kCachedPairs = 8;
-  static constexpr int32_t kCachedLeafPairs = 4096;
+  static constexpr int32_t kCachedLeafPairs = 8192;
   static constexpr double kMargin = 0.0005;  // metres
 
   ContactCache();
