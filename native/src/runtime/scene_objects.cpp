@@ -266,7 +266,9 @@ void SceneObjects::touch_objects(int32_t s, double dt) {
         s, slot.generation, {&slot.tree->tree, &slot.def, slot.def.mass}, o, other.generation,
         {&other.tree->tree, &other.def, yields ? other.def.mass : 0.0}, dt, &slot.contact,
         yields ? &other.contact : &unmoved);
-    if (touch && yields && other.asleep) wake(other);  // run into: it moves this step too
+    // run into: it moves this step too. Not by one that is itself still (it rests on or
+    // under the sleeper): a stack woke each other in turn for ever, never asleep together
+    if (touch && yields && other.asleep && !(slot.still_for > 0.0)) wake(other);
   });
 }
 
