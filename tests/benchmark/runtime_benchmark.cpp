@@ -357,7 +357,8 @@ void objects_on_table() {
   ContactCache cache;
   ObjectWrench wa, wb;
   double t0 = thread_cpu_seconds();
-  for (int i = 0; i < kCalls; ++i) add_object_contact(a, b, 1e-3, &wa, &wb);
+  PatchStick stick;
+  for (int i = 0; i < kCalls; ++i) add_object_contact(a, b, 1e-3, &stick, &wa, &wb);
   const double walked = (thread_cpu_seconds() - t0) / kCalls;
   t0 = thread_cpu_seconds();
   for (int i = 0; i < kCalls; ++i) {

@@ -31,6 +31,9 @@ ContactCache::ContactCache()
 
 bool ContactCache::touch(int32_t sa, uint32_t ga, const ContactSide& a, int32_t sb, uint32_t gb,
                          const ContactSide& b, double dt, ObjectWrench* on_a, ObjectWrench* on_b) {
+  // a pair is met from either side (from the awake one, or the lower slot of two awake):
+  // one entry for both, its walk and its stick kept as the objects fall asleep and wake
+  if (sb < sa) return touch(sb, gb, b, sa, ga, a, dt, on_b, on_a);
   const RigidPose now = relative_pose(a.def->pose, b.def->pose);
   Entry* entry = nullptr;
   Entry* room = nullptr;  // the entry met longest ago (a free one never), not this step
@@ -49,9 +52,11 @@ bool ContactCache::touch(int32_t sa, uint32_t ga, const ContactSide& a, int32_t 
       // as the walk places b's leaves, so the sums are the walk's
       patch.add(la, Sphere{now.position + now.rotation * local.center, local.radius});
     }
-    return add_patch_wrench(patch, a, b, dt, on_a, on_b);
+    return add_patch_wrench(patch, a, b, dt, &entry->stick, on_a, on_b);
   }
   ++walks_;
+  // a pair without an entry sticks afresh (and, without room, every step)
+  PatchStick stick = entry ? entry->stick : PatchStick{};
   if (!entry) entry = room;  // none: every entry met this step, so this pair is walked
   LeafPair* kept =
       entry ? &leaves_[static_cast<size_t>(entry - entries_.data()) * kCachedLeafPairs] : nullptr;
@@ -64,15 +69,17 @@ bool ContactCache::touch(int32_t sa, uint32_t ga, const ContactSide& a, int32_t 
         ++count;
       },
       kMargin);
+  const bool touching = add_patch_wrench(patch, a, b, dt, &stick, on_a, on_b);
   if (entry) {
     if (count <= kCachedLeafPairs) {
       const Sphere root = b.tree->node_sphere(0);
-      *entry = Entry{sa, sb, ga, gb, now, glm::length(root.center) + root.radius, count, step_};
+      *entry =
+          Entry{sa, sb, ga, gb, now, glm::length(root.center) + root.radius, count, step_, stick};
     } else {
       *entry = Entry{};  // too many to keep: free
     }
   }
-  return add_patch_wrench(patch, a, b, dt, on_a, on_b);
+  return touching;
 }
 
 }  // namespace frusta

@@ -53,6 +53,7 @@ class ContactCache {
     double reach_b = 0.0;  // b's farthest leaf from its origin, metres
     int32_t count = 0;     // leaf pairs kept, from entry * kCachedLeafPairs
     int64_t met = -1;      // the step touch() last met it; -1: free
+    PatchStick stick;      // the pair's static friction (object_contact.h)
   };
 
   std::vector<Entry> entries_;

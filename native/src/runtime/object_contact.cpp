@@ -29,21 +29,24 @@ void ContactPatchSums::add(const Sphere& la, const Sphere& lb) {
   point_sum += depth * (lb.center + (lb.radius - 0.5 * depth) * n);
 }
 
-bool add_object_contact(const ContactSide& a, const ContactSide& b, double dt, ObjectWrench* on_a,
-                        ObjectWrench* on_b) {
+bool add_object_contact(const ContactSide& a, const ContactSide& b, double dt, PatchStick* stick,
+                        ObjectWrench* on_a, ObjectWrench* on_b) {
   ContactPatchSums patch;
   walk_overlapping_leaves(*a.tree, *b.tree, relative_pose(a.def->pose, b.def->pose),
                           [&](int32_t, int32_t, const Sphere& la, const Sphere& lb) { patch.add(la, lb); });
-  return add_patch_wrench(patch, a, b, dt, on_a, on_b);
+  return add_patch_wrench(patch, a, b, dt, stick, on_a, on_b);
 }
 
 bool add_patch_wrench(const ContactPatchSums& patch, const ContactSide& a, const ContactSide& b,
-                      double dt, ObjectWrench* on_a, ObjectWrench* on_b) {
+                      double dt, PatchStick* stick, ObjectWrench* on_a, ObjectWrench* on_b) {
   assert(a.mass > 0.0 || b.mass > 0.0);
   const RigidPose& pa = a.def->pose;
   const RigidPose& pb = b.def->pose;
   const double turn = glm::length(patch.normal_sum);
-  if (!(patch.weight > 0.0) || !(turn > 0.0)) return false;
+  if (!(patch.weight > 0.0) || !(turn > 0.0)) {
+    *stick = PatchStick{};
+    return false;
+  }
   const double deepest = patch.deepest;
   const vec3 n = pa.rotation * (patch.normal_sum / turn);
   const vec3 point = pa.position + pa.rotation * (patch.point_sum / patch.weight);
@@ -72,13 +75,24 @@ bool add_patch_wrench(const ContactPatchSums& patch, const ContactSide& a, const
   const double push =
       std::max(0.0, along * omega * (omega * deepest - 2.0 * glm::dot(slide, n)));
   vec3 force = push * n;
+  // friction: the stick spring, stretched by this step's slide, in the patch's plane
+  // (it turns with a, and a turned patch leaves the part along its new normal behind)
   const vec3 tangential = slide - glm::dot(slide, n) * n;
-  const double speed = glm::length(tangential);
-  const double mu = std::sqrt(a.def->material.friction * b.def->material.friction);
-  if (speed > 0.0) {
-    const vec3 t = tangential / speed;
-    force -= std::min(mu * push, 2.0 * omega * speed / give(t)) * t;
+  vec3 stretch = pa.rotation * stick->stretch + dt * tangential;
+  stretch -= glm::dot(stretch, n) * n;
+  vec3 friction(0.0);
+  const double stretched = glm::length(stretch), speed = glm::length(tangential);
+  if (stretched > 0.0) friction -= omega * omega / give(stretch / stretched) * stretch;
+  if (speed > 0.0) friction -= 2.0 * omega / give(tangential / speed) * tangential;
+  const double limit = std::sqrt(a.def->material.friction * b.def->material.friction) * push;
+  const double size = glm::length(friction);
+  if (size > limit) {
+    // it slips: the spring stays stretched as far as friction holds, and no further
+    friction *= limit / size;
+    stretch = limit > 0.0 ? -(give(friction / limit) / (omega * omega)) * friction : vec3(0.0);
   }
+  stick->stretch = glm::transpose(pa.rotation) * stretch;
+  force += friction;
   // rolling and spinning meet a little resistance too, or a ball dropped on a bumpy tree
   // would roll on for ever: a torque against the pair's relative turn, at most
   // kRollingLength x the push, damped like the rest

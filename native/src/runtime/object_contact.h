@@ -9,11 +9,12 @@
 // tuned to the pair's effective mass at the patch (turning included): natural frequency
 // kObjectContactHz (or rate / 4 rad/s where that is lower) and critically damped, so
 // any mass and shape settles without ringing, about g / omega^2 deep (0.28 mm at 30 Hz),
-// and the step stays stable at any rate. Friction opposes the patch's sliding, as the
-// same damping up to mu |F| (mu the geometric mean of the two materials'); a relative
-// turn (rolling, spinning) as well, up to kRollingLength |F|. An object at rest on a
-// level table stays put; on a slope it would creep (at g sin(theta) / (2 omega)), which
-// nothing here meets yet.
+// and the step stays stable at any rate. Friction is a stick spring on how far the patch
+// slid since it last slipped, tuned and damped alike, up to mu |F| (mu the geometric mean
+// of the two materials'), beyond which it slips: an object stays where friction can hold
+// it (a slope, a stack), stretching the spring g sin(theta) / omega^2 (5 um a degree of
+// slope), and slides where it cannot. A relative turn (rolling, spinning) meets a
+// damping up to kRollingLength |F|.
 #pragma once
 
 #include "forces/device_outputs.h"
@@ -41,14 +42,21 @@ struct ContactPatchSums {
   void add(const Sphere& leaf_a, const Sphere& leaf_b);
 };
 
+// What a pair's patch keeps from one step to the next: how far it slid since it last
+// slipped, the stretch of its stick spring (static friction), in a's frame. Zero for a
+// pair that did not touch.
+struct PatchStick {
+  vec3 stretch{0.0};
+};
+
 // The wrenches a pair's patch puts on a and on b (each about its own pose position),
-// added to *on_a and *on_b; dt is the world's time step (seconds). Returns whether they
-// touch. At least one side has a mass.
+// added to *on_a and *on_b; dt is the world's time step (seconds); *stick is the pair's,
+// brought up to date. Returns whether they touch. At least one side has a mass.
 bool add_patch_wrench(const ContactPatchSums& patch, const ContactSide& a, const ContactSide& b,
-                      double dt, ObjectWrench* on_a, ObjectWrench* on_b);
+                      double dt, PatchStick* stick, ObjectWrench* on_a, ObjectWrench* on_b);
 
 // The same from a walk of both trees (runtime/contact_cache.h walks less often).
-bool add_object_contact(const ContactSide& a, const ContactSide& b, double dt, ObjectWrench* on_a,
-                        ObjectWrench* on_b);
+bool add_object_contact(const ContactSide& a, const ContactSide& b, double dt, PatchStick* stick,
+                        ObjectWrench* on_a, ObjectWrench* on_b);
 
 }  // namespace frusta

@@ -32,6 +32,7 @@ TEST(ContactCache, AnswersAsAWalkDoesAndWalksOnlyPastItsMargin) {
     b.angular_velocity = vec3(g(rng), g(rng), g(rng));
     b.pose.position = vec3(0.15, 0.0, 0.0);
     ContactCache cache;
+    PatchStick stick;  // the walk's, as the cache keeps its own
     for (int step = 0; step < 300; ++step) {
       // b drifts past a by up to a millimetre a step, turning a little, and now and then
       // jumps by a centimetre; a is removed and added again (a new generation) once
@@ -40,10 +41,11 @@ TEST(ContactCache, AnswersAsAWalkDoesAndWalksOnlyPastItsMargin) {
       b.pose.rotation = glm::mat3_cast(glm::normalize(glm::quat_cast(b.pose.rotation) *
                                                       glm::dquat(1.0, 0.002 * g(rng), 0.002 * g(rng), 0.0)));
       const uint32_t generation = step < 150 ? 1 : 2;
+      if (step == 150) stick = PatchStick{};  // a new object: a new pair
       const ContactSide sa{&trees[0], &a, 0.3}, sb{&trees[1], &b, 0.0};
       ObjectWrench cached_a, cached_b, walked_a, walked_b;
       const bool cached = cache.touch(3, generation, sa, 7, 1, sb, 1e-3, &cached_a, &cached_b);
-      const bool walked = add_object_contact(sa, sb, 1e-3, &walked_a, &walked_b);
+      const bool walked = add_object_contact(sa, sb, 1e-3, &stick, &walked_a, &walked_b);
       cache.end_step();
       ASSERT_EQ(cached, walked) << "trial " << trial << ", step " << step;
       ASSERT_EQ(cached_a.force, walked_a.force) << "trial " << trial << ", step " << step;
