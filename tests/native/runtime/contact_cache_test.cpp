@@ -104,6 +104,25 @@ TEST(ContactCache, APairMetAgainAfterStepsWithoutItIsNotWalkedAgain) {
   EXPECT_EQ(cache.reuses(), 1);
 }
 
+// A pair is met from the side of whichever object is awake: from either it is one pair,
+// answered from one walk with one stick (met from the other side it was walked again,
+// and its static friction started afresh: a stack kicked itself awake)
+TEST(ContactCache, APairMetFromEitherSideIsOnePair) {
+  const TwoObjects objects(8, 400);
+  ContactCache cache;
+  ObjectWrench first_a, first_b, again_a, again_b;
+  const bool first = objects.touch(cache, 0, 1, &first_a, &first_b);
+  cache.end_step();
+  const bool again = cache.touch(1, 1, {&objects.tree, &objects.b, 0.0}, 0, 1,
+                                 {&objects.tree, &objects.a, 1.0}, 1e-3, &again_b, &again_a);
+  EXPECT_TRUE(first);
+  EXPECT_EQ(again, first);
+  EXPECT_EQ(again_a.force, first_a.force);
+  EXPECT_EQ(again_b.torque, first_b.torque);
+  EXPECT_EQ(cache.walks(), 1);
+  EXPECT_EQ(cache.reuses(), 1);
+}
+
 // With more pairs than it has room for, a pair that has none takes the room of the one
 // met longest ago (not one met this step): the pairs met since stay answered from it.
 TEST(ContactCache, APairWithoutRoomTakesThatOfThePairMetLongestAgo) {
