@@ -222,9 +222,11 @@ stop_wine() {
 }
 
 # run_windows PROGRAM [args...]: a Windows program under Wine, in the prefix of
-# build/windows (made on first use)
+# build/windows (made on first use); a start Wine failed without output is made again
+# (native/cmake/toolchains/wine-run)
 run_windows() {
-  WINEPREFIX="$ROOT/build/windows/wine-prefix" WINEDEBUG=-all "$FRUSTA_WINE_DIR/wine64" "$@"
+  WINEPREFIX="$ROOT/build/windows/wine-prefix" WINEDEBUG=-all \
+    "$ROOT/native/cmake/toolchains/wine-run" --again-if-silent "$FRUSTA_WINE_DIR/wine64" "$@"
 }
 
 # build_tree DIR BUILD_TYPE [extra cmake args...]: configure (once) and build (only
