@@ -75,6 +75,23 @@ struct TwoObjects {
   }
 };
 
+// What a touch() answered.
+struct Answer {
+  bool touching = false;
+  ObjectWrench on_a, on_b;
+};
+
+// `again` is `first`, bit for bit, answered from the one walk `first` made.
+void expect_answered_from_the_first_walk(const ContactCache& cache, const Answer& first,
+                                         const Answer& again) {
+  EXPECT_TRUE(first.touching);
+  EXPECT_EQ(again.touching, first.touching);
+  EXPECT_EQ(again.on_a.force, first.on_a.force);
+  EXPECT_EQ(again.on_b.torque, first.on_b.torque);
+  EXPECT_EQ(cache.walks(), 1);
+  EXPECT_EQ(cache.reuses(), 1);
+}
+
 TEST(ContactCache, AnObjectAtRestIsNotWalkedAgain) {
   const TwoObjects objects(5, 400);
   ContactCache cache;
@@ -92,16 +109,11 @@ TEST(ContactCache, AnObjectAtRestIsNotWalkedAgain) {
 TEST(ContactCache, APairMetAgainAfterStepsWithoutItIsNotWalkedAgain) {
   const TwoObjects objects(8, 400);
   ContactCache cache;
-  ObjectWrench first_a, first_b, again_a, again_b;
-  const bool first = objects.touch(cache, 0, 1, &first_a, &first_b);
+  Answer first, again;
+  first.touching = objects.touch(cache, 0, 1, &first.on_a, &first.on_b);
   for (int step = 0; step < 500; ++step) cache.end_step();
-  const bool again = objects.touch(cache, 0, 1, &again_a, &again_b);
-  EXPECT_TRUE(first);
-  EXPECT_EQ(again, first);
-  EXPECT_EQ(again_a.force, first_a.force);
-  EXPECT_EQ(again_b.torque, first_b.torque);
-  EXPECT_EQ(cache.walks(), 1);
-  EXPECT_EQ(cache.reuses(), 1);
+  again.touching = objects.touch(cache, 0, 1, &again.on_a, &again.on_b);
+  expect_answered_from_the_first_walk(cache, first, again);
 }
 
 // A pair is met from the side of whichever object is awake: from either it is one pair,
@@ -110,17 +122,12 @@ TEST(ContactCache, APairMetAgainAfterStepsWithoutItIsNotWalkedAgain) {
 TEST(ContactCache, APairMetFromEitherSideIsOnePair) {
   const TwoObjects objects(8, 400);
   ContactCache cache;
-  ObjectWrench first_a, first_b, again_a, again_b;
-  const bool first = objects.touch(cache, 0, 1, &first_a, &first_b);
+  Answer first, again;
+  first.touching = objects.touch(cache, 0, 1, &first.on_a, &first.on_b);
   cache.end_step();
-  const bool again = cache.touch(1, 1, {&objects.tree, &objects.b, 0.0}, 0, 1,
-                                 {&objects.tree, &objects.a, 1.0}, 1e-3, &again_b, &again_a);
-  EXPECT_TRUE(first);
-  EXPECT_EQ(again, first);
-  EXPECT_EQ(again_a.force, first_a.force);
-  EXPECT_EQ(again_b.torque, first_b.torque);
-  EXPECT_EQ(cache.walks(), 1);
-  EXPECT_EQ(cache.reuses(), 1);
+  again.touching = cache.touch(1, 1, {&objects.tree, &objects.b, 0.0}, 0, 1,
+                               {&objects.tree, &objects.a, 1.0}, 1e-3, &again.on_b, &again.on_a);
+  expect_answered_from_the_first_walk(cache, first, again);
 }
 
 // With more pairs than it has room for, a pair that has none takes the room of the one
