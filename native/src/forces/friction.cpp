@@ -6,6 +6,14 @@
 
 namespace frusta {
 
+bool slip_at_limit(double limit, double spring, vec3* force, vec3* held) {
+  const double pull = glm::length(*force);
+  if (!(pull > limit)) return false;
+  *force *= limit / pull;
+  if (spring > limit) *held *= limit / spring;
+  return limit > 0.0;
+}
+
 PatchFriction patch_friction(const ForceMaterial& material, const RigidPose& object,
                              const RigidPose& body, const vec3& normal, const vec3& reference,
                              const vec3& normal_force, const FrictionAnchor* before,
@@ -29,20 +37,11 @@ PatchFriction patch_friction(const ForceMaterial& material, const RigidPose& obj
   const vec3 slide_rate = (held - before_held) / time_step;
   PatchFriction out;
   out.force = -material.tangential_stiffness * held - material.tangential_damping * slide_rate;
-  const double limit = material.friction * glm::length(normal_force);
-  const double pull = glm::length(out.force);
-  if (pull > limit) {
-    // slip: the friction is projected onto the disc of radius mu |F|, against the
-    // direction the finger slides, and the stretch cut back to match. A continuous
-    // function of the motion, equal on both sides of the switch (scale = 1 there), so
-    // there is no jump to chatter between. Reversing the motion unloads the spring
-    // smoothly through zero, where seed eq. 13 taken literally (t from the sliding
-    // velocity) would flip the full mu |F| every time a noisy velocity crosses zero.
-    out.force *= limit / pull;
-    const double spring = material.tangential_stiffness * glm::length(held);
-    if (spring > limit) held *= limit / spring;
-    out.slipping = limit > 0.0;
-  }
+  // (seed eq. 13 taken literally, t from the sliding velocity, would flip the full
+  // mu |F| every time a noisy velocity crosses zero)
+  out.slipping = slip_at_limit(material.friction * glm::length(normal_force),
+                               material.tangential_stiffness * glm::length(held), &out.force,
+                               &held);
   // the stretch kept is tangential only, so that when the normal turns (a finger rolling
   // over a curved surface) the depth does not leak into the friction
   out.anchor = {body_on_object, to_object * held};

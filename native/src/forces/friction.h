@@ -37,6 +37,14 @@ inline RigidPose haptic_body_frame(const HandPose& haptic, int32_t body) {
   return {f.joint[segment], f.segment_rotation[segment]};
 }
 
+// Stick, then slip, once a spring's pull is known: `force` (the spring's pull `spring`,
+// newtons, plus its damping) projected onto the disc of radius `limit` (mu |F|), and the
+// stretch `held` cut back so that the spring alone pulls no more than that. A continuous
+// function of the motion, equal on both sides of the switch, so there is no jump to
+// chatter between; reversing the motion unloads the spring smoothly through zero.
+// Returns whether it slips. The hands' patches and the objects' pairs both slip so.
+bool slip_at_limit(double limit, double spring, vec3* force, vec3* held);
+
 // A patch's friction this step. `body`: its body's frame on the haptic hand (from
 // haptic_body_frame); `normal`: the patch's mean normal, unit; `reference`: a material
 // point of the body (any would do); `normal_force`: the patch's total; `before`: its

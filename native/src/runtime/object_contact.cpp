@@ -9,6 +9,7 @@
 #include <glm/gtc/constants.hpp>
 #include <glm/matrix.hpp>
 
+#include "forces/friction.h"
 #include "spheretree/tree_pairs.h"
 
 namespace frusta {
@@ -81,16 +82,16 @@ bool add_patch_wrench(const ContactPatchSums& patch, const ContactSide& a, const
   vec3 stretch = pa.rotation * stick->stretch + dt * tangential;
   stretch -= glm::dot(stretch, n) * n;
   vec3 friction(0.0);
+  double spring = 0.0;  // the spring's pull alone
   const double stretched = glm::length(stretch), speed = glm::length(tangential);
-  if (stretched > 0.0) friction -= omega * omega / give(stretch / stretched) * stretch;
-  if (speed > 0.0) friction -= 2.0 * omega / give(tangential / speed) * tangential;
-  const double limit = std::sqrt(a.def->material.friction * b.def->material.friction) * push;
-  const double size = glm::length(friction);
-  if (size > limit) {
-    // it slips: the spring stays stretched as far as friction holds, and no further
-    friction *= limit / size;
-    stretch = limit > 0.0 ? -(give(friction / limit) / (omega * omega)) * friction : vec3(0.0);
+  if (stretched > 0.0) {
+    const double stiffness = omega * omega / give(stretch / stretched);
+    friction -= stiffness * stretch;
+    spring = stiffness * stretched;
   }
+  if (speed > 0.0) friction -= 2.0 * omega / give(tangential / speed) * tangential;
+  slip_at_limit(std::sqrt(a.def->material.friction * b.def->material.friction) * push, spring,
+                &friction, &stretch);
   stick->stretch = glm::transpose(pa.rotation) * stretch;
   force += friction;
   // rolling and spinning meet a little resistance too, or a ball dropped on a bumpy tree
