@@ -5,9 +5,11 @@ set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 
 # Debian packages the build needs (docs: /work/shared/deps.md, README "Dependencies");
-# python3 runs the C# binding's generator and the test that it is up to date.
+# python3 runs the C# binding's generator and the test that it is up to date; valgrind
+# counts the instructions of tools/bench instructions (and its test).
 FRUSTA_PACKAGES=(cmake ninja-build g++ pkg-config python3 ccache libglm-dev libhidapi-dev
-                 libembree-dev libtinygltf-dev nlohmann-json3-dev libbenchmark-dev libgtest-dev)
+                 libembree-dev libtinygltf-dev nlohmann-json3-dev libbenchmark-dev libgtest-dev
+                 valgrind)
 
 # ensure_packages [PACKAGE...]: those (default: FRUSTA_PACKAGES) installed
 ensure_packages() {
