@@ -39,6 +39,10 @@ stage_profile() {
 
 instructions_suite() {
   local binary=$1; shift
+  if [ ! -x "$binary" ]; then  # configured before valgrind's header was there
+    echo "frusta: $binary was not built; reconfigure its tree (cmake $(dirname "$(dirname "$binary")"))" >&2
+    return 2
+  fi
   local dir; dir=$(mktemp -d)
   valgrind --tool=callgrind --collect-atstart=no --callgrind-out-file="$dir/step" \
     "$binary" "$@" > "$dir/run.json" 2> "$dir/valgrind.log" || { cat "$dir/valgrind.log" >&2; rm -rf "$dir"; return 1; }
