@@ -55,11 +55,11 @@ instructions_suite() {
   n=$(wc -l < "$dir/steps")
   read -r p50 p90 p99 max total < <(awk -v n="$n" '{ a[NR] = $1; s += $1 }
     END { printf "%d %d %d %d %d\n", a[int(n * 0.5) + 1], a[int(n * 0.9) + 1], a[int(n * 0.99) + 1], a[n], s }' "$dir/steps")
-  local tail=() count=0
-  while read -r ir f; do [ "$ir" -ge "$p99" ] && { tail+=("$f"); count=$((count + 1)); }; done < "$dir/steps"
+  local tail=() ir
+  while read -r ir f; do [ "$ir" -ge "$p99" ] && tail+=("$f"); done < "$dir/steps"
   local run; run=$(sed 's/^{//; s/}$//' "$dir/run.json")
   echo "{\"suite\": \"instructions\", $run, \"ir_per_step\": {\"p50\": $p50, \"p90\": $p90, \"p99\": $p99," \
        "\"max\": $max, \"total\": $total}, \"profile_every_step\": {$(stage_profile "$dir/whole")}," \
-       "\"profile_steps_at_or_above_p99\": {\"steps\": $count, $(stage_profile "${tail[@]}")}}"
+       "\"profile_steps_at_or_above_p99\": {\"steps\": ${#tail[@]}, $(stage_profile "${tail[@]}")}}"
   rm -rf "$dir"
 }
