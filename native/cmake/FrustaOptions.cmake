@@ -25,10 +25,11 @@ function(frusta_target_options target)
     # a sanitized Debug build compiles the libraries (the engine, the baker, the test
     # scenes) at -O1, as ASan's authors advise, and the programs at -O0: under ASan
     # the unit tests took 298 s all at -O0, 78 s so, and 60 s all at -O1, which
-    # took 257 s to build instead of 150 (the test programs are big and run little)
+    # took 257 s to build instead of 150 (the test programs are big and run little).
+    # A sanitizer's report needs line tables only (-g1): 15 % less to compile.
     get_target_property(type ${target} TYPE)
     if(NOT type STREQUAL "EXECUTABLE")
-      target_compile_options(${target} PRIVATE $<$<CONFIG:Debug>:-O1>)
+      target_compile_options(${target} PRIVATE "$<$<CONFIG:Debug>:-O1;-g1>")
     endif()
     if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
       # optimised and instrumented, GCC 12 finds uninitialised members inside
