@@ -55,7 +55,7 @@ instructions_suite() {
   n=$(wc -l < "$dir/steps")
   read -r p50 p90 p99 max total < <(awk -v n="$n" '{ a[NR] = $1; s += $1 }
     END { printf "%d %d %d %d %d\n", a[int(n * 0.5) + 1], a[int(n * 0.9) + 1], a[int(n * 0.99) + 1], a[n], s }' "$dir/steps")
-  local tail=() ir
+  local tail=() ir f
   while read -r ir f; do if [ "$ir" -ge "$p99" ]; then tail+=("$f"); fi; done < "$dir/steps"
   local run; run=$(sed 's/^{//; s/}$//' "$dir/run.json")
   echo "{\"suite\": \"instructions\", $run, \"ir_per_step\": {\"p50\": $p50, \"p90\": $p90, \"p99\": $p99," \
