@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/base.h"
+
 namespace frusta {
 
 namespace {
@@ -22,14 +24,13 @@ double dot(int n, const Vec& a, const Vec& b) {
 // scaling, the primal step is n_p with its part in the active normals' span removed
 // and the dual step the coefficients of that part, both from the small Gram system.
 struct ActiveSet {
-  int n = 0;
   int size = 0;
   std::array<int32_t, kMaxQpVariables> row{};
   std::array<Vec, kMaxQpVariables> normal{};
   std::array<double, kMaxQpVariables> u{};
 
   // z = np - N r with (N^T N) r = N^T np; false when the Gram matrix is singular
-  bool split(const Vec& np, Vec& z, Vec& r) const {
+  bool split(int n, const Vec& np, Vec& z, Vec& r) const {
     double gram[kMaxQpVariables][kMaxQpVariables];
     double rhs[kMaxQpVariables];
     for (int i = 0; i < size; ++i) {
@@ -75,10 +76,14 @@ struct ActiveSet {
   }
 };
 
-}  // namespace
-
-QpResult solve_projection_qp(int n, const double* weights, const double* target, QpRow* rows,
-                             int32_t row_count, int32_t iteration_cap, double* x, QpLazyRows lazy) {
+// The solve for kN variables, or for `variables` when kN is 0. Known when compiled (a
+// finger's QP has 4, the palm's 6), its loops over the variables unroll: the finger QPs
+// of the 10^4-leaf grasp's closing steps took 21 % fewer instructions. The same
+// operations in the same order either way, so the same answer to the bit.
+template <int kN>
+QpResult solve(int variables, const double* weights, const double* target, QpRow* rows,
+               int32_t row_count, int32_t iteration_cap, double* x, QpLazyRows lazy) {
+  const int n = kN > 0 ? kN : variables;
   QpResult result;
   // scale to y_j = sqrt(w_j) x_j so the objective is half the squared distance to the
   // target; with unit normals a row's slack is its distance, whatever its units
@@ -112,7 +117,6 @@ QpResult solve_projection_qp(int n, const double* weights, const double* target,
     return true;
   };
   ActiveSet active;
-  active.n = n;
   auto finish = [&](QpStatus status) {
     result.status = status;
     result.rows = row_count;
@@ -174,7 +178,7 @@ QpResult solve_projection_qp(int n, const double* weights, const double* target,
       if (result.iterations >= iteration_cap) return finish(QpStatus::kIterationCap);
       ++result.iterations;
       Vec z{}, r{};
-      if (!active.split(np, z, r)) return finish(QpStatus::kInfeasible);  // dependent normals
+      if (!active.split(n, np, z, r)) return finish(QpStatus::kInfeasible);  // dependent normals
       // dual step limit: the first active multiplier to reach zero
       double t1 = kInfinity;
       int drop = -1;
@@ -209,6 +213,21 @@ QpResult solve_projection_qp(int n, const double* weights, const double* target,
     }
   }
   return finish(QpStatus::kOptimal);
+}
+
+}  // namespace
+
+QpResult solve_projection_qp(int n, const double* weights, const double* target, QpRow* rows,
+                             int32_t row_count, int32_t iteration_cap, double* x, QpLazyRows lazy) {
+  switch (n) {
+    case FRUSTA_JOINTS_PER_FINGER:
+      return solve<FRUSTA_JOINTS_PER_FINGER>(n, weights, target, rows, row_count, iteration_cap, x,
+                                             lazy);
+    case kMaxQpVariables:
+      return solve<kMaxQpVariables>(n, weights, target, rows, row_count, iteration_cap, x, lazy);
+    default:
+      return solve<0>(n, weights, target, rows, row_count, iteration_cap, x, lazy);
+  }
 }
 
 void QpHints::keep(const QpRow* rows, const QpResult& result) {
