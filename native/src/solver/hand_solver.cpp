@@ -523,7 +523,11 @@ void HandSolver::report_contacts() {
     const SegmentView view =
         body == kPalmBody ? SegmentView{} : segment_view(model_, pose_, candidates_, body);
     const Candidate* c = candidates_.of(body);
-    for (int32_t i = 0; i < candidates_.count(body); ++i) {
+    const int32_t count = candidates_.count(body);
+    for (int32_t i = 0; i < count; ++i) {
+      // a segment's candidates further than the contact distance, most of them, are told by
+      // their gap bounds before a contact is begun
+      if (body != kPalmBody && !view.may_touch(c[i], params_.contact_distance)) continue;
       SolverContact contact;
       contact.object = c[i].object;
       contact.leaf = c[i].leaf;
@@ -538,7 +542,6 @@ void HandSolver::report_contacts() {
         contact.hand_point = hand.center - hand.radius * contact.normal;
         contact.object_point = c[i].world.center + c[i].world.radius * contact.normal;
       } else {
-        if (!view.may_touch(c[i], params_.contact_distance)) continue;
         const Proximity p = exact_proximity(view.frame, c[i].world);
         contact.distance = p.distance;
         contact.hand_point = p.hand_point;
