@@ -97,7 +97,10 @@ int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights, dou
     const auto& column_d = jacobian_.proximal[s];  // dD/dq, D = joint s
     const auto& column_e = jacobian_.distal[s];    // dE/dq, E = joint s + 1
     const Candidate* c = inputs_.candidates.of(body);
-    for (int32_t i = 0; i < inputs_.candidates.count(body); ++i) {
+    // (the count and the first index read once: the rows written may alias them)
+    const int32_t first = inputs_.candidates.begin[body],
+                  candidates = inputs_.candidates.count(body);
+    for (int32_t i = 0; i < candidates; ++i) {
       if (!view.may_touch(c[i], reach)) continue;
       const Constraint g = contact_constraint(frame, c[i].world, inputs_.params.form);
       QpRow& row = rows[count++];
@@ -107,7 +110,7 @@ int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights, dou
       row.b = row_bound(inputs_.params, g.value,
                         c[i].world.radius + std::max(frame.r_proximal, frame.r_distal));
       row.key = row_key(RowKind::kContact, body, c[i].part, c[i].object, c[i].leaf);
-      row.source = inputs_.candidates.begin[body] + i;
+      row.source = first + i;
     }
   }
   segment_rows_[FRUSTA_SEGMENTS_PER_FINGER] = count;
