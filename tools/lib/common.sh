@@ -245,8 +245,12 @@ build_tree() {
   export CCACHE_MAXSIZE="${CCACHE_MAXSIZE:-4G}"
   # the tests' precompiled header (tests/CMakeLists.txt): ccache caches what uses one only so
   export CCACHE_SLOPPINESS="${CCACHE_SLOPPINESS:-pch_defines,time_macros}"
+  # RelWithDebInfo keeps line tables only (-g1): the package strips debug information,
+  # a backtrace still names files and lines, and full -g was 9 % of the tree's compile
+  # (415 -> 377 CPU s). A caller's own flags (the cross trees') come after and win.
   cmake -S "$ROOT" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE="$type" \
         -DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache \
+        "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG" "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG" \
         -DFRUSTA_WARNINGS_AS_ERRORS="$werror" "$@" >/dev/null
   local targets=()
   [ -n "${FRUSTA_BUILD_TARGETS:-}" ] && targets=(--target ${FRUSTA_BUILD_TARGETS})
