@@ -187,14 +187,14 @@ double FingerStage::clearance(const HandPose& pose) const {
   return finger_clearance(inputs_.model, pose, inputs_.candidates, finger_);
 }
 
-double FingerStage::try_step(const double* d, double s) {
+bool FingerStage::set_trial(const double* d, double s) {
   const FingerModel& finger = inputs_.model.fingers[finger_];
   FingerAngles next = angles(state_);
   for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j)
     next[j] = std::clamp(next[j] + s * d[j], finger.joint_min[j], finger.joint_max[j]);
   if (beyond_cap(next)) {
     capped_ = true;
-    return -INFINITY;
+    return false;
   }
   // a step the rows stopped at the cap: the stage did not reach its target
   if (bound_ == FingerBound::kTrust &&
@@ -202,7 +202,15 @@ double FingerStage::try_step(const double* d, double s) {
     capped_ = true;
   trial_state_ = state_;
   std::copy(next.begin(), next.end(), trial_state_.angles.begin() + finger_ * FRUSTA_JOINTS_PER_FINGER);
-  return step_clearance();
+  return true;
+}
+
+double FingerStage::try_step(const double* d, double s) {
+  return set_trial(d, s) ? step_clearance() : -INFINITY;
+}
+
+double FingerStage::try_step_anywhere(const double* d) {
+  return set_trial(d, 1.0) ? trial_clearance() : -INFINITY;
 }
 
 bool FingerStage::beyond_cap(const FingerAngles& next) const {

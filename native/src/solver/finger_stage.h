@@ -47,6 +47,7 @@ class FingerStage : public StageEstimate {
   // over the segments with candidates
   double step_motion(const double* d) const;
   double try_step(const double* d, double s);
+  double try_step_anywhere(const double* d);
   double try_between(double s);
   int32_t lazy_rows(const double* d, QpRow* rows) const;
 
@@ -54,6 +55,8 @@ class FingerStage : public StageEstimate {
   double clearance(const HandPose& pose) const;
 
  private:
+  // the trial at current + s d, or false where that is beyond the cap
+  bool set_trial(const double* d, double s);
   double trial_clearance();  // of the trial state, posed
   // ... of the trial of a step the last linearisation's rows were made for: its contact
   // rows name every candidate such a trial can reach

@@ -53,6 +53,8 @@ class PalmStage : public StageEstimate {
   int32_t linearise(QpRow* rows, double* target, double* weights, double radius) const;
   double step_motion(const double* d) const;
   double try_step(const double* d, double s);
+  // (try_step itself checks every candidate)
+  double try_step_anywhere(const double* d) { return try_step(d, 1.0); }
   double try_between(double s);
   int32_t lazy_rows(const double* d, QpRow* rows) const;
 

@@ -97,7 +97,11 @@ inline double row_bound(const SolverParams& params, double value, double reach) 
 //   double step_motion(const double* d): no point of the part near its candidates moves
 //     further in the step d from where linearise was made (the unit of `radius`);
 //   double try_step(const double* d, double s): the smallest gap at current + s d, or
-//     -infinity when that moves the hand further than the stage allows;
+//     -infinity when that moves the hand further than the stage allows (a finger's over
+//     the spheres of the last linearisation's rows, which name every sphere a step
+//     within its radius can reach);
+//   double try_step_anywhere(const double* d): the same for the whole step d over every
+//     candidate, for a step beyond its rows' radius;
 //   double try_between(double s): the same for the trial a fraction s of the way from
 //     the last estimate save() kept to the current one;
 //   int32_t lazy_rows(const double* d, QpRow* rows): rows the step d may lie beyond,
@@ -126,15 +130,18 @@ constexpr int kBisections = 8;  // 1/256 of the last step: less is not worth its
 constexpr int32_t kMaxLazyRows = 64;
 constexpr double kWorkingDepth = 2.5e-4;  // metres
 // A linearisation makes only the rows of spheres a step of a guessed size can reach;
-// where its step goes further, it is made again for that step (solve_stage). The rows of
-// every sphere a whole step could reach were 150-250 a finger on the 10^4-leaf grasp,
-// most of a linearisation's and its QP's time. A linearisation after the first guesses
-// the step before (it corrects that step for the curvature it missed, and moved 2-20 %
-// of it there, a few times 45 %); a stage's first, twice its part's last first step
-// (QpHints::first_step). Closing steps of that grasp: 127 -> 109 us with the first
-// guess, -> 99 us with both (twice or 1.25 times the last: the same; once: 109 us).
-constexpr double kRowRadius = 1.0;
-constexpr double kFirstRowRadius = 2.0;
+// where its step goes further, it is kept if it ends clear of every candidate, else
+// made again for that step (solve_stage). The rows of every sphere a whole step could
+// reach were 150-250 a finger on the 10^4-leaf grasp, most of a linearisation's and its
+// QP's time. A linearisation after the first guesses a part of the step before (it
+// corrects that step for the curvature it missed, and moved 2-20 % of it there, a few
+// times 45 %); a stage's first, a part of its part's last first step
+// (QpHints::first_step). While a step beyond the guess was always made again, the best
+// guesses were the step before and twice the last first step (closing steps of that
+// grasp 127 -> 99 us); keeping a clear step, a quarter of each (instructions over its
+// 500 steps 79.5 -> 67.5 M, half of each 69.3 M, a tenth of the step before 68.2 M).
+constexpr double kRowRadius = 0.25;
+constexpr double kFirstRowRadius = 0.25;
 // A linearisation whose step went beyond its radius was made again with every row (90
 // a time in that grasp's closing, against 16 in the guess), though nine in ten of those
 // steps went less than 4 times the radius: it is made again for a step 1.5 times the
@@ -194,9 +201,17 @@ StageStats solve_stage(Problem& problem, const SolverParams& params, std::vector
     double motion = problem.step_motion(d);
     // An optimum within the radius is the one every row makes: the rows left out are
     // of spheres further than it moves the hand, met there, and the QP is convex. One
-    // beyond it is made again with the rows a step kRedoRadius times its length can
-    // reach, and one beyond that, or none, with every row.
-    for (int redo = 0; radius < INFINITY && (qp.status != QpStatus::kOptimal || motion > radius); ++redo) {
+    // beyond it that ends clear of every candidate (exactly, not by rows) is kept: the
+    // rows left out could only have held it further from its target, short of spheres
+    // it does not reach. Any other is made again with the rows a step kRedoRadius times
+    // its length can reach, and one beyond that, or none, with every row.
+    double gap = -INFINITY;
+    bool kept = false;
+    if (radius < INFINITY && qp.status == QpStatus::kOptimal && motion > radius) {
+      gap = problem.try_step_anywhere(d);
+      kept = gap >= problem.floor();
+    }
+    for (int redo = 0; !kept && radius < INFINITY && (qp.status != QpStatus::kOptimal || motion > radius); ++redo) {
       radius = redo == 0 && qp.status == QpStatus::kOptimal ? kRedoRadius * motion : INFINITY;
       qp = solve_within(radius, d);
       motion = problem.step_motion(d);
@@ -206,7 +221,7 @@ StageStats solve_stage(Problem& problem, const SolverParams& params, std::vector
     for (int j = 0; j < n; ++j) largest = std::max(largest, std::fabs(d[j]));
     if (!(largest > params.convergence)) break;
     double s = 1.0;
-    double gap = problem.try_step(d, s);
+    if (!kept) gap = problem.try_step(d, s);
     for (int halving = 0; !(gap >= working_floor) && halving < kMaxHalvings; ++halving) {
       s *= 0.5;
       gap = problem.try_step(d, s);
