@@ -4,7 +4,10 @@
 # the work went by stage, over every step and over the steps at or above the p99.
 # Stages are inclusive counts of the functions that do them (stage_profile): the tree
 # walks are part of the detection, linearisations, QPs and trials part of the stages
-# (the QPs' count is the palm's and the fingers' together).
+# (the QPs' count is the palm's and the fingers' together); the clearances are every
+# body's exact gap over all its candidates: each sub-step's start, and the trials that
+# check every candidate (a step kept beyond its rows' radius, a bisection), which the
+# trials' count holds too.
 
 # stage_profile FILE...: "name": instructions for each stage, summed over callgrind dumps
 stage_profile() {
@@ -27,12 +30,12 @@ stage_profile() {
       else if (line ~ /frusta::solve_stage<frusta::FingerStage>/) add("finger_stages", n)
       else if (line ~ /:frusta::FingerStage::linearise\(/) add("finger_linearise", n)
       else if (line ~ /:frusta::solve_projection_qp\(/) add("qp", n)
-      else if (line ~ /:frusta::FingerStage::try_(step|between)\(/) add("finger_trials", n)
-      else if (line ~ /:frusta::body_clearance\(/) add("start_clearances", n)
+      else if (line ~ /:frusta::FingerStage::try_(step|step_anywhere|between)\(/) add("finger_trials", n)
+      else if (line ~ /:frusta::body_clearance\(/) add("clearances", n)
       else if (line ~ /:frusta::HandSolver::report_contacts\(/) add("report_contacts", n)
     }
     END {
-      split("step detection tree_walks palm_stages finger_stages finger_linearise qp finger_trials start_clearances report_contacts", order, " ")
+      split("step detection tree_walks palm_stages finger_stages finger_linearise qp finger_trials clearances report_contacts", order, " ")
       for (i = 1; i <= 10; ++i) printf "%s\"%s\": %d", (i > 1 ? ", " : ""), order[i], total[order[i]]
     }'
 }
