@@ -20,7 +20,16 @@
 namespace frusta {
 namespace {
 
-std::string dir() { return ::testing::TempDir(); }
+// Each test's own folder: ctest runs this file's tests as processes side by side, and a
+// buffer one test was rewriting (tri.bin, which most of them write) was read short by
+// another (`ctest -R GltfLoader --parallel 8 --repeat until-fail:40` failed in its first
+// rounds).
+std::string dir() {
+  const std::string folder = ::testing::TempDir() + "frusta_gltf_" +
+                             ::testing::UnitTest::GetInstance()->current_test_info()->name() + "/";
+  std::filesystem::create_directories(folder);
+  return folder;
+}
 
 void write_file(const std::string& path, const std::string& bytes) {
   std::ofstream(path, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
