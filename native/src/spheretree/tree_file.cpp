@@ -82,7 +82,7 @@ bool finite_all(const double* v, int n) {
 }
 
 // The structural checks: each node reached once from the root, children after
-// their parent, every leaf numbered once, every leaf inside all its ancestors.
+// their parent, every leaf numbered once, every leaf inside its node and its ancestors.
 frusta_result check_structure(const SphereTree& t, const char* name) {
   const size_t nodes = t.nodes.size(), leaves = t.leaves.size();
   std::vector<uint8_t> node_seen(nodes, 0), leaf_seen(leaves, 0);
@@ -106,7 +106,9 @@ frusta_result check_structure(const SphereTree& t, const char* name) {
                     e.node, n.first, leaves);
       if (leaf_seen[static_cast<size_t>(n.first)]++)
         return fail(FRUSTA_ERROR_CORRUPT_FILE, "%s: leaf %d appears twice", name, n.first);
+      // its own node too: a walk culls a leaf by its node's sphere before testing it
       const Sphere& leaf = t.leaves[static_cast<size_t>(n.first)];
+      path.push_back(e);
       for (const Entry& a : path) {
         const Sphere bound = t.node_sphere(a.node);
         const double reach = glm::length(leaf.center - bound.center) + leaf.radius;
@@ -114,6 +116,7 @@ frusta_result check_structure(const SphereTree& t, const char* name) {
           return fail(FRUSTA_ERROR_CORRUPT_FILE, "%s: leaf %d sticks out of node %d by %g m",
                       name, n.first, a.node, reach - bound.radius);
       }
+      path.pop_back();
       continue;
     }
     if (n.count < 0 || n.count > t.branching || n.first <= e.node ||

@@ -74,6 +74,8 @@ TEST(TreeFile, DamagedFilesAreRefusedWithTheirOwnError) {
   const TreeFile f = sample_file();
   const std::vector<uint8_t> good = encode_tree_file(f);
   const size_t node0 = 160, leaf0 = 160 + f.tree.nodes.size() * 24;
+  size_t first_leaf_node = 0;
+  while (f.tree.nodes[first_leaf_node].count != 0) ++first_leaf_node;
   auto set_i32 = [](std::vector<uint8_t>& b, size_t at, int32_t v) { std::memcpy(&b[at], &v, 4); };
   auto set_f32 = [](std::vector<uint8_t>& b, size_t at, float v) { std::memcpy(&b[at], &v, 4); };
   auto set_f64 = [](std::vector<uint8_t>& b, size_t at, double v) { std::memcpy(&b[at], &v, 8); };
@@ -108,6 +110,9 @@ TEST(TreeFile, DamagedFilesAreRefusedWithTheirOwnError) {
        [&](auto& b) { set_i32(b, node0 + 16, 1 << 30); reseal(b); }},
       {"leaf outside its bound", FRUSTA_ERROR_CORRUPT_FILE, "sticks out",
        [&](auto& b) { set_f64(b, leaf0, 5.0); reseal(b); }},
+      // a walk culls a leaf by its own node's sphere before testing the leaf itself
+      {"leaf outside its own node", FRUSTA_ERROR_CORRUPT_FILE, "sticks out",
+       [&](auto& b) { set_f32(b, node0 + 24 * first_leaf_node, 5.0f); reseal(b); }},
       {"depth understated", FRUSTA_ERROR_CORRUPT_FILE, "deeper",
        [&](auto& b) { set_i32(b, 28, 1); reseal(b); }},
   };
