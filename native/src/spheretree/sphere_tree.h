@@ -10,7 +10,7 @@
 
 #include <glm/mat3x3.hpp>
 #if defined(_MSC_VER)
-#include <intrin.h>  // _BitScanForward64
+#include <intrin.h>  // _BitScanForward64, _BitScanReverse
 #endif
 
 #include "geometry/segment_frame.h"
@@ -162,6 +162,17 @@ inline int lowest_bit(uint64_t mask) {
   return static_cast<int>(index);
 #else
   return __builtin_ctzll(mask);
+#endif
+}
+
+// Index of the highest set bit of a non-zero mask.
+inline int highest_bit(uint32_t mask) {
+#if defined(_MSC_VER)
+  unsigned long index;
+  _BitScanReverse(&index, mask);
+  return static_cast<int>(index);
+#else
+  return 31 - __builtin_clz(mask);
 #endif
 }
 

@@ -7,6 +7,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "geometry/contact_test.h"
+#include "geometry/exact_distance.h"
 #include "scenes/random_trees.h"
 #include "spheretree/tree_builder.h"
 
@@ -70,6 +71,48 @@ TEST(SphereTree, SegmentQueryEqualsBruteForceScan) {
   }
   EXPECT_GT(nonempty, 1000);  // the segments do hit things
   EXPECT_GT(compared, 1000000);
+}
+
+// query_segment culls a node's children in single precision and tests each leaf it keeps
+// exactly: it must find what walk_tree testing every node with may_touch finds, hit for
+// hit and in the same order, on random trees (far from the origin too, where single
+// precision is coarse) and margins, with segments that graze a leaf at the margin.
+TEST(SphereTree, SegmentQueryMatchesTheExactWalkHitForHit) {
+  std::mt19937_64 rng(77);
+  std::uniform_real_distribution<double> u(-0.12, 0.12), r(0.0, 0.015), margin(0.0, 0.01);
+  std::normal_distribution<double> g;
+  std::vector<TreeHit> hits(20000);
+  long compared = 0, grazing = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    std::vector<Sphere> leaves =
+        testing::random_leaves(rng, 1 + static_cast<int>(rng() % 3000), trial % 4);
+    const vec3 offset = trial % 3 == 0 ? vec3(u(rng), u(rng), u(rng)) * 1000.0 : vec3(0.0);
+    for (Sphere& s : leaves) s.center += offset;
+    SphereTree tree;
+    ASSERT_EQ(build_sphere_tree(leaves, {2 + static_cast<int32_t>(rng() % 15)}, &tree), FRUSTA_OK);
+    for (int q = 0; q < 20; ++q) {
+      const vec3 a = offset + vec3(u(rng), u(rng), u(rng));
+      const Segment segment{a, a + 0.05 * vec3(g(rng), g(rng), g(rng)), r(rng), r(rng)};
+      const SegmentFrame frame = make_segment_frame(segment);
+      double m = margin(rng);
+      if (q % 2 == 1) {  // the margin at which some leaf just touches
+        m = std::max(0.0, exact_distance(frame, leaves[rng() % leaves.size()]));
+        ++grazing;
+      }
+      const TreeQueryStats stats = query_segment(tree, frame, m, -1, hits.data(), 20000);
+      std::vector<TreeHit> exact;
+      walk_tree(tree, [&](const Sphere& s) { return may_touch(frame, s, m); }, TreeCut(),
+                [&](const TreeHit& h) { exact.push_back(h); });
+      ASSERT_EQ(stats.hits, static_cast<int32_t>(exact.size())) << "trial " << trial << " query " << q;
+      for (size_t i = 0; i < exact.size(); ++i) {
+        ASSERT_EQ(hits[i].node, exact[i].node) << "trial " << trial << " query " << q << " hit " << i;
+        ASSERT_EQ(hits[i].leaf, exact[i].leaf);
+      }
+      compared += stats.hits;
+    }
+  }
+  EXPECT_GT(compared, 100000);
+  EXPECT_GT(grazing, 1000);
 }
 
 TEST(SphereTree, SphereQueryEqualsBruteForceScan) {
