@@ -139,6 +139,41 @@ void BM_TreeQuerySegment(benchmark::State& state) {
 }
 BENCHMARK(BM_TreeQuerySegment)->RangeMultiplier(10)->Range(100, 1000000)->Unit(benchmark::kMicrosecond);
 
+// The same queries walking with may_touch in double at every node, one at a time (the
+// walk before query_segment culled children four at a time in single precision): the
+// ratio of the two is what that saves, and `queries_differing` (0) its error: the hits
+// of each query compared, node for node.
+void BM_TreeQuerySegmentExactWalk(benchmark::State& state) {
+  const SphereTree tree = shell_tree(static_cast<int>(state.range(0)));
+  const std::vector<SegmentFrame> frames = fingertips(256);
+  std::vector<TreeHit> hits(1 << 16), culled(1 << 16);
+  int64_t differing = 0;
+  for (size_t q = 0; q < frames.size(); ++q) {
+    int32_t count = 0;
+    walk_tree(tree, [&](const Sphere& s) { return may_touch(frames[q], s, 0.002); }, TreeCut(),
+              [&](const TreeHit& h) { hits[static_cast<size_t>(count++)] = h; });
+    const TreeQueryStats s =
+        query_segment(tree, frames[q], 0.002, -1, culled.data(), static_cast<int32_t>(culled.size()));
+    bool same = s.hits == count;
+    for (int32_t k = 0; same && k < count; ++k)
+      same = hits[static_cast<size_t>(k)].node == culled[static_cast<size_t>(k)].node;
+    differing += !same;
+  }
+  size_t i = 0;
+  int64_t found = 0;
+  for (auto _ : state) {
+    int32_t count = 0;
+    walk_tree(tree, [&](const Sphere& s) { return may_touch(frames[i & 255], s, 0.002); }, TreeCut(),
+              [&](const TreeHit& h) { hits[static_cast<size_t>(count++)] = h; });
+    ++i;
+    found += count;
+  }
+  state.counters["leaves"] = static_cast<double>(tree.leaves.size());
+  state.counters["hits_per_query"] = static_cast<double>(found) / static_cast<double>(state.iterations());
+  state.counters["queries_differing"] = static_cast<double>(differing);
+}
+BENCHMARK(BM_TreeQuerySegmentExactWalk)->RangeMultiplier(10)->Range(100, 1000000)->Unit(benchmark::kMicrosecond);
+
 // Building a tree (the node errors included) against computing its node errors alone:
 // what the level of detail's error figures add to every tree built or loaded.
 void BM_TreeBuild(benchmark::State& state) {
