@@ -2,6 +2,7 @@
 #include "spheretree/sphere_tree.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <cstddef>
 #include <cstring>
@@ -44,18 +45,20 @@ static_assert(offsetof(TreeNode, center) == 0 && offsetof(TreeNode, radius) == 1
               "a node's sphere is its first 16 bytes");
 
 // The children [first, first + count) of a node that `test` keeps: bit k for child k.
+// `overhang` (null: none) is added to each child's radius: what stands out of it below.
 unsigned children_near(const WideSegmentTest& test, const std::vector<TreeNode>& nodes,
-                       int32_t first, int32_t count) {
+                       const float* overhang, int32_t first, int32_t count) {
   unsigned kept = 0;
 #if defined(__GNUC__)
   for (int32_t k = 0; k < count; k += 4) {
     // four nodes' spheres, read whole (past the last child too where the array goes on:
     // those lanes are dropped below) and turned into a register per coordinate
-    Floats4 sphere[4] = {};
+    Floats4 sphere[4] = {}, extra = {};
     for (int32_t i = 0; i < 4; ++i) {
       const size_t node = static_cast<size_t>(first + k + i);
-      if (node < nodes.size())
-        std::memcpy(&sphere[i], reinterpret_cast<const char*>(&nodes[node]), sizeof(Floats4));
+      if (node >= nodes.size()) continue;
+      std::memcpy(&sphere[i], reinterpret_cast<const char*>(&nodes[node]), sizeof(Floats4));
+      if (overhang != nullptr) extra[i] = overhang[node];
     }
     const Floats4 xy01 = __builtin_shuffle(sphere[0], sphere[1], Mask4{0, 4, 1, 5});
     const Floats4 xy23 = __builtin_shuffle(sphere[2], sphere[3], Mask4{0, 4, 1, 5});
@@ -64,42 +67,58 @@ unsigned children_near(const WideSegmentTest& test, const std::vector<TreeNode>&
     kept |= lane_bits(test(__builtin_shuffle(xy01, xy23, Mask4{0, 1, 4, 5}),
                            __builtin_shuffle(xy01, xy23, Mask4{2, 3, 6, 7}),
                            __builtin_shuffle(zr01, zr23, Mask4{0, 1, 4, 5}),
-                           __builtin_shuffle(zr01, zr23, Mask4{2, 3, 6, 7})))
+                           __builtin_shuffle(zr01, zr23, Mask4{2, 3, 6, 7}) + extra))
             << k;
   }
 #else
   for (int32_t k = 0; k < count; ++k) {
-    const TreeNode& n = nodes[static_cast<size_t>(first + k)];
-    kept |= static_cast<unsigned>(test(n.center[0], n.center[1], n.center[2], n.radius) != 0) << k;
+    const size_t node = static_cast<size_t>(first + k);
+    const TreeNode& n = nodes[node];
+    const float radius = n.radius + (overhang != nullptr ? overhang[node] : 0.0f);
+    kept |= static_cast<unsigned>(test(n.center[0], n.center[1], n.center[2], radius) != 0) << k;
   }
 #endif
   static_assert(kMaxBranching < 32, "a bit per child");
   return kept & ((1u << count) - 1u);
 }
 
-// walk_tree with may_touch, to the leaves, for less: the children of a node culled four at
-// a time in single precision (which keeps every one may_touch keeps, and a few more),
-// and every leaf kept tested as itself. Where the children are leaves (where the hits
-// are made) each is tested exactly at once, as walk_tree does: culling them first made
-// the 10^5-leaf grasp's walks, which keep most of the leaves they test, slower. A leaf
-// among inner children is culled by its node's sphere, which bounds it (the builder's
-// rounding, the loader's check). The same hits in the same order.
+// walk_tree with may_touch, for less: the children of a node culled four at a time in
+// single precision (which keeps every one may_touch keeps, and a few more), by their
+// spheres and, under a cut, what stands out of them below (node_overhang: conservative
+// for a child the cut stops at, which is tested as itself); every node the walk may
+// report, a leaf or where the cut stops it, then tested exactly. Where the children are
+// leaves (where most hits are made) each is tested exactly at once, as walk_tree does:
+// culling them first made the 10^5-leaf grasp's walks, which keep most of the leaves
+// they test, slower. A leaf among inner children is culled by its node's sphere, which
+// bounds it (the builder's rounding, the loader's check). The same hits in the same
+// order as walk_tree.
+template <bool kCuts>
 TreeQueryStats walk_segment(const SphereTree& tree, const SegmentFrame& frame, double margin,
-                            BufferHits& out) {
+                            TreeCut cut, BufferHits& out) {
   TreeQueryStats stats;
   int32_t stack[kMaxTreeDepth * kMaxBranching + 1];
+  int32_t levels[kCuts ? kMaxTreeDepth * kMaxBranching + 1 : 1];  // stack's, under a cut
   int top = 0;
-  auto exact = [&](int32_t node) {
-    return may_touch(frame, walked_sphere(tree, node, false, TreeCut()), margin);
+  auto stops = [&](int32_t node, int32_t level) {
+    return kCuts && tree.nodes[static_cast<size_t>(node)].count != 0 && cut.stops(tree, node, level);
+  };
+  auto exact = [&](int32_t node, bool stopping) {
+    return may_touch(frame, walked_sphere(tree, node, stopping, kCuts ? cut : TreeCut()), margin);
+  };
+  auto push = [&](int32_t node, int32_t level) {
+    if constexpr (kCuts) levels[top] = level;
+    stack[top++] = node;
   };
   ++stats.visited;
-  if (exact(0)) stack[top++] = 0;
+  if (exact(0, stops(0, 0))) push(0, 0);
   const WideSegmentTest test(frame, margin);
+  const float* overhang = kCuts ? tree.node_overhang.data() : nullptr;
   while (top > 0) {
     const int32_t node = stack[--top];
+    const int32_t level = kCuts ? levels[top] : 0;
     const TreeNode& n = tree.nodes[static_cast<size_t>(node)];
-    if (n.count == 0) {
-      out(TreeHit{node, n.first});
+    if (n.count == 0 || stops(node, level)) {
+      out(TreeHit{node, n.count == 0 ? n.first : -1});
       ++stats.hits;
       continue;
     }
@@ -107,15 +126,17 @@ TreeQueryStats walk_segment(const SphereTree& tree, const SegmentFrame& frame, d
     // pushed last-first so they pop in array order
     if (tree.nodes[static_cast<size_t>(n.first)].count == 0) {
       for (int32_t c = n.first + n.count - 1; c >= n.first; --c)
-        if (exact(c)) stack[top++] = c;
+        if (exact(c, stops(c, level + 1))) push(c, level + 1);
       continue;
     }
-    for (unsigned kept = children_near(test, tree.nodes, n.first, n.count); kept != 0;) {
+    for (unsigned kept = children_near(test, tree.nodes, overhang, n.first, n.count); kept != 0;) {
       const int k = highest_bit(kept);
       kept &= ~(1u << k);
       const int32_t child = n.first + k;
-      if (tree.nodes[static_cast<size_t>(child)].count == 0 && !exact(child)) continue;
-      stack[top++] = child;
+      const bool stopping = stops(child, level + 1);
+      if ((stopping || tree.nodes[static_cast<size_t>(child)].count == 0) && !exact(child, stopping))
+        continue;
+      push(child, level + 1);
     }
   }
   return stats;
@@ -126,8 +147,10 @@ TreeQueryStats walk_segment(const SphereTree& tree, const SegmentFrame& frame, d
 TreeQueryStats query_segment(const SphereTree& tree, const SegmentFrame& frame, double margin,
                              TreeCut cut, TreeHit* hits, int32_t capacity) {
   BufferHits out{hits, capacity};
-  if (!cut.cuts()) return tree.empty() ? TreeQueryStats{} : walk_segment(tree, frame, margin, out);
-  return walk_tree(tree, [&](const Sphere& s) { return may_touch(frame, s, margin); }, cut, out);
+  if (tree.empty()) return {};
+  assert(!cut.cuts() || tree.node_overhang.size() == tree.nodes.size());  // built or loaded
+  return cut.cuts() ? walk_segment<true>(tree, frame, margin, cut, out)
+                    : walk_segment<false>(tree, frame, margin, cut, out);
 }
 
 TreeQueryStats query_sphere(const SphereTree& tree, const Sphere& sphere, double margin,

@@ -73,16 +73,17 @@ TEST(SphereTree, SegmentQueryEqualsBruteForceScan) {
   EXPECT_GT(compared, 1000000);
 }
 
-// query_segment culls a node's children in single precision and tests each leaf it keeps
-// exactly: it must find what walk_tree testing every node with may_touch finds, hit for
-// hit and in the same order, on random trees (far from the origin too, where single
-// precision is coarse) and margins, with segments that graze a leaf at the margin.
+// query_segment culls a node's children in single precision and tests exactly each node
+// it may report: it must find what walk_tree testing every node with may_touch finds, hit
+// for hit and in the same order, on random trees (far from the origin too, where single
+// precision is coarse), margins and cuts (to the leaves, at a level, by an error budget),
+// with segments that graze a leaf at the margin.
 TEST(SphereTree, SegmentQueryMatchesTheExactWalkHitForHit) {
   std::mt19937_64 rng(77);
   std::uniform_real_distribution<double> u(-0.12, 0.12), r(0.0, 0.015), margin(0.0, 0.01);
   std::normal_distribution<double> g;
   std::vector<TreeHit> hits(20000);
-  long compared = 0, grazing = 0;
+  long compared = 0, grazing = 0, cut_hits = 0;
   for (int trial = 0; trial < 200; ++trial) {
     std::vector<Sphere> leaves =
         testing::random_leaves(rng, 1 + static_cast<int>(rng() % 3000), trial % 4);
@@ -99,10 +100,16 @@ TEST(SphereTree, SegmentQueryMatchesTheExactWalkHitForHit) {
         m = std::max(0.0, exact_distance(frame, leaves[rng() % leaves.size()]));
         ++grazing;
       }
-      const TreeQueryStats stats = query_segment(tree, frame, m, -1, hits.data(), 20000);
+      const TreeCut cut = q % 3 == 0   ? TreeCut()
+                          : q % 3 == 1 ? TreeCut(static_cast<int32_t>(rng() % 4))
+                                       : TreeCut(-1, 0.02 * margin(rng));
+      const TreeQueryStats stats = query_segment(tree, frame, m, cut, hits.data(), 20000);
       std::vector<TreeHit> exact;
-      walk_tree(tree, [&](const Sphere& s) { return may_touch(frame, s, m); }, TreeCut(),
+      walk_tree(tree, [&](const Sphere& s) { return may_touch(frame, s, m); }, cut,
                 [&](const TreeHit& h) { exact.push_back(h); });
+      cut_hits += cut.cuts() ? static_cast<long>(std::count_if(exact.begin(), exact.end(),
+                                                               [](const TreeHit& h) { return h.leaf < 0; }))
+                             : 0;
       ASSERT_EQ(stats.hits, static_cast<int32_t>(exact.size())) << "trial " << trial << " query " << q;
       for (size_t i = 0; i < exact.size(); ++i) {
         ASSERT_EQ(hits[i].node, exact[i].node) << "trial " << trial << " query " << q << " hit " << i;
@@ -113,6 +120,7 @@ TEST(SphereTree, SegmentQueryMatchesTheExactWalkHitForHit) {
   }
   EXPECT_GT(compared, 100000);
   EXPECT_GT(grazing, 1000);
+  EXPECT_GT(cut_hits, 10000);  // inner nodes reported where a cut stopped
 }
 
 TEST(SphereTree, SphereQueryEqualsBruteForceScan) {
