@@ -18,11 +18,29 @@
 namespace frusta {
 
 #if defined(__GNUC__)
-// Four lanes in one register (SSE2 on x86-64, NEON on arm64), by the compiler's vector
-// extension: the same IEEE single-precision arithmetic as four scalar tests.
+// Four lanes in one register (SSE2 on x86-64, NEON on arm64), by the vector extension
+// GCC and Clang share: the same IEEE single-precision arithmetic as four scalar tests.
 typedef float Floats4 __attribute__((vector_size(16)));
 typedef int32_t Mask4 __attribute__((vector_size(16)));
 
+
+// Four spheres' (x, y, z, radius) rows turned into a register per coordinate.
+inline void transpose(const Floats4 (&row)[4], Floats4& x, Floats4& y, Floats4& z, Floats4& radius) {
+#if defined(__clang__)
+#define FRUSTA_LANES(a, b, i, j, k, l) __builtin_shufflevector(a, b, i, j, k, l)
+#else
+#define FRUSTA_LANES(a, b, i, j, k, l) __builtin_shuffle(a, b, Mask4{i, j, k, l})
+#endif
+  const Floats4 xy01 = FRUSTA_LANES(row[0], row[1], 0, 4, 1, 5);
+  const Floats4 xy23 = FRUSTA_LANES(row[2], row[3], 0, 4, 1, 5);
+  const Floats4 zr01 = FRUSTA_LANES(row[0], row[1], 2, 6, 3, 7);
+  const Floats4 zr23 = FRUSTA_LANES(row[2], row[3], 2, 6, 3, 7);
+  x = FRUSTA_LANES(xy01, xy23, 0, 1, 4, 5);
+  y = FRUSTA_LANES(xy01, xy23, 2, 3, 6, 7);
+  z = FRUSTA_LANES(zr01, zr23, 0, 1, 4, 5);
+  radius = FRUSTA_LANES(zr01, zr23, 2, 3, 6, 7);
+#undef FRUSTA_LANES
+}
 
 // Bit k set where lane k of a comparison's answer is true.
 inline unsigned lane_bits(Mask4 mask) {

@@ -60,15 +60,9 @@ unsigned children_near(const WideSegmentTest& test, const std::vector<TreeNode>&
       std::memcpy(&sphere[i], reinterpret_cast<const char*>(&nodes[node]), sizeof(Floats4));
       if (overhang != nullptr) extra[i] = overhang[node];
     }
-    const Floats4 xy01 = __builtin_shuffle(sphere[0], sphere[1], Mask4{0, 4, 1, 5});
-    const Floats4 xy23 = __builtin_shuffle(sphere[2], sphere[3], Mask4{0, 4, 1, 5});
-    const Floats4 zr01 = __builtin_shuffle(sphere[0], sphere[1], Mask4{2, 6, 3, 7});
-    const Floats4 zr23 = __builtin_shuffle(sphere[2], sphere[3], Mask4{2, 6, 3, 7});
-    kept |= lane_bits(test(__builtin_shuffle(xy01, xy23, Mask4{0, 1, 4, 5}),
-                           __builtin_shuffle(xy01, xy23, Mask4{2, 3, 6, 7}),
-                           __builtin_shuffle(zr01, zr23, Mask4{0, 1, 4, 5}),
-                           __builtin_shuffle(zr01, zr23, Mask4{2, 3, 6, 7}) + extra))
-            << k;
+    Floats4 x, y, z, radius;
+    transpose(sphere, x, y, z, radius);
+    kept |= lane_bits(test(x, y, z, radius + extra)) << k;
   }
 #else
   for (int32_t k = 0; k < count; ++k) {
