@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // may_touch for a node's children at once, in single precision: a tree walk culls with
-// it and leaves the exact test to the leaves (query_segment). It holds wherever may_touch
+// it and leaves the exact test to the nodes it reports (query_segment). It holds wherever may_touch
 // holds (its slack is a hundred times what single precision rounds), and may hold a hair
 // beyond. The closing grasp's segment walks, 2.5 mm margins: 10^4 leaves 4.68 -> 3.55 us,
 // 10^5 leaves 24.6 -> 22.1 us, the same hits.
@@ -22,7 +22,6 @@ namespace frusta {
 // GCC and Clang share: the same IEEE single-precision arithmetic as four scalar tests.
 typedef float Floats4 __attribute__((vector_size(16)));
 typedef int32_t Mask4 __attribute__((vector_size(16)));
-
 
 // Four spheres' (x, y, z, radius) rows turned into a register per coordinate.
 inline void transpose(const Floats4 (&row)[4], Floats4& x, Floats4& y, Floats4& z, Floats4& radius) {
@@ -98,6 +97,5 @@ auto WideSegmentTest::operator()(F cx, F cy, F cz, F radius) const {
   return near_ends | ((axial >= -shift) & (axial <= length - shift) & (threshold >= 0.0f) &
                       (qx * qx + qy * qy + qz * qz <= threshold * threshold));
 }
-
 
 }  // namespace frusta
