@@ -57,10 +57,12 @@ HandState InputPlayback::play(int64_t at_ns, int64_t max_extrapolation_ns, bool*
   *late = at_ns > newest_ns;
   const bool stopped = at_ns - newest_ns > max_extrapolation_ns + kStopNs;
   if (has_played_ && at_ns > played_ns_) {
-    // what the samples now say of the time played last: another answer than then (late
-    // samples came, or the stream has stopped) is a jump, which fades out from there
-    const HandState then =
-        stopped && !played_stopped_ ? newest().state : sampled(played_ns_, max_extrapolation_ns);
+    // what the samples now say of the time played last, by the rule of this step's own
+    // answer (held at the newest once the stream has stopped): another answer than then
+    // (late samples came, or the stream has stopped) is a jump, which fades out from
+    // there. Judged by the time played last instead, a stream lagging just past the stop
+    // made every new sample a jump of max_extrapolation's worth, and the fades piled up.
+    const HandState then = sampled(played_ns_, max_extrapolation_ns, stopped);
     if (differs(then, played_raw_)) {
       offset_position_ = played_.palm_position - then.palm_position;
       offset_rotation_ = played_.palm_rotation * glm::conjugate(then.palm_rotation);
@@ -79,7 +81,7 @@ HandState InputPlayback::play(int64_t at_ns, int64_t max_extrapolation_ns, bool*
     drop_oldest();
     --i;
   }
-  const HandState raw = sampled(at_ns, max_extrapolation_ns);
+  const HandState raw = sampled(at_ns, max_extrapolation_ns, stopped);
   HandState out = raw;
   if (rejoining_) {
     const double left = 1.0 - static_cast<double>(at_ns - offset_ns_) / static_cast<double>(kRejoinNs);
@@ -95,12 +97,11 @@ HandState InputPlayback::play(int64_t at_ns, int64_t max_extrapolation_ns, bool*
   played_ = out;
   played_raw_ = raw;
   played_ns_ = at_ns;
-  played_stopped_ = stopped;
   has_played_ = true;
   return out;
 }
 
-HandState InputPlayback::sampled(int64_t at_ns, int64_t max_extrapolation_ns) const {
+HandState InputPlayback::sampled(int64_t at_ns, int64_t max_extrapolation_ns, bool stopped) const {
   size_t i = 0;
   while (i + 1 < count_ && at(i + 1).time_ns <= at_ns) ++i;
   const TimedInput& a = at(i);
@@ -114,9 +115,7 @@ HandState InputPlayback::sampled(int64_t at_ns, int64_t max_extrapolation_ns) co
   // until the stream has stopped, then the newest. Only samples their driver stamped:
   // the times of unstamped ones are when they arrived, which a burst squeezes together
   const int64_t newest_ns = a.time_ns;
-  if (count_ < 2 || !a.timed || max_extrapolation_ns <= 0 ||
-      at_ns - newest_ns > max_extrapolation_ns + kStopNs)
-    return a.state;
+  if (count_ < 2 || !a.timed || max_extrapolation_ns <= 0 || stopped) return a.state;
   size_t r = count_ - 2;
   while (r > 0 && newest_ns - at(r).time_ns < kVelocityWindowNs) --r;
   const TimedInput& from = at(r);

@@ -61,14 +61,15 @@ class InputPlayback {
  private:
   const TimedInput& at(size_t i) const { return ring_[(head_ + i) % kCapacity]; }
   void drop_oldest();
-  // the samples' input at at_ns, as play() says, without the rejoin
-  HandState sampled(int64_t at_ns, int64_t max_extrapolation_ns) const;
+  // the samples' input at at_ns, as play() says, without the rejoin; past the newest,
+  // the newest where the stream has `stopped` (judged at the step's time)
+  HandState sampled(int64_t at_ns, int64_t max_extrapolation_ns, bool stopped) const;
 
-  // the rejoin: the last played input, the samples' answer for it and its time,
-  // whether the stream had stopped then, and the offset fading out since offset_ns
+  // the rejoin: the last played input, the samples' answer for it and its time, and
+  // the offset fading out since offset_ns
   HandState played_, played_raw_;
   int64_t played_ns_ = 0;
-  bool has_played_ = false, played_stopped_ = false, rejoining_ = false;
+  bool has_played_ = false, rejoining_ = false;
   vec3 offset_position_{0.0};
   glm::dquat offset_rotation_{1.0, 0.0, 0.0, 0.0};
   std::array<double, FRUSTA_HAND_JOINT_COUNT> offset_angles_{};

@@ -297,6 +297,44 @@ TEST(InputPlayback, TheSameSampleTwiceIsTakenOnce) {
   EXPECT_EQ(playback.size(), 2u);
 }
 
+// A stream that keeps coming, but later than max_extrapolation + kStopNs: at each step
+// its newest sample lies just past that bound (the stream has stopped), yet at the time
+// played the step before it did not (that newest is later than the one then). The
+// samples' answer for the time played before must follow the step's own rule: read as
+// extrapolated while the step's answer held the newest, every new sample was taken for
+// a jump of max_extrapolation's worth and the fades piled up, the hand running backwards
+// 9 cm past its first sample within a few steps (the threaded World test met it under
+// load). The hand stays between its first sample and the newest's extrapolation.
+TEST(InputPlayback, AStreamLaggingPastItsStopNeverRunsAway) {
+  constexpr int64_t kMs = 1'000'000, kMaxExtrapolation = 40 * kMs;
+  auto sample = [](int64_t j) {  // 1 mm a millisecond
+    TimedInput in;
+    in.sequence = static_cast<uint64_t>(j);
+    in.time_ns = j * kMs;
+    in.timed = true;
+    in.state.palm_position = vec3(1e-3 * static_cast<double>(j), 0.0, 0.0);
+    return in;
+  };
+  InputPlayback playback;
+  int64_t newest = 0;
+  while (newest < 50) playback.push(sample(++newest));
+  double lowest = INFINITY, highest = -INFINITY;
+  int64_t behind = 0;  // steps whose samples ended more than the bound before them
+  for (int64_t at = 50 * kMs; at <= 600 * kMs; at += kMs) {
+    // the stream stalls, then keeps a millisecond past the bound behind the steps
+    while (at - newest * kMs > kMaxExtrapolation + InputPlayback::kStopNs + kMs)
+      playback.push(sample(++newest));
+    behind += at - newest * kMs > kMaxExtrapolation + InputPlayback::kStopNs;
+    bool late = false;
+    const double x = playback.play(at, kMaxExtrapolation, &late).palm_position.x;
+    lowest = std::min(lowest, x);
+    highest = std::max(highest, x - 1e-3 * static_cast<double>(newest));
+  }
+  EXPECT_GT(behind, 400);
+  EXPECT_GE(lowest, 1e-3 - 1e-12) << "behind the first sample";
+  EXPECT_LE(highest, 1e-3 * 40.0 + 1e-12) << "beyond the newest's extrapolation";
+}
+
 }  // namespace
 }  // namespace frusta
 
