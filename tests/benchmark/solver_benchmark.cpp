@@ -447,7 +447,7 @@ int main(int argc, char** argv) {
             if (pass == 0) continue;
             (palm ? whole_us : fingers_us).push_back(us);
             if (palm) {
-              most = std::max(most, static_cast<int32_t>(set.candidates.size()));
+              most = std::max(most, set.size());
               most_palm = std::max(most_palm, set.count(kPalmBody));
               visited += set.tree_nodes_visited;
             }

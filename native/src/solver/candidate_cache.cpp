@@ -46,8 +46,8 @@ void CandidateCache::detect(const HandModel& model, const HandReach& reach, cons
     valid_ = true;
   }
 
-  // each body's cached spheres within its need, in their walk's order, their gap bounds
-  // widened by the body's move since
+  // each body's cached spheres within its need, in their order in the walk's set (of their
+  // gap bounds, CandidateSet), the bounds widened by the body's move since (which keeps it)
   out.candidates.clear();
   auto keep = [&](Candidate c, double move) {
     c.gap.least -= move;
@@ -60,18 +60,22 @@ void CandidateCache::detect(const HandModel& model, const HandReach& reach, cons
     const int32_t count = wide_.count(body);
     const double need = needs.body[body], move = moves[body];
     if (body == kPalmBody) {
-      for (int32_t k = 0; k < count; ++k)
+      for (int32_t k = 0; k < count; ++k) {
+        if (!may_be_within(c[k].gap, move, need)) break;  // and every one after
         if (decided_may_touch(c[k].gap, move, need, [&] {
               return may_touch_sphere(palm_sphere(model, pose, c[k].part), c[k].world, need);
             }))
           keep(c[k], move);
+      }
     } else {
       const SegmentView view{make_segment_frame(now.segments[body]), move};
-      for (int32_t k = 0; k < count; ++k)
+      for (int32_t k = 0; k < count; ++k) {
+        if (!may_be_within(c[k].gap, move, need)) break;  // and every one after
         if (view.may_touch(c[k], need)) keep(c[k], move);
+      }
     }
+    out.end[body] = static_cast<int32_t>(out.candidates.size());
   }
-  out.begin[kBodyCount] = static_cast<int32_t>(out.candidates.size());
 }
 
 }  // namespace frusta

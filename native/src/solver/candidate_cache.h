@@ -16,8 +16,8 @@ namespace frusta {
 class CandidateCache {
  public:
   // Fill `out` with every leaf (or cut node) within needs.body[b] of body b at `pose`,
-  // in the order of a walk, as detect_candidates would (up to spheres within rounding of
-  // the margin): from the cache where the body moved less than the room it was walked
+  // as detect_candidates would (up to spheres within rounding of the margin; in the order
+  // of their gap bounds where the walk looked from): from the cache where the body moved less than the room it was walked
   // with, else from a walk `room` metres further, kept for later calls. The objects
   // must be those of the last call unless clear() came between; `only` as for
   // detect_candidates, holding every object within the largest need plus room.

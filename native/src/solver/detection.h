@@ -58,25 +58,40 @@ struct MaskedHit {
   Sphere local;  // the leaf (or cut node) in the object's frame, as the walk read it
 };
 
-// Candidates grouped by body: body b owns [begin[b], begin[b + 1]).
+// Candidates grouped by body: body b owns [begin[b], end[b]), in increasing order of
+// their gap bounds' least (ties in the order of the walk). A pass for the spheres within
+// some margin of a body stops at the first whose bound rules it out: every one after is
+// ruled out too. Grasping a ball, 9 in 10 of a segment's candidates lie further than the
+// clearance and the rows look, and each pass over them had cost a tenth of a step.
 struct CandidateSet {
   std::vector<Candidate> candidates;
-  int32_t begin[kBodyCount + 1] = {};
+  int32_t begin[kBodyCount] = {};
+  int32_t end[kBodyCount] = {};
   BodyPlacements placed;
   int32_t tree_nodes_visited = 0;
   // scratch kept between calls
   std::vector<TreeHit> hits;
   std::vector<MaskedHit> masked_hits;
   std::vector<int32_t> near_objects;
+  std::vector<int32_t> order;
+  std::vector<Candidate> sorting;
 
-  int32_t count(int body) const { return begin[body + 1] - begin[body]; }
+  int32_t count(int body) const { return end[body] - begin[body]; }
   const Candidate* of(int body) const { return candidates.data() + begin[body]; }
   void clear() {
     candidates.clear();
     std::fill(std::begin(begin), std::end(begin), 0);
+    std::fill(std::begin(end), std::end(end), 0);
   }
   int32_t finger_count(int finger) const {
-    return begin[(finger + 1) * FRUSTA_SEGMENTS_PER_FINGER] - begin[finger * FRUSTA_SEGMENTS_PER_FINGER];
+    int32_t sum = 0;
+    for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s) sum += count(finger * FRUSTA_SEGMENTS_PER_FINGER + s);
+    return sum;
+  }
+  int32_t size() const {
+    int32_t sum = 0;
+    for (int body = 0; body < kBodyCount; ++body) sum += count(body);
+    return sum;
   }
 };
 
@@ -169,10 +184,12 @@ double body_clearance(const HandModel& model, const HandPose& pose, const Candid
                       int body);
 
 // The same over `count` of the body's candidates, the k-th candidates.candidates[index(k)]:
-// those a step can reach (a stage's rows), when the others cannot touch.
+// those a step can reach (a stage's rows), when the others cannot touch. `in_set_order`:
+// the indices increase, so the pass stops at the first sphere out of reach.
 template <class Index>
 double body_clearance_over(const HandModel& model, const HandPose& pose,
-                           const CandidateSet& candidates, int body, int32_t count, Index index) {
+                           const CandidateSet& candidates, int body, int32_t count, Index index,
+                           bool in_set_order) {
   double gap = 0.0;
   if (count == 0) return gap;
   const Candidate* all = candidates.candidates.data();
@@ -187,6 +204,10 @@ double body_clearance_over(const HandModel& model, const HandPose& pose,
   const SegmentView view = segment_view(model, pose, candidates, body);
   for (int32_t k = 0; k < count; ++k) {
     const Candidate& c = all[index(k)];
+    if (!may_be_within(c.gap, view.moved, 0.0)) {
+      if (in_set_order) break;  // and so is every one after
+      continue;
+    }
     // the cheap conservative test first: only a sphere that may touch can sink in
     if (view.may_touch(c, 0.0)) gap = std::min(gap, exact_distance(view.frame, c.world));
   }

@@ -101,6 +101,7 @@ int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights, dou
     const int32_t first = inputs_.candidates.begin[body],
                   candidates = inputs_.candidates.count(body);
     for (int32_t i = 0; i < candidates; ++i) {
+      if (!may_be_within(c[i].gap, view.moved, reach)) break;  // and every one after
       if (!view.may_touch(c[i], reach)) continue;
       const Constraint g = contact_constraint(frame, c[i].world, inputs_.params.form);
       QpRow& row = rows[count++];
@@ -112,6 +113,7 @@ int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights, dou
       row.key = row_key(RowKind::kContact, body, c[i].part, c[i].object, c[i].leaf);
       row.source = first + i;
     }
+    sort_by_key(rows + segment_rows_[static_cast<size_t>(s)], rows + count);
   }
   segment_rows_[FRUSTA_SEGMENTS_PER_FINGER] = count;
   return count;
@@ -251,7 +253,8 @@ double FingerStage::step_clearance() {
     gap = std::min(gap, body_clearance_over(inputs_.model, trial_pose_, inputs_.candidates,
                                             finger_ * FRUSTA_SEGMENTS_PER_FINGER + s,
                                             segment_rows_[static_cast<size_t>(s) + 1] - begin,
-                                            [&](int32_t k) { return rows_[begin + k].source; }));
+                                            [&](int32_t k) { return rows_[begin + k].source; },
+                                            false));
   }
   return gap;
 }

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <tuple>
 #include <utility>
 
 #include <glm/geometric.hpp>
@@ -417,7 +418,7 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
                   cut, candidates_, only, only_count);
     measure_gaps();
   }
-  stats.candidates = std::max(stats.candidates, static_cast<int32_t>(candidates_.candidates.size()));
+  stats.candidates = std::max(stats.candidates, candidates_.size());
   stats.tree_nodes_visited += candidates_.tree_nodes_visited;
   const StageInputs inputs{model_, reach_, params_, candidates_};
   bool reached = true;
@@ -440,7 +441,7 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
   // A part with candidates solves towards its full target and its stage stops at the
   // motion bound; a part with none moves straight, cut at the bound.
   if (palm_move > 0.0 || recovering) {
-    if (candidates_.candidates.empty()) {
+    if (candidates_.size() == 0) {
       const double s = std::min(1.0, cap / palm_move);
       graphic_.palm_position = s < 1.0 ? palm_from.position + s * (palm_to.position - palm_from.position)
                                        : palm_to.position;
@@ -527,7 +528,10 @@ void HandSolver::report_contacts() {
     for (int32_t i = 0; i < count; ++i) {
       // a segment's candidates further than the contact distance, most of them, are told by
       // their gap bounds before a contact is begun
-      if (body != kPalmBody && !view.may_touch(c[i], params_.contact_distance)) continue;
+      if (body != kPalmBody) {
+        if (!may_be_within(c[i].gap, view.moved, params_.contact_distance)) break;  // and all after
+        if (!view.may_touch(c[i], params_.contact_distance)) continue;
+      }
       SolverContact contact;
       contact.object = c[i].object;
       contact.leaf = c[i].leaf;
@@ -551,6 +555,12 @@ void HandSolver::report_contacts() {
       if (contact.distance <= params_.contact_distance) contacts_.push_back(contact);
     }
   }
+  // in an order of their own, not of the candidates (of where each walk looked from): the
+  // same hand and objects make the same list, and the forces summed over it the same bits
+  std::sort(contacts_.begin(), contacts_.end(), [](const SolverContact& a, const SolverContact& b) {
+    return std::tie(a.body, a.object, a.leaf, a.part, a.object_point.x, a.object_point.y, a.object_point.z) <
+           std::tie(b.body, b.object, b.leaf, b.part, b.object_point.x, b.object_point.y, b.object_point.z);
+  });
 }
 
 }  // namespace frusta

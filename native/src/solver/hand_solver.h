@@ -105,6 +105,7 @@ class HandSolver {
   // haptic_hand_pose of the last successful step's input: the forces' haptic hand, worked
   // out once here
   const HandPose& target_pose() const { return target_pose_; }
+  // by body, then object, leaf and palm sphere, whatever the detection's history
   const std::vector<SolverContact>& contacts() const { return contacts_; }
   const HandModel& model() const { return model_; }
   const SolverParams& params() const { return params_; }

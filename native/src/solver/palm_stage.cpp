@@ -94,6 +94,7 @@ int32_t PalmStage::linearise(QpRow* rows, double* target, double* weights, doubl
     const SegmentFrame& frame = view.frame;
     const Candidate* c = inputs_.candidates.of(body);
     for (int32_t i = 0; i < inputs_.candidates.count(body); ++i) {
+      if (!may_be_within(c[i].gap, view.moved, reach)) break;  // and every one after
       if (!view.may_touch(c[i], reach)) continue;
       const Constraint g = contact_constraint(frame, c[i].world, inputs_.params.form);
       const double bound = row_bound(
@@ -120,6 +121,7 @@ int32_t PalmStage::linearise(QpRow* rows, double* target, double* weights, doubl
             row_bound(inputs_.params, g.value, hand.radius + c[i].world.radius),
             row_key(RowKind::kContact, kPalmBody, c[i].part, c[i].object, c[i].leaf));
   }
+  sort_by_key(rows, rows + count);
   if (heading_.way != vec3(0.0))
     set_row(rows[count++], heading_.way, vec3(0.0),
             -heading_.slack - glm::dot(heading_.way, state_.palm_position - heading_.from),

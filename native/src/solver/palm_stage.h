@@ -48,7 +48,7 @@ class PalmStage : public StageEstimate {
   int dofs() const { return 6; }
   double objective() const;
   int32_t row_capacity() const {
-    return static_cast<int32_t>(inputs_.candidates.candidates.size()) + 1;
+    return inputs_.candidates.size() + 1;
   }
   int32_t linearise(QpRow* rows, double* target, double* weights, double radius) const;
   double step_motion(const double* d) const;

@@ -2,13 +2,16 @@
 // Contact prediction walks each tree once for many probes (issue 21), copies the
 // candidates of the bodies that did not move since the last detection, and takes those of
 // bodies that moved less than its room from a wider walk before: its candidates must be
-// those of one walk per finger segment and per palm sphere, in that order, bit for bit,
-// since the solver's answer depends on their order.
+// those of one walk per finger segment and per palm sphere, bit for bit, each body's in
+// increasing order of their gap bounds (passes stop at the first out of reach), equal
+// ones in the walk's order, since the solver's answer depends on their order.
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <random>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -87,18 +90,111 @@ std::vector<Candidate> walk_per_probe(const HandModel& model, const HandReach& r
   return out;
 }
 
-// The objects' bits, compared exactly: an order or a rounding apart is a difference.
-void expect_same(const std::vector<Candidate>& expected, const int32_t* expected_begin,
-                 const CandidateSet& got, const std::string& what) {
-  for (int b = 0; b <= kBodyCount; ++b) ASSERT_EQ(expected_begin[b], got.begin[b]) << what << ", body " << b;
-  ASSERT_EQ(expected.size(), got.candidates.size()) << what;
-  for (size_t i = 0; i < expected.size(); ++i) {
-    const Candidate &e = expected[i], &g = got.candidates[i];
-    ASSERT_TRUE(e.object == g.object && e.leaf == g.leaf && e.part == g.part &&
-                e.world.center == g.world.center && e.world.radius == g.world.radius)
-        << what << ", candidate " << i << ": object " << e.object << "/" << g.object << ", leaf " << e.leaf
-        << "/" << g.leaf << ", part " << e.part << "/" << g.part;
+// How far a body moved from where the set placed it to `pose`.
+double moved_since_placed(const HandModel& model, const HandPose& pose, const CandidateSet& set, int body) {
+  if (body == kPalmBody) return palm_move(model, set.placed.palm_position, set.placed.palm_rotation, pose);
+  return segment_move(set.placed.segments[static_cast<size_t>(body)],
+                      finger_segment(model, pose, body / FRUSTA_SEGMENTS_PER_FINGER, body % FRUSTA_SEGMENTS_PER_FINGER));
+}
+
+// The exact gaps between a body at `pose` and each of its candidates in a set.
+std::vector<double> exact_gaps(const HandModel& model, const HandPose& pose, const CandidateSet& set, int body) {
+  std::vector<double> gaps;
+  const Candidate* c = set.of(body);
+  const SegmentFrame frame = body == kPalmBody ? SegmentFrame{}
+                                               : make_segment_frame(finger_segment(model, pose, body / FRUSTA_SEGMENTS_PER_FINGER,
+                                                                                   body % FRUSTA_SEGMENTS_PER_FINGER));
+  for (int32_t i = 0; i < set.count(body); ++i) {
+    if (body != kPalmBody) {
+      gaps.push_back(exact_distance(frame, c[i].world));
+      continue;
+    }
+    const Sphere hand = palm_sphere(model, pose, c[i].part);
+    gaps.push_back(glm::length(hand.center - c[i].world.center) - hand.radius - c[i].world.radius);
   }
+  return gaps;
+}
+
+// A body's candidates in increasing order of their bounds' least, equal ones in the order
+// they were found (`found`, where given: the k-th's position in a walk's list).
+void expect_sorted(const CandidateSet& got, int body, const std::vector<int32_t>* found, const std::string& what) {
+  const Candidate* c = got.of(body);
+  for (int32_t i = 1; i < got.count(body); ++i) {
+    ASSERT_LE(c[i - 1].gap.least, c[i].gap.least) << what << ", body " << body << ", candidate " << i;
+    if (found && c[i - 1].gap.least == c[i].gap.least) {
+      ASSERT_LT((*found)[static_cast<size_t>(i - 1)], (*found)[static_cast<size_t>(i)])
+          << what << ", body " << body << ", candidate " << i;
+    }
+  }
+}
+
+// A body's candidates' bounds, widened by its move since the set placed it, hold the exact
+// gap at `pose`.
+void expect_bounds_hold(const HandModel& model, const HandPose& pose, const CandidateSet& got, int body,
+                        const std::string& what) {
+  const Candidate* c = got.of(body);
+  const double moved = moved_since_placed(model, pose, got, body);
+  const std::vector<double> exact = exact_gaps(model, pose, got, body);
+  for (int32_t i = 0; i < got.count(body); ++i)
+    ASSERT_TRUE(c[i].gap.least - moved <= std::max(exact[static_cast<size_t>(i)], 0.0) &&
+                exact[static_cast<size_t>(i)] <= c[i].gap.most + moved)
+        << what << ", body " << body << ", candidate " << i;
+}
+
+// A candidate's sphere, to match two lists by: its object, leaf, palm sphere and bits.
+auto sphere_key(const Candidate& c) {
+  return std::make_tuple(c.object, c.leaf, c.part, c.world.center.x, c.world.center.y, c.world.center.z,
+                         c.world.radius);
+}
+
+// ... hashed, to sort by (a tuple's comparisons made the test four times slower).
+uint64_t sphere_hash(const Candidate& c) {
+  uint64_t h = 0xcbf29ce484222325ull;
+  auto mix = [&](uint64_t v) { h = (h ^ v) * 0x100000001b3ull; };
+  mix(static_cast<uint32_t>(c.object));
+  mix(static_cast<uint32_t>(c.leaf));
+  mix(static_cast<uint32_t>(c.part));
+  for (double v : {c.world.center.x, c.world.center.y, c.world.center.z, c.world.radius}) {
+    uint64_t bits = 0;
+    std::memcpy(&bits, &v, sizeof bits);
+    mix(bits);
+  }
+  return h;
+}
+
+// The positions of `count` candidates in order of their spheres' hashes.
+std::vector<int32_t> by_key(const Candidate* c, int32_t count) {
+  std::vector<std::pair<uint64_t, int32_t>> keyed(static_cast<size_t>(count));
+  for (int32_t i = 0; i < count; ++i) keyed[static_cast<size_t>(i)] = {sphere_hash(c[i]), i};
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<int32_t> order(static_cast<size_t>(count));
+  for (int32_t i = 0; i < count; ++i) order[static_cast<size_t>(i)] = keyed[static_cast<size_t>(i)].second;
+  return order;
+}
+
+// The spheres of one walk per probe, each body's bit for bit, in the set's order (above).
+void expect_same(const std::vector<Candidate>& expected,
+                 const int32_t* expected_begin, const CandidateSet& got, const std::string& what) {
+  int32_t total = 0;
+  for (int body = 0; body < kBodyCount; ++body) {
+    const int32_t count = expected_begin[body + 1] - expected_begin[body];
+    ASSERT_EQ(count, got.count(body)) << what << ", body " << body;
+    total += count;
+    const Candidate* e = expected.data() + expected_begin[body];
+    const Candidate* g = got.of(body);
+    const std::vector<int32_t> e_order = by_key(e, count), g_order = by_key(g, count);
+    std::vector<int32_t> found(static_cast<size_t>(count));  // each got's position in the walk's
+    for (size_t k = 0; k < e_order.size(); ++k) {
+      const Candidate &a = e[e_order[k]], &b = g[g_order[k]];
+      ASSERT_TRUE(sphere_key(a) == sphere_key(b))
+          << what << ", body " << body << ": object " << a.object << "/" << b.object << ", leaf " << a.leaf << "/"
+          << b.leaf << ", part " << a.part << "/" << b.part;
+      found[static_cast<size_t>(g_order[k])] = e_order[k];
+    }
+    expect_sorted(got, body, &found, what);
+    if (testing::Test::HasFatalFailure()) return;
+  }
+  EXPECT_EQ(total, got.size()) << what;
 }
 
 glm::dmat3 random_rotation(std::mt19937_64& rng) {
@@ -167,7 +263,7 @@ void check_random_hands(const HandModel& model, int32_t draws, uint64_t seed) {
         detect_candidates(model, reach, pose, objects.data(), static_cast<int32_t>(objects.size()), margin, cut, set);
         expect_same(expected, begin, set, what);
         if (testing::Test::HasFatalFailure()) return;
-        finger_candidates += set.begin[kPalmBody];
+        finger_candidates += set.size() - set.count(kPalmBody);
         palm_candidates += set.count(kPalmBody);
         const std::vector<Candidate> expected_moved =
             walk_per_probe(model, reach, moved, objects, margin, cut, begin, hits);
@@ -369,32 +465,25 @@ TEST(SolverDetection, ACachedDetectionFindsWhatAFreshOneFinds) {
                    cached);
       detect_candidates(model, reach, pose, objects.data(), static_cast<int32_t>(objects.size()), needs, cut, fresh);
       const std::string what = "run " + std::to_string(run) + ", step " + std::to_string(step);
-      expect_same(fresh.candidates, fresh.begin, cached, what);
-      if (testing::Test::HasFatalFailure()) return;
-      // both sets place the bodies where they are, and every gap's bounds (a cached
-      // one's widened by its body's move since its walk) hold the exact gap there
-      for (const CandidateSet* set : {&cached, &fresh})
-        for (int body = 0; body < kBodyCount; ++body) {
-          const Candidate* c = set->of(body);
-          for (int32_t i = 0; i < set->count(body); ++i) {
-            double exact = 0.0;
-            if (body == kPalmBody) {
-              ASSERT_EQ(set->placed.palm_position, pose.palm_position) << what;
-              const Sphere hand = palm_sphere(model, pose, c[i].part);
-              exact =
-                  glm::length(hand.center - c[i].world.center) - hand.radius - c[i].world.radius;
-            } else {
-              const SegmentView view = segment_view(model, pose, *set, body);
-              ASSERT_EQ(view.moved, 0.0) << what;
-              exact = exact_distance(view.frame, c[i].world);
-            }
-            ASSERT_TRUE(c[i].gap.least <= std::max(exact, 0.0) && exact <= c[i].gap.most)
-                << what << ", body " << body << ", candidate " << i;
-          }
-        }
+      // the spheres a fresh detection finds, each body's in order of its bounds (those of
+      // its walk, widened by its move since: another order than a fresh walk's), which
+      // hold the exact gap
+      for (int body = 0; body < kBodyCount; ++body) {
+        ASSERT_EQ(cached.count(body), fresh.count(body)) << what << ", body " << body;
+        const Candidate* c = cached.of(body);
+        const Candidate* f = fresh.of(body);
+        const std::vector<int32_t> in_cache = by_key(c, cached.count(body));
+        for (int32_t i = 0; i < fresh.count(body); ++i)
+          ASSERT_TRUE(std::binary_search(in_cache.begin(), in_cache.end(), -1, [&](int32_t a, int32_t b) {
+            return sphere_hash(a < 0 ? f[i] : c[a]) < sphere_hash(b < 0 ? f[i] : c[b]);
+          })) << what << ", body " << body << ": fresh candidate " << i << " is not cached";
+        expect_sorted(cached, body, nullptr, what);
+        expect_bounds_hold(model, pose, cached, body, what);
+        if (testing::Test::HasFatalFailure()) return;
+      }
       ++calls;
       (cached.tree_nodes_visited == 0 ? from_cache : walked) += 1;
-      candidates += static_cast<int64_t>(cached.candidates.size());
+      candidates += cached.size();
     }
   }
   // the moves both keep to the room and leave it, near many spheres

@@ -620,7 +620,7 @@ TEST(HandSolver, ASlowHandDetectsOnlyAsFarAsItCanMove) {
   CandidateSet full;
   detect_candidates(solver.model(), hand_reach(solver.model()), solver.graphic_pose(), s.objects.data(), 1,
                     SolverParams{}.prediction_margin, TreeCut(-1, 0.0), full);
-  EXPECT_LT(4 * fewest, static_cast<int32_t>(full.candidates.size()))
+  EXPECT_LT(4 * fewest, full.size())
       << "a hand moving microns a step looks a fraction of Delta_r away";
   EXPECT_LE(deepest, kMaxPenetration);
   for (int f = 1; f < 5; ++f) EXPECT_TRUE(touches(solver, f)) << "finger " << f << " still holds the ball";

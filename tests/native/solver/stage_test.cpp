@@ -156,7 +156,7 @@ void check_scenario(const scenes::HandScenario& s, Tally& fingers, Tally& palm, 
             trials_see_every_candidate, kept_by_every_candidate, rows, fingers, s.name.c_str(), t);
       }
     }
-    if (candidates.candidates.empty()) continue;
+    if (candidates.size() == 0) continue;
     const PalmPlacement to{target.palm_position, glm::normalize(target.palm_rotation)};
     for (bool slide : {false, true}) {
       compare_radii(
