@@ -17,10 +17,11 @@ class CandidateCache {
  public:
   // Fill `out` with every leaf (or cut node) within needs.body[b] of body b at `pose`,
   // as detect_candidates would (up to spheres within rounding of the margin; in the order
-  // of their gap bounds where the walk looked from): from the cache where the body moved less than the room it was walked
-  // with, else from a walk `room` metres further, kept for later calls. The objects
-  // must be those of the last call unless clear() came between; `only` as for
-  // detect_candidates, holding every object within the largest need plus room.
+  // of their gap bounds where the walk looked from): from the cache where the body moved
+  // less than the room it was walked with, else from a walk `room` metres further, kept
+  // for later calls. The objects must be those of the last call unless clear() came
+  // between; `only` as for detect_candidates, holding every object within the largest
+  // need plus room.
   void detect(const HandModel& model, const HandReach& reach, const HandPose& pose,
               const SolverObject* objects, int32_t object_count, const DetectionMargins& needs,
               double room, TreeCut cut, CandidateSet& out, const int32_t* only = nullptr,
