@@ -13,68 +13,66 @@ namespace frusta {
 void CandidateCache::detect(const HandModel& model, const HandReach& reach, const HandPose& pose,
                             const SolverObject* objects, int32_t object_count,
                             const DetectionMargins& needs, double room, TreeCut cut,
-                            CandidateSet& out, const int32_t* only, int32_t only_count) {
-  BodyPlacements& now = out.placed;
-  now.palm_position = pose.palm_position;
-  now.palm_rotation = pose.palm_rotation;
-  std::array<double, kBodyCount> moves{};  // from where each body's cached walk looked
-  uint32_t held = 0;  // bodies whose cached walk holds every sphere within their need now
+                            CandidateSet& set, const int32_t* only, int32_t only_count) {
+  std::array<double, kBodyCount> moves{};  // from where each body's walk looked
+  uint32_t held = 0;  // bodies whose walk holds every sphere within their need now
   for (int body = 0; body < kBodyCount; ++body) {
-    if (body == kPalmBody) {
-      moves[body] = palm_move(model, wide_.placed.palm_position, wide_.placed.palm_rotation, pose);
-    } else {
-      now.segments[body] = finger_segment(model, pose, body / FRUSTA_SEGMENTS_PER_FINGER,
-                                          body % FRUSTA_SEGMENTS_PER_FINGER);
-      moves[body] = segment_move(wide_.placed.segments[body], now.segments[body]);
-    }
-    // a sphere within the need now was within need + move where the walk looked from
-    if (valid_ && needs.body[body] + moves[body] <= margins_.body[body]) held |= 1u << body;
+    if (!valid_) break;
+    moves[body] = body == kPalmBody
+                      ? palm_move(model, set.placed.palm_position, set.placed.palm_rotation, pose)
+                      : segment_move(set.placed.segments[body],
+                                     finger_segment(model, pose, body / FRUSTA_SEGMENTS_PER_FINGER,
+                                                    body % FRUSTA_SEGMENTS_PER_FINGER));
+    // a sphere within the need now was within need + move where the walk looked from;
+    // a body that moved further than the room walks again although its walk still holds
+    // its need (the need shrank): the set holds the spheres within need + move, which
+    // passes test one by one
+    if (moves[body] <= room && needs.body[body] + moves[body] <= margins_.body[body])
+      held |= 1u << body;
   }
   const uint32_t all = (1u << kBodyCount) - 1u;
-  out.tree_nodes_visited = 0;
+  set.tree_nodes_visited = 0;
   if (held != all) {
     DetectionMargins wide;
-    for (int body = 0; body < kBodyCount; ++body)
+    for (int body = 0; body < kBodyCount; ++body) {
       wide.body[body] = ((held >> body) & 1u) != 0 ? margins_.body[body] : needs.body[body] + room;
+      set.end[body] = walked_end_[body];  // the whole walk, for the bodies it serves again
+    }
     detect_candidates(model, reach, pose, objects, object_count, wide, cut, spare_, only,
-                      only_count, {valid_ ? &wide_ : nullptr, held});
-    std::swap(wide_, spare_);
-    out.tree_nodes_visited = wide_.tree_nodes_visited;
-    for (int body = 0; body < kBodyCount; ++body)
+                      only_count, {valid_ ? &set : nullptr, held});
+    std::swap(set, spare_);
+    for (int body = 0; body < kBodyCount; ++body) {
+      walked_end_[body] = set.end[body];
       if (((held >> body) & 1u) == 0) moves[body] = 0.0;  // walked from here
+    }
     margins_ = wide;
     valid_ = true;
   }
 
-  // each body's cached spheres within its need, in their order in the walk's set (of their
-  // gap bounds, CandidateSet), the bounds widened by the body's move since (which keeps it)
-  out.candidates.clear();
-  auto keep = [&](Candidate c, double move) {
-    c.gap.least -= move;
-    c.gap.most += move;
-    out.candidates.push_back(c);
-  };
+  // Each body's walk, cut after the last sphere its gap bound (the body having moved since)
+  // leaves within its need: the set holds every sphere within it, and some a little
+  // further, which passes leave out (CandidateSet::need). Copying out those within,
+  // exactly, was a tenth of a closing grasp's step.
+  set.near = 0;
   for (int body = 0; body < kBodyCount; ++body) {
-    out.begin[body] = static_cast<int32_t>(out.candidates.size());
-    const Candidate* c = wide_.of(body);
-    const int32_t count = wide_.count(body);
+    const Candidate* c = set.candidates.data();
     const double need = needs.body[body], move = moves[body];
+    int32_t k = set.begin[body];
+    while (k < walked_end_[body] && may_be_within(c[k].gap, move, need)) ++k;
+    set.end[body] = k;
+    set.need[body] = need;
+    // whether one is within it (the first, mostly, in this order)
+    bool near = false;
     if (body == kPalmBody) {
-      for (int32_t k = 0; k < count; ++k) {
-        if (!may_be_within(c[k].gap, move, need)) break;  // and every one after
-        if (decided_may_touch(c[k].gap, move, need, [&] {
-              return may_touch_sphere(palm_sphere(model, pose, c[k].part), c[k].world, need);
-            }))
-          keep(c[k], move);
-      }
+      for (int32_t i = set.begin[body]; i < k && !near; ++i)
+        near = decided_may_touch(c[i].gap, move, need, [&] {
+          return may_touch_sphere(palm_sphere(model, pose, c[i].part), c[i].world, need);
+        });
     } else {
-      const SegmentView view{make_segment_frame(now.segments[body]), move};
-      for (int32_t k = 0; k < count; ++k) {
-        if (!may_be_within(c[k].gap, move, need)) break;  // and every one after
-        if (view.may_touch(c[k], need)) keep(c[k], move);
-      }
+      const SegmentView view = segment_view(model, pose, set, body);
+      for (int32_t i = set.begin[body]; i < k && !near; ++i) near = view.may_touch(c[i], need);
     }
-    out.end[body] = static_cast<int32_t>(out.candidates.size());
+    if (near) set.near |= 1u << body;
   }
 }
 

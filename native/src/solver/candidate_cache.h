@@ -6,6 +6,7 @@
 // step was a quarter of a closing grasp's time.
 #pragma once
 
+#include <array>
 #include <cstdint>
 
 #include "hand/kinematics.h"
@@ -15,25 +16,28 @@ namespace frusta {
 
 class CandidateCache {
  public:
-  // Fill `out` with every leaf (or cut node) within needs.body[b] of body b at `pose`,
-  // as detect_candidates would (up to spheres within rounding of the margin; in the order
-  // of their gap bounds where the walk looked from): from the cache where the body moved
-  // less than the room it was walked with, else from a walk `room` metres further, kept
-  // for later calls. The objects must be those of the last call unless clear() came
-  // between; `only` as for detect_candidates, holding every object within the largest
-  // need plus room.
+  // Make `set` hold, for body b at `pose`, every leaf (or cut node) within needs.body[b]
+  // as detect_candidates would (up to spheres within rounding of the margin), and some
+  // a little further (CandidateSet::need), in the order of their gap bounds where the
+  // walk looked from: the walk it held from the last call where the body moved less than
+  // the room it was walked with, else a walk `room` metres further. `set` is the cache's
+  // store: it must be as the last call left it, and the objects those of that call,
+  // unless clear() came between; `only` as for detect_candidates, holding every object
+  // within the largest need plus room.
   void detect(const HandModel& model, const HandReach& reach, const HandPose& pose,
               const SolverObject* objects, int32_t object_count, const DetectionMargins& needs,
-              double room, TreeCut cut, CandidateSet& out, const int32_t* only = nullptr,
+              double room, TreeCut cut, CandidateSet& set, const int32_t* only = nullptr,
               int32_t only_count = 0);
-  // The objects moved or changed: nothing cached holds.
+  // The objects moved or changed, or the set served as scratch: nothing cached holds.
   void clear() { valid_ = false; }
 
  private:
-  // each body's last walk (where it looked from: its placed) and how far it looked
-  CandidateSet wide_, spare_;
+  CandidateSet spare_;  // the next walk's
+  // how far each body's last walk looked (from where the set placed it), and where its
+  // spheres end in the set
   DetectionMargins margins_;
-  bool valid_ = false;  // a walk of every body is cached (the first call makes one)
+  std::array<int32_t, kBodyCount> walked_end_{};
+  bool valid_ = false;  // the set holds a walk of every body (the first call makes one)
 };
 
 }  // namespace frusta

@@ -104,18 +104,19 @@ void detect_palm(const HandModel& model, const HandReach& reach, const HandPose&
   }
 }
 
-// A body's candidates (the last ones added) in order of their gap bounds' least, each
-// least lowered to a multiple of a 32nd of the walk's margin (those below 0 to the least
-// of them): still a bound, and equal ones keep the order they were found in. Sorted so in
-// one pass over them; std::sort's mispredicted comparisons cost the steps that walk most
-// a tenth more.
-void sort_by_gap(CandidateSet& out, int body, double margin) {
+// A body's candidates (found into out.sorting) appended to the set in order of their
+// gap bounds' least, each least lowered to a multiple of a 32nd of the walk's margin (those
+// below 0 to the least of them): still a bound, and equal ones keep the order they were
+// found in. Sorted so in one pass over them; std::sort's mispredicted comparisons cost the
+// steps that walk most a tenth more.
+void append_by_gap(CandidateSet& out, int body, double margin) {
   constexpr int kBuckets = 33;  // below 0, then 32 of a 32nd of the margin each (the last open)
-  const int32_t first = out.begin[body], count = out.end[body] - first;
-  if (count < 2) return;
-  Candidate* c = out.candidates.data() + first;
+  const std::vector<Candidate>& found = out.sorting;
+  const int32_t count = static_cast<int32_t>(found.size());
+  out.begin[body] = static_cast<int32_t>(out.candidates.size());
+  out.end[body] = out.begin[body] + count;
   double lowest = 0.0;
-  for (int32_t i = 0; i < count; ++i) lowest = std::min(lowest, c[i].gap.least);
+  for (const Candidate& c : found) lowest = std::min(lowest, c.gap.least);
   const double width = margin / (kBuckets - 1);
   auto bucket = [&](double least) {
     if (!(least >= 0.0)) return 0;
@@ -126,16 +127,17 @@ void sort_by_gap(CandidateSet& out, int body, double margin) {
   int32_t start[kBuckets + 1] = {};
   out.order.resize(static_cast<size_t>(count));
   for (int32_t i = 0; i < count; ++i) {
-    const int b = bucket(c[i].gap.least);
+    const int b = bucket(found[static_cast<size_t>(i)].gap.least);
     out.order[static_cast<size_t>(i)] = b;
     ++start[b + 1];
   }
   for (int b = 0; b < kBuckets; ++b) start[b + 1] += start[b];
-  out.sorting.assign(c, c + count);
+  out.candidates.resize(static_cast<size_t>(out.end[body]));
+  Candidate* c = out.candidates.data() + out.begin[body];
   for (int32_t i = 0; i < count; ++i) {
     const int b = out.order[static_cast<size_t>(i)];
     Candidate& to = c[start[b]++];
-    to = out.sorting[static_cast<size_t>(i)];
+    to = found[static_cast<size_t>(i)];
     to.gap.least = b == 0 ? lowest : (b - 1) * width;
   }
 }
@@ -271,7 +273,7 @@ void detect_candidates(const HandModel& model, const HandReach& reach, const Han
       const Sphere local = hit.leaf >= 0 ? obj.tree->leaves[static_cast<size_t>(hit.leaf)]
                                          : obj.tree->node_sphere(hit.node);
       const Sphere world{obj.pose.rotation * local.center + obj.pose.position, local.radius};
-      out.candidates.push_back({object, hit.leaf, 0, world, gap_bounds(body, world)});
+      out.sorting.push_back({object, hit.leaf, 0, world, gap_bounds(body, world)});
     }
   };
 
@@ -289,6 +291,7 @@ void detect_candidates(const HandModel& model, const HandReach& reach, const Han
       const Segment segment = finger_segment(model, pose, f, s);
       out.placed.segments[static_cast<size_t>(body)] = segment;
       const SegmentFrame world = make_segment_frame(segment);
+      out.sorting.clear();
       for (int32_t o : out.near_objects) {
         const SolverObject& obj = objects[o];
         if (!bounds_meet(finger_bound, object_bound(obj), margin)) continue;
@@ -300,11 +303,11 @@ void detect_candidates(const HandModel& model, const HandReach& reach, const Han
         });
         add_hits(o, count, world);
       }
-      out.end[body] = static_cast<int32_t>(out.candidates.size());
-      sort_by_gap(out, body, margin);
+      append_by_gap(out, body, margin);
     }
   }
   out.begin[kPalmBody] = static_cast<int32_t>(out.candidates.size());
+  out.need = margins.body;
   if (reuse.has(kPalmBody)) {
     copy_body(*reuse.last, kPalmBody, out);
     out.end[kPalmBody] = static_cast<int32_t>(out.candidates.size());
@@ -312,9 +315,13 @@ void detect_candidates(const HandModel& model, const HandReach& reach, const Han
     out.placed.palm_position = pose.palm_position;
     out.placed.palm_rotation = pose.palm_rotation;
     detect_palm(model, reach, pose, objects, margins.body[kPalmBody], cut, out);
-    out.end[kPalmBody] = static_cast<int32_t>(out.candidates.size());
-    sort_by_gap(out, kPalmBody, margins.body[kPalmBody]);
+    out.sorting.assign(out.candidates.begin() + out.begin[kPalmBody], out.candidates.end());
+    out.candidates.resize(static_cast<size_t>(out.begin[kPalmBody]));
+    append_by_gap(out, kPalmBody, margins.body[kPalmBody]);
   }
+  out.near = 0;
+  for (int body = 0; body < kBodyCount; ++body)
+    if (out.count(body) > 0) out.near |= 1u << body;
 }
 
 }  // namespace frusta

@@ -67,6 +67,12 @@ struct CandidateSet {
   std::vector<Candidate> candidates;
   int32_t begin[kBodyCount] = {};
   int32_t end[kBodyCount] = {};
+  // How far from each body its candidates were asked for: a set may hold spheres a little
+  // further (CandidateCache), which every pass leaves out, so that its answers are those
+  // of a set of exactly the spheres within (whatever the detection's history). `near`,
+  // bit b: body b has a candidate within need[b].
+  std::array<double, kBodyCount> need{};
+  uint32_t near = 0;
   BodyPlacements placed;
   int32_t tree_nodes_visited = 0;
   // scratch kept between calls
@@ -74,7 +80,7 @@ struct CandidateSet {
   std::vector<MaskedHit> masked_hits;
   std::vector<int32_t> near_objects;
   std::vector<int32_t> order;
-  std::vector<Candidate> sorting;
+  std::vector<Candidate> sorting;  // a body's, as found, before they are ordered
 
   int32_t count(int body) const { return end[body] - begin[body]; }
   const Candidate* of(int body) const { return candidates.data() + begin[body]; }
@@ -82,6 +88,11 @@ struct CandidateSet {
     candidates.clear();
     std::fill(std::begin(begin), std::end(begin), 0);
     std::fill(std::begin(end), std::end(end), 0);
+    near = 0;
+  }
+  bool body_near(int body) const { return ((near >> body) & 1u) != 0; }
+  bool finger_near(int finger) const {
+    return ((near >> (finger * FRUSTA_SEGMENTS_PER_FINGER)) & ((1u << FRUSTA_SEGMENTS_PER_FINGER) - 1u)) != 0;
   }
   int32_t finger_count(int finger) const {
     int32_t sum = 0;

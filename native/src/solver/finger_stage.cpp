@@ -29,7 +29,7 @@ FingerStage::FingerStage(const StageInputs& inputs, int finger, const FingerAngl
   assert(start_gap == clearance(pose));
   floor_ = std::min(-inputs.params.penetration_tolerance, start_gap);
   for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s)
-    if (inputs.candidates.count(finger * FRUSTA_SEGMENTS_PER_FINGER + s) > 0) near_ |= 1u << s;
+    if (inputs.candidates.body_near(finger * FRUSTA_SEGMENTS_PER_FINGER + s)) near_ |= 1u << s;
   if (cap.levers > cap.pose) {
     finger_jacobian(pose.fingers[finger], kEverySegment, start_jacobian_);
     // Rows bound the levers' motion (linear in the step); the pose's bound lets a finger
@@ -83,7 +83,7 @@ int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights, dou
   for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s) {
     const int body = finger_ * FRUSTA_SEGMENTS_PER_FINGER + s;
     segment_rows_[static_cast<size_t>(s)] = count;
-    if (inputs_.candidates.count(body) == 0) continue;
+    if (!inputs_.candidates.body_near(body)) continue;
     const SegmentView view = segment_view(inputs_.model, pose_, inputs_.candidates, body);
     const SegmentFrame& frame = view.frame;
     // a sphere further than any admissible trial can move the segment is no row: exact,
@@ -91,9 +91,9 @@ int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights, dou
     // segment by at most its share of that)
     // (and one a step within `radius` cannot reach no row of that step's)
     const double share = inputs_.reach.segment_share[finger_][s];
-    const double reach = std::min(share * std::min(cap_.levers, cap_.pose) +
-                                      segment_lever_motion(inputs_.reach, finger_, s, start_, now),
-                                  share * radius);
+    const double reach = std::min({share * std::min(cap_.levers, cap_.pose) +
+                                       segment_lever_motion(inputs_.reach, finger_, s, start_, now),
+                                   share * radius, inputs_.candidates.need[body]});
     const auto& column_d = jacobian_.proximal[s];  // dD/dq, D = joint s
     const auto& column_e = jacobian_.distal[s];    // dE/dq, E = joint s + 1
     const Candidate* c = inputs_.candidates.of(body);
@@ -113,7 +113,6 @@ int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights, dou
       row.key = row_key(RowKind::kContact, body, c[i].part, c[i].object, c[i].leaf);
       row.source = first + i;
     }
-    sort_by_key(rows + segment_rows_[static_cast<size_t>(s)], rows + count);
   }
   segment_rows_[FRUSTA_SEGMENTS_PER_FINGER] = count;
   return count;

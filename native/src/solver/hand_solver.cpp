@@ -189,6 +189,7 @@ frusta_result HandSolver::step(const HandState& haptic, const SolverObject* obje
     // from the same hand, and the graphic hand follows the haptic one from there
     if (!placement_.pending()) placing_ = target;
     HandState start = placing_;
+    cache_.clear();  // candidates_, the cache's store, is the search's scratch
     switch (placement_.run(model_, reach_, objects, object_count, params_.penetration_tolerance,
                            candidates_, deadline_, &start)) {
       case PlacementSearch::Result::kPending:
@@ -320,7 +321,8 @@ StageStats HandSolver::solve_within_budget(MakeStage make, bool budget_binds, bo
 }
 
 bool HandSolver::overlaps(const SolverObject& object) {
-  detected_ = false;  // candidates_ is the test's scratch
+  detected_ = false;  // candidates_ is the test's scratch (and the cache's store)
+  cache_.clear();
   return started_ &&
          !hand_is_free(model_, reach_, pose_, &object, 1, params_.penetration_tolerance, candidates_);
 }
@@ -362,6 +364,7 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
     graphic_ = s < 1.0 ? interpolate(graphic_, target, s) : target;
     forward_kinematics(model_, graphic_, pose_);
     candidates_.clear();
+    cache_.clear();
     detected_ = false;
     budget = std::max(0.0, budget - s * whole_move);
     moved = s * whole_move > 0.0;
@@ -441,7 +444,7 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
   // A part with candidates solves towards its full target and its stage stops at the
   // motion bound; a part with none moves straight, cut at the bound.
   if (palm_move > 0.0 || recovering) {
-    if (candidates_.size() == 0) {
+    if (candidates_.near == 0) {
       const double s = std::min(1.0, cap / palm_move);
       graphic_.palm_position = s < 1.0 ? palm_from.position + s * (palm_to.position - palm_from.position)
                                        : palm_to.position;
@@ -476,7 +479,7 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
     settled_[f] = true;
     if (!(move > 0.0) && !recovering) continue;
     const double share = within_cap(model_, reach_, pose_.fingers[f], f, from, to, finger_cap);
-    if (candidates_.finger_count(f) == 0) {  // nothing near: the haptic angles as they are
+    if (!candidates_.finger_near(f)) {  // nothing near: the haptic angles as they are
       FingerAngles goal = to;
       if (share < 1.0) {
         for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j)
@@ -520,7 +523,8 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
 void HandSolver::report_contacts() {
   contacts_.clear();
   for (int body = 0; body < kBodyCount; ++body) {
-    if (candidates_.count(body) == 0) continue;
+    if (!candidates_.body_near(body)) continue;
+    const double within = std::min(params_.contact_distance, candidates_.need[body]);
     const SegmentView view =
         body == kPalmBody ? SegmentView{} : segment_view(model_, pose_, candidates_, body);
     const Candidate* c = candidates_.of(body);
@@ -529,8 +533,8 @@ void HandSolver::report_contacts() {
       // a segment's candidates further than the contact distance, most of them, are told by
       // their gap bounds before a contact is begun
       if (body != kPalmBody) {
-        if (!may_be_within(c[i].gap, view.moved, params_.contact_distance)) break;  // and all after
-        if (!view.may_touch(c[i], params_.contact_distance)) continue;
+        if (!may_be_within(c[i].gap, view.moved, within)) break;  // and all after
+        if (!view.may_touch(c[i], within)) continue;
       }
       SolverContact contact;
       contact.object = c[i].object;
@@ -552,7 +556,7 @@ void HandSolver::report_contacts() {
         contact.object_point = p.object_point;
         contact.normal = p.normal;
       }
-      if (contact.distance <= params_.contact_distance) contacts_.push_back(contact);
+      if (contact.distance <= within) contacts_.push_back(contact);
     }
   }
   // in an order of their own, not of the candidates (of where each walk looked from): the

@@ -42,7 +42,7 @@ struct SolverContact {
 
 struct StepStats {
   int32_t substeps = 0;
-  int32_t candidates = 0;        // the most in one sub-step
+  int32_t candidates = 0;        // the most in one sub-step's set (CandidateSet::need)
   int32_t tree_nodes_visited = 0;
   int32_t iterations = 0;        // re-linearisations over every stage
   int32_t qp_iterations = 0;
@@ -143,7 +143,7 @@ class HandSolver {
   Clock::time_point deadline_ = Clock::time_point::max();
   Clock::duration overrun_{0};
   PalmHeading heading_;        // this step's: the graphic palm does not go back against it
-  CandidateSet candidates_;
+  CandidateSet candidates_;  // this pose's detection, kept in place by cache_ between steps
   CandidateCache cache_;  // the trees' walks, kept while the objects are as before
   // candidates_ holds this pose's detection (false once it served as scratch)
   bool detected_ = false;

@@ -89,13 +89,14 @@ int32_t PalmStage::linearise(QpRow* rows, double* target, double* weights, doubl
       std::min(motion_cap_ + palm_motion(inputs_.reach, start_, placement(state_)), radius);
   int32_t count = 0;
   for (int body = 0; body < FRUSTA_HAND_SEGMENT_COUNT; ++body) {
-    if (inputs_.candidates.count(body) == 0) continue;
+    if (!inputs_.candidates.body_near(body)) continue;
     const SegmentView view = segment_view(inputs_.model, pose_, inputs_.candidates, body);
     const SegmentFrame& frame = view.frame;
     const Candidate* c = inputs_.candidates.of(body);
+    const double within = std::min(reach, inputs_.candidates.need[body]);
     for (int32_t i = 0; i < inputs_.candidates.count(body); ++i) {
-      if (!may_be_within(c[i].gap, view.moved, reach)) break;  // and every one after
-      if (!view.may_touch(c[i], reach)) continue;
+      if (!may_be_within(c[i].gap, view.moved, within)) break;  // and every one after
+      if (!view.may_touch(c[i], within)) continue;
       const Constraint g = contact_constraint(frame, c[i].world, inputs_.params.form);
       const double bound = row_bound(
           inputs_.params, g.value, c[i].world.radius + std::max(frame.r_proximal, frame.r_distal));
@@ -112,7 +113,7 @@ int32_t PalmStage::linearise(QpRow* rows, double* target, double* weights, doubl
   const Candidate* c = inputs_.candidates.of(kPalmBody);
   for (int32_t i = 0; i < inputs_.candidates.count(kPalmBody); ++i) {
     const Sphere hand = palm_sphere(inputs_.model, pose_, c[i].part);
-    if (!may_touch_sphere(hand, c[i].world, reach)) continue;
+    if (!may_touch_sphere(hand, c[i].world, std::min(reach, inputs_.candidates.need[kPalmBody]))) continue;
     const vec3 outward = hand.center - palm;
     const SphereConstraint g = sphere_constraint(
         hand, c[i].world, inputs_.params.form,
@@ -121,7 +122,6 @@ int32_t PalmStage::linearise(QpRow* rows, double* target, double* weights, doubl
             row_bound(inputs_.params, g.value, hand.radius + c[i].world.radius),
             row_key(RowKind::kContact, kPalmBody, c[i].part, c[i].object, c[i].leaf));
   }
-  sort_by_key(rows, rows + count);
   if (heading_.way != vec3(0.0))
     set_row(rows[count++], heading_.way, vec3(0.0),
             -heading_.slack - glm::dot(heading_.way, state_.palm_position - heading_.from),

@@ -80,18 +80,6 @@ inline int64_t row_key(RowKind kind, int64_t a = 0, int64_t b = 0, int64_t c = 0
   return static_cast<int64_t>(key | 1ull);  // never 0, which names nothing
 }
 
-// Contact rows in the order of their keys, not of their candidates (which depends on where
-// each walk looked from, CandidateSet): the same QP, to the bit, whatever the detection's
-// history. By insertion: a linearisation makes a few dozen rows at most.
-inline void sort_by_key(QpRow* first, QpRow* last) {
-  for (QpRow* i = first + (first != last); i < last; ++i) {
-    const QpRow row = *i;
-    QpRow* j = i;
-    for (; j > first && (j - 1)->key > row.key; --j) *j = *(j - 1);
-    *j = row;
-  }
-}
-
 // The bound of a linearised row, g + a.d >= bound. Rows ask for half the penetration
 // tolerance, so a hand one stage left inside the tolerance is not pushed back out by
 // the next (that ratchets: the palm rose a micron a step under fingers pressing down).

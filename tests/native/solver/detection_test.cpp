@@ -465,11 +465,14 @@ TEST(SolverDetection, ACachedDetectionFindsWhatAFreshOneFinds) {
                    cached);
       detect_candidates(model, reach, pose, objects.data(), static_cast<int32_t>(objects.size()), needs, cut, fresh);
       const std::string what = "run " + std::to_string(run) + ", step " + std::to_string(step);
-      // the spheres a fresh detection finds, each body's in order of its bounds (those of
-      // its walk, widened by its move since: another order than a fresh walk's), which
-      // hold the exact gap
+      // every sphere a fresh detection finds, and only spheres within the need and the
+      // room (a bound's floor a 32nd of the walk's margin further), the same bodies near,
+      // each body's in order of its bounds where its walk looked from (another order than
+      // a fresh walk's), which hold the exact gap as the body moved since
+      ASSERT_EQ(cached.near, fresh.near) << what;
       for (int body = 0; body < kBodyCount; ++body) {
-        ASSERT_EQ(cached.count(body), fresh.count(body)) << what << ", body " << body;
+        ASSERT_EQ(cached.need[body], needs.body[body]) << what << ", body " << body;
+        ASSERT_LE(moved_since_placed(model, pose, cached, body), kRoom) << what << ", body " << body;
         const Candidate* c = cached.of(body);
         const Candidate* f = fresh.of(body);
         const std::vector<int32_t> in_cache = by_key(c, cached.count(body));
@@ -477,6 +480,10 @@ TEST(SolverDetection, ACachedDetectionFindsWhatAFreshOneFinds) {
           ASSERT_TRUE(std::binary_search(in_cache.begin(), in_cache.end(), -1, [&](int32_t a, int32_t b) {
             return sphere_hash(a < 0 ? f[i] : c[a]) < sphere_hash(b < 0 ? f[i] : c[b]);
           })) << what << ", body " << body << ": fresh candidate " << i << " is not cached";
+        const std::vector<double> exact = exact_gaps(model, pose, cached, body);
+        for (int32_t i = 0; i < cached.count(body); ++i)
+          ASSERT_LE(exact[static_cast<size_t>(i)], needs.body[body] + 2.0 * kRoom)
+              << what << ", body " << body << ", candidate " << i;
         expect_sorted(cached, body, nullptr, what);
         expect_bounds_hold(model, pose, cached, body, what);
         if (testing::Test::HasFatalFailure()) return;
