@@ -39,33 +39,34 @@ void deal_out(const SolverObject* objects, const Sphere* palm, int32_t first, in
   for (const MaskedHit& h : out.masked_hits)
     for (uint64_t rest = h.probes; rest != 0; rest &= rest - 1) ++count[lowest_bit(rest)];
   int32_t next[kMaxProbes];
-  int32_t end = static_cast<int32_t>(out.candidates.size());
+  int32_t end = static_cast<int32_t>(out.sorting.size());
   for (int k = 0; k < run; ++k) {
     next[k] = end;
     end += count[k];
   }
-  out.candidates.resize(static_cast<size_t>(end));
+  out.sorting.resize(static_cast<size_t>(end));
   for (const MaskedHit& h : out.masked_hits) {
     // an inner node cut off by the level stands in for every leaf below it
     const RigidPose& pose = objects[h.object].pose;
     const Sphere world{pose.rotation * h.local.center + pose.position, h.local.radius};
     for (uint64_t rest = h.probes; rest != 0; rest &= rest - 1) {
       const int k = lowest_bit(rest);
-      out.candidates[static_cast<size_t>(next[k]++)] = {h.object, h.hit.leaf, first + k, world,
-                                                        gap_bounds_sphere(palm[k], world)};
+      out.sorting[static_cast<size_t>(next[k]++)] = {h.object, h.hit.leaf, first + k, world,
+                                                     gap_bounds_sphere(palm[k], world)};
     }
   }
 }
 
-// The palm's candidates, in the order of one walk per palm sphere (sphere, then object,
-// then node order; sorted by their gaps after): each object's tree is walked once for up
-// to 64 palm spheres, skipping the nodes out of reach of the box around them all, and its
-// hits are then dealt out to the spheres that reach them.
+// The palm's candidates, into out.sorting (append_by_gap orders them), in the order of
+// one walk per palm sphere (sphere, then object, then node order): each object's tree is
+// walked once for up to 64 palm spheres, skipping the nodes out of reach of the box
+// around them all, and its hits are then dealt out to the spheres that reach them.
 void detect_palm(const HandModel& model, const HandReach& reach, const HandPose& pose,
                  const SolverObject* objects, double margin, TreeCut cut, CandidateSet& out) {
   const int32_t palm_count = static_cast<int32_t>(model.palm_spheres.size());
   const glm::dmat3 to_palm = glm::transpose(pose.palm_rotation);
   Sphere world[kMaxProbes], local[kMaxProbes];
+  out.sorting.clear();
   for (int32_t first = 0; first < palm_count; first += kMaxProbes) {
     const int run = static_cast<int>(std::min<int32_t>(kMaxProbes, palm_count - first));
     for (int k = 0; k < run; ++k) world[k] = palm_sphere(model, pose, first + k);
@@ -232,7 +233,7 @@ double body_clearance(const HandModel& model, const HandPose& pose, const Candid
                       int body) {
   const int32_t first = candidates.begin[body];
   return body_clearance_over(model, pose, candidates, body, candidates.count(body),
-                             [first](int32_t k) { return first + k; }, true);
+                             [first](int32_t k) { return first + k; });
 }
 
 double bound_clearance(const HandReach& reach, const HandPose& pose, const SolverObject* objects,
@@ -315,8 +316,6 @@ void detect_candidates(const HandModel& model, const HandReach& reach, const Han
     out.placed.palm_position = pose.palm_position;
     out.placed.palm_rotation = pose.palm_rotation;
     detect_palm(model, reach, pose, objects, margins.body[kPalmBody], cut, out);
-    out.sorting.assign(out.candidates.begin() + out.begin[kPalmBody], out.candidates.end());
-    out.candidates.resize(static_cast<size_t>(out.begin[kPalmBody]));
     append_by_gap(out, kPalmBody, margins.body[kPalmBody]);
   }
   out.near = 0;

@@ -195,12 +195,12 @@ double body_clearance(const HandModel& model, const HandPose& pose, const Candid
                       int body);
 
 // The same over `count` of the body's candidates, the k-th candidates.candidates[index(k)]:
-// those a step can reach (a stage's rows), when the others cannot touch. `in_set_order`:
-// the indices increase, so the pass stops at the first sphere out of reach.
+// those a step can reach (a stage's rows), when the others cannot touch. The indices
+// increase (the rows are made in the set's order), so the pass stops at the first sphere
+// out of reach.
 template <class Index>
 double body_clearance_over(const HandModel& model, const HandPose& pose,
-                           const CandidateSet& candidates, int body, int32_t count, Index index,
-                           bool in_set_order) {
+                           const CandidateSet& candidates, int body, int32_t count, Index index) {
   double gap = 0.0;
   if (count == 0) return gap;
   const Candidate* all = candidates.candidates.data();
@@ -215,10 +215,7 @@ double body_clearance_over(const HandModel& model, const HandPose& pose,
   const SegmentView view = segment_view(model, pose, candidates, body);
   for (int32_t k = 0; k < count; ++k) {
     const Candidate& c = all[index(k)];
-    if (!may_be_within(c.gap, view.moved, 0.0)) {
-      if (in_set_order) break;  // and so is every one after
-      continue;
-    }
+    if (!may_be_within(c.gap, view.moved, 0.0)) break;  // and so is every one after
     // the cheap conservative test first: only a sphere that may touch can sink in
     if (view.may_touch(c, 0.0)) gap = std::min(gap, exact_distance(view.frame, c.world));
   }

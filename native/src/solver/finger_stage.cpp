@@ -252,8 +252,7 @@ double FingerStage::step_clearance() {
     gap = std::min(gap, body_clearance_over(inputs_.model, trial_pose_, inputs_.candidates,
                                             finger_ * FRUSTA_SEGMENTS_PER_FINGER + s,
                                             segment_rows_[static_cast<size_t>(s) + 1] - begin,
-                                            [&](int32_t k) { return rows_[begin + k].source; },
-                                            false));
+                                            [&](int32_t k) { return rows_[begin + k].source; }));
   }
   return gap;
 }
