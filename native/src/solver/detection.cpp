@@ -174,8 +174,8 @@ SegmentView segment_view(const HandModel& model, const HandPose& pose, const Can
                          int body) {
   const Segment now = finger_segment(model, pose, body / FRUSTA_SEGMENTS_PER_FINGER,
                                      body % FRUSTA_SEGMENTS_PER_FINGER);
-  return {make_segment_frame(now),
-          segment_move(set.placed.segments[static_cast<size_t>(body)], now)};
+  return {make_segment_frame(now), segment_move(set.placed.segments[static_cast<size_t>(body)], now),
+          set.need[static_cast<size_t>(body)]};
 }
 
 HandReach hand_reach(const HandModel& model) {

@@ -115,15 +115,31 @@ double segment_move(const Segment& then, const Segment& now);
 double palm_move(const HandModel& model, const vec3& position, const glm::dmat3& rotation,
                  const HandPose& now);
 
-// A finger segment at a pose, for a pass over its candidates: its frame, and how far it
-// moved from where the set measured their gap bounds.
+// A finger segment at a pose, for a pass over its candidates: its frame, how far it moved
+// from where the set measured their gap bounds, and how far the set was asked to look
+// from it (CandidateSet::need). A pass looks no further than that, whatever margin it
+// asks for: the spheres a set holds beyond it are left out, and its answers are those of
+// a set of exactly the spheres within.
 struct SegmentView {
   SegmentFrame frame;
   double moved = 0.0;
+  double need = INFINITY;
+  // Whether `c`, and so every candidate after it in the set's order, lies further than
+  // `margin`: where a pass over the set in order stops.
+  bool beyond(const Candidate& c, double margin) const {
+    return !may_be_within(c.gap, moved, std::min(margin, need));
+  }
   // may_touch, its answer known from the bounds for all but the spheres near the margin
   bool may_touch(const Candidate& c, double margin) const {
-    return decided_may_touch(c.gap, moved, margin,
-                             [&] { return frusta::may_touch(frame, c.world, margin); });
+    const double within = std::min(margin, need);
+    return decided_may_touch(c.gap, moved, within,
+                             [&] { return frusta::may_touch(frame, c.world, within); });
+  }
+  // The same two at margin 0, which every need covers: what clearances ask, the passes
+  // run most, with the margin a constant the tests fold away.
+  bool clear_from(const Candidate& c) const { return !may_be_within(c.gap, moved, 0.0); }
+  bool may_sink(const Candidate& c) const {
+    return decided_may_touch(c.gap, moved, 0.0, [&] { return frusta::may_touch(frame, c.world, 0.0); });
   }
 };
 SegmentView segment_view(const HandModel& model, const HandPose& pose, const CandidateSet& set,
@@ -215,9 +231,9 @@ double body_clearance_over(const HandModel& model, const HandPose& pose,
   const SegmentView view = segment_view(model, pose, candidates, body);
   for (int32_t k = 0; k < count; ++k) {
     const Candidate& c = all[index(k)];
-    if (!may_be_within(c.gap, view.moved, 0.0)) break;  // and so is every one after
+    if (view.clear_from(c)) break;  // and so is every one after
     // the cheap conservative test first: only a sphere that may touch can sink in
-    if (view.may_touch(c, 0.0)) gap = std::min(gap, exact_distance(view.frame, c.world));
+    if (view.may_sink(c)) gap = std::min(gap, exact_distance(view.frame, c.world));
   }
   return gap;
 }

@@ -91,9 +91,9 @@ int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights, dou
     // segment by at most its share of that)
     // (and one a step within `radius` cannot reach no row of that step's)
     const double share = inputs_.reach.segment_share[finger_][s];
-    const double reach = std::min({share * std::min(cap_.levers, cap_.pose) +
-                                       segment_lever_motion(inputs_.reach, finger_, s, start_, now),
-                                   share * radius, inputs_.candidates.need[body]});
+    const double reach = std::min(share * std::min(cap_.levers, cap_.pose) +
+                                      segment_lever_motion(inputs_.reach, finger_, s, start_, now),
+                                  share * radius);
     const auto& column_d = jacobian_.proximal[s];  // dD/dq, D = joint s
     const auto& column_e = jacobian_.distal[s];    // dE/dq, E = joint s + 1
     const Candidate* c = inputs_.candidates.of(body);
@@ -101,7 +101,7 @@ int32_t FingerStage::linearise(QpRow* rows, double* target, double* weights, dou
     const int32_t first = inputs_.candidates.begin[body],
                   candidates = inputs_.candidates.count(body);
     for (int32_t i = 0; i < candidates; ++i) {
-      if (!may_be_within(c[i].gap, view.moved, reach)) break;  // and every one after
+      if (view.beyond(c[i], reach)) break;  // and every one after
       if (!view.may_touch(c[i], reach)) continue;
       const Constraint g = contact_constraint(frame, c[i].world, inputs_.params.form);
       QpRow& row = rows[count++];

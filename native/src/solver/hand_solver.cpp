@@ -533,7 +533,7 @@ void HandSolver::report_contacts() {
       // a segment's candidates further than the contact distance, most of them, are told by
       // their gap bounds before a contact is begun
       if (body != kPalmBody) {
-        if (!may_be_within(c[i].gap, view.moved, within)) break;  // and all after
+        if (view.beyond(c[i], within)) break;  // and all after
         if (!view.may_touch(c[i], within)) continue;
       }
       SolverContact contact;

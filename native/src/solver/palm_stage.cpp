@@ -93,10 +93,9 @@ int32_t PalmStage::linearise(QpRow* rows, double* target, double* weights, doubl
     const SegmentView view = segment_view(inputs_.model, pose_, inputs_.candidates, body);
     const SegmentFrame& frame = view.frame;
     const Candidate* c = inputs_.candidates.of(body);
-    const double within = std::min(reach, inputs_.candidates.need[body]);
     for (int32_t i = 0; i < inputs_.candidates.count(body); ++i) {
-      if (!may_be_within(c[i].gap, view.moved, within)) break;  // and every one after
-      if (!view.may_touch(c[i], within)) continue;
+      if (view.beyond(c[i], reach)) break;  // and every one after
+      if (!view.may_touch(c[i], reach)) continue;
       const Constraint g = contact_constraint(frame, c[i].world, inputs_.params.form);
       const double bound = row_bound(
           inputs_.params, g.value, c[i].world.radius + std::max(frame.r_proximal, frame.r_distal));
