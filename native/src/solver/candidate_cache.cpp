@@ -63,11 +63,11 @@ void CandidateCache::detect(const HandModel& model, const HandReach& reach, cons
     set.need[body] = need;
     // whether one is within it (the first, mostly, in this order)
     bool near = false;
-    if (body == kPalmBody) {
-      for (int32_t i = set.begin[body]; i < k && !near; ++i)
-        near = decided_may_touch(c[i].gap, move, need, [&] {
-          return may_touch_sphere(palm_sphere(model, pose, c[i].part), c[i].world, need);
-        });
+    if (k == set.begin[body]) {
+      // none: nothing to place the body for
+    } else if (body == kPalmBody) {
+      const PalmView view = palm_view(model, pose, set);
+      for (int32_t i = set.begin[body]; i < k && !near; ++i) near = view.may_touch(c[i], need);
     } else {
       const SegmentView view = segment_view(model, pose, set, body);
       for (int32_t i = set.begin[body]; i < k && !near; ++i) near = view.may_touch(c[i], need);

@@ -174,8 +174,20 @@ SegmentView segment_view(const HandModel& model, const HandPose& pose, const Can
                          int body) {
   const Segment now = finger_segment(model, pose, body / FRUSTA_SEGMENTS_PER_FINGER,
                                      body % FRUSTA_SEGMENTS_PER_FINGER);
-  return {make_segment_frame(now), segment_move(set.placed.segments[static_cast<size_t>(body)], now),
-          set.need[static_cast<size_t>(body)]};
+  SegmentView view;
+  view.frame = make_segment_frame(now);
+  view.moved = segment_move(set.placed.segments[static_cast<size_t>(body)], now);
+  view.need = set.need[static_cast<size_t>(body)];
+  return view;
+}
+
+PalmView palm_view(const HandModel& model, const HandPose& pose, const CandidateSet& set) {
+  PalmView view;
+  view.model = &model;
+  view.pose = &pose;
+  view.moved = palm_move(model, set.placed.palm_position, set.placed.palm_rotation, pose);
+  view.need = set.need[kPalmBody];
+  return view;
 }
 
 HandReach hand_reach(const HandModel& model) {

@@ -115,35 +115,56 @@ double segment_move(const Segment& then, const Segment& now);
 double palm_move(const HandModel& model, const vec3& position, const glm::dmat3& rotation,
                  const HandPose& now);
 
-// A finger segment at a pose, for a pass over its candidates: its frame, how far it moved
-// from where the set measured their gap bounds, and how far the set was asked to look
-// from it (CandidateSet::need). A pass looks no further than that, whatever margin it
-// asks for: the spheres a set holds beyond it are left out, and its answers are those of
-// a set of exactly the spheres within.
-struct SegmentView {
-  SegmentFrame frame;
+// A body at a pose, for a pass over its candidates: how far it moved from where the set
+// measured their gap bounds, and how far the set was asked to look from it
+// (CandidateSet::need). A pass looks no further than that, whatever margin it asks for:
+// the spheres a set holds beyond it are left out, and its answers are those of a set of
+// exactly the spheres within.
+struct BodyBounds {
   double moved = 0.0;
   double need = INFINITY;
+  double within(double margin) const { return std::min(margin, need); }
   // Whether `c`, and so every candidate after it in the set's order, lies further than
   // `margin`: where a pass over the set in order stops.
   bool beyond(const Candidate& c, double margin) const {
-    return !may_be_within(c.gap, moved, std::min(margin, need));
+    return !may_be_within(c.gap, moved, within(margin));
   }
+  // The same at margin 0, which every need covers: what clearances ask, the passes run
+  // most, with the margin a constant the tests fold away.
+  bool clear_from(const Candidate& c) const { return !may_be_within(c.gap, moved, 0.0); }
+};
+
+// A finger segment: its frame.
+struct SegmentView : BodyBounds {
+  SegmentFrame frame;
   // may_touch, its answer known from the bounds for all but the spheres near the margin
   bool may_touch(const Candidate& c, double margin) const {
-    const double within = std::min(margin, need);
-    return decided_may_touch(c.gap, moved, within,
-                             [&] { return frusta::may_touch(frame, c.world, within); });
+    const double w = within(margin);
+    return decided_may_touch(c.gap, moved, w, [&] { return frusta::may_touch(frame, c.world, w); });
   }
-  // The same two at margin 0, which every need covers: what clearances ask, the passes
-  // run most, with the margin a constant the tests fold away.
-  bool clear_from(const Candidate& c) const { return !may_be_within(c.gap, moved, 0.0); }
-  bool may_sink(const Candidate& c) const {
+  bool may_sink(const Candidate& c) const {  // may_touch at 0 (clear_from)
     return decided_may_touch(c.gap, moved, 0.0, [&] { return frusta::may_touch(frame, c.world, 0.0); });
   }
 };
 SegmentView segment_view(const HandModel& model, const HandPose& pose, const CandidateSet& set,
                          int body);
+
+// The palm: each candidate's palm sphere (Candidate::part) placed only where a test needs
+// it, and `moved` the most any of them moved. Its passes placed every candidate's sphere
+// and measured it, and were a third of a palm pressing a box (palm_then_fingers).
+struct PalmView : BodyBounds {
+  const HandModel* model = nullptr;
+  const HandPose* pose = nullptr;
+  Sphere sphere(const Candidate& c) const { return palm_sphere(*model, *pose, c.part); }
+  bool may_touch(const Candidate& c, double margin) const {
+    const double w = within(margin);
+    return decided_may_touch(c.gap, moved, w, [&] { return may_touch_sphere(sphere(c), c.world, w); });
+  }
+  bool may_sink(const Candidate& c) const {  // may_touch at 0 (clear_from)
+    return decided_may_touch(c.gap, moved, 0.0, [&] { return may_touch_sphere(sphere(c), c.world, 0.0); });
+  }
+};
+PalmView palm_view(const HandModel& model, const HandPose& pose, const CandidateSet& set);
 
 // Bounds of a hand model that do not depend on its pose.
 struct HandReach {
@@ -221,9 +242,12 @@ double body_clearance_over(const HandModel& model, const HandPose& pose,
   if (count == 0) return gap;
   const Candidate* all = candidates.candidates.data();
   if (body == kPalmBody) {
+    const PalmView view = palm_view(model, pose, candidates);
     for (int32_t k = 0; k < count; ++k) {
       const Candidate& c = all[index(k)];
-      const Sphere hand = palm_sphere(model, pose, c.part);
+      if (view.clear_from(c)) break;  // and so is every one after
+      if (!view.may_sink(c)) continue;
+      const Sphere hand = view.sphere(c);
       gap = std::min(gap, glm::length(hand.center - c.world.center) - hand.radius - c.world.radius);
     }
     return gap;

@@ -85,6 +85,18 @@ double detection_margin(const SolverParams& params, double motion) {
 // 71 / 139 with half (whose filtering slowed the resting steps by a tenth).
 double detection_room(const SolverParams& params) { return 0.25 * params.prediction_margin; }
 
+// exact_proximity's answer for a palm sphere, a ball, against a candidate's sphere
+Proximity sphere_proximity(const Sphere& hand, const Sphere& sphere) {
+  Proximity p;
+  const vec3 d = hand.center - sphere.center;
+  const double length = glm::length(d);
+  p.normal = length > 0.0 ? d / length : vec3(0.0, 0.0, 1.0);
+  p.distance = length - hand.radius - sphere.radius;
+  p.hand_point = hand.center - hand.radius * p.normal;
+  p.object_point = sphere.center + sphere.radius * p.normal;
+  return p;
+}
+
 HandState aimed_at(const HandModel& model, const HandState& haptic) {
   HandState target = haptic;
   target.palm_rotation = glm::normalize(target.palm_rotation);
@@ -525,38 +537,12 @@ void HandSolver::report_contacts() {
   for (int body = 0; body < kBodyCount; ++body) {
     if (!candidates_.body_near(body)) continue;
     const double within = std::min(params_.contact_distance, candidates_.need[body]);
-    const SegmentView view =
-        body == kPalmBody ? SegmentView{} : segment_view(model_, pose_, candidates_, body);
-    const Candidate* c = candidates_.of(body);
-    const int32_t count = candidates_.count(body);
-    for (int32_t i = 0; i < count; ++i) {
-      // a segment's candidates further than the contact distance, most of them, are told by
-      // their gap bounds before a contact is begun
-      if (body != kPalmBody) {
-        if (view.beyond(c[i], within)) break;  // and all after
-        if (!view.may_touch(c[i], within)) continue;
-      }
-      SolverContact contact;
-      contact.object = c[i].object;
-      contact.leaf = c[i].leaf;
-      contact.body = body;
-      contact.part = c[i].part;
-      if (body == kPalmBody) {
-        const Sphere hand = palm_sphere(model_, pose_, c[i].part);
-        const vec3 d = hand.center - c[i].world.center;
-        const double length = glm::length(d);
-        contact.normal = length > 0.0 ? d / length : vec3(0.0, 0.0, 1.0);
-        contact.distance = length - hand.radius - c[i].world.radius;
-        contact.hand_point = hand.center - hand.radius * contact.normal;
-        contact.object_point = c[i].world.center + c[i].world.radius * contact.normal;
-      } else {
-        const Proximity p = exact_proximity(view.frame, c[i].world);
-        contact.distance = p.distance;
-        contact.hand_point = p.hand_point;
-        contact.object_point = p.object_point;
-        contact.normal = p.normal;
-      }
-      if (contact.distance <= within) contacts_.push_back(contact);
+    if (body == kPalmBody) {
+      const PalmView view = palm_view(model_, pose_, candidates_);
+      report_body(body, view, within, [&](const Candidate& c) { return sphere_proximity(view.sphere(c), c.world); });
+    } else {
+      const SegmentView view = segment_view(model_, pose_, candidates_, body);
+      report_body(body, view, within, [&](const Candidate& c) { return exact_proximity(view.frame, c.world); });
     }
   }
   // in an order of their own, not of the candidates (of where each walk looked from): the
@@ -565,6 +551,30 @@ void HandSolver::report_contacts() {
     return std::tie(a.body, a.object, a.leaf, a.part, a.object_point.x, a.object_point.y, a.object_point.z) <
            std::tie(b.body, b.object, b.leaf, b.part, b.object_point.x, b.object_point.y, b.object_point.z);
   });
+}
+
+template <class View, class Measure>
+void HandSolver::report_body(int body, const View& view, double within, Measure measure) {
+  const Candidate* c = candidates_.of(body);
+  const int32_t count = candidates_.count(body);
+  for (int32_t i = 0; i < count; ++i) {
+    // candidates further than the contact distance, most of them, are told by their gap
+    // bounds before a contact is begun
+    if (view.beyond(c[i], within)) break;  // and all after
+    if (!view.may_touch(c[i], within)) continue;
+    const Proximity p = measure(c[i]);
+    if (!(p.distance <= within)) continue;
+    SolverContact contact;
+    contact.object = c[i].object;
+    contact.leaf = c[i].leaf;
+    contact.body = body;
+    contact.part = c[i].part;
+    contact.distance = p.distance;
+    contact.hand_point = p.hand_point;
+    contact.object_point = p.object_point;
+    contact.normal = p.normal;
+    contacts_.push_back(contact);
+  }
 }
 
 }  // namespace frusta

@@ -122,6 +122,10 @@ class HandSolver {
   template <class MakeStage>
   StageStats solve_within_budget(MakeStage make, bool budget_binds, bool& slid);
   void report_contacts();
+  // report_contacts for one body: its candidates within `within` of it (by `view`), each
+  // measured by `measure`
+  template <class View, class Measure>
+  void report_body(int body, const View& view, double within, Measure measure);
 
   HandModel model_;
   SolverParams params_;

@@ -109,10 +109,13 @@ int32_t PalmStage::linearise(QpRow* rows, double* target, double* weights, doubl
               row_key(RowKind::kContact, body, c[i].part, c[i].object, c[i].leaf));
     }
   }
+  const int32_t palm_count = inputs_.candidates.count(kPalmBody);
+  const PalmView view = palm_count > 0 ? palm_view(inputs_.model, pose_, inputs_.candidates) : PalmView{};
   const Candidate* c = inputs_.candidates.of(kPalmBody);
-  for (int32_t i = 0; i < inputs_.candidates.count(kPalmBody); ++i) {
-    const Sphere hand = palm_sphere(inputs_.model, pose_, c[i].part);
-    if (!may_touch_sphere(hand, c[i].world, std::min(reach, inputs_.candidates.need[kPalmBody]))) continue;
+  for (int32_t i = 0; i < palm_count; ++i) {
+    if (view.beyond(c[i], reach)) break;  // and every one after
+    if (!view.may_touch(c[i], reach)) continue;
+    const Sphere hand = view.sphere(c[i]);
     const vec3 outward = hand.center - palm;
     const SphereConstraint g = sphere_constraint(
         hand, c[i].world, inputs_.params.form,

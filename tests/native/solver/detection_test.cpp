@@ -212,6 +212,28 @@ void random_hand(const HandModel& model, std::mt19937_64& rng, HandState& state,
   forward_kinematics(model, state, pose);
 }
 
+// Each body's clearance after the hand moved from where `set` was found, as a pass over
+// the set finds it (stopping at the first candidate whose bound and the body's move rule
+// it out, measuring only those that may sink in) and as every candidate measured: to the bit.
+void expect_clearances(const HandModel& model, const HandPose& moved, const CandidateSet& set,
+                       const std::string& what) {
+  for (int body = 0; body < kBodyCount; ++body) {
+    double every = 0.0;
+    const Candidate* c = set.of(body);
+    for (int32_t i = 0; i < set.count(body); ++i) {
+      if (body == kPalmBody) {
+        const Sphere hand = palm_sphere(model, moved, c[i].part);
+        every = std::min(every, glm::length(hand.center - c[i].world.center) - hand.radius - c[i].world.radius);
+      } else {
+        const SegmentFrame frame = make_segment_frame(finger_segment(
+            model, moved, body / FRUSTA_SEGMENTS_PER_FINGER, body % FRUSTA_SEGMENTS_PER_FINGER));
+        every = std::min(every, exact_distance(frame, c[i].world));
+      }
+    }
+    EXPECT_EQ(body_clearance(model, moved, set, body), every) << what << ", body " << body;
+  }
+}
+
 // Hands closed by random amounts and moved about a ball, a box and a plate turned at
 // random, so that fingers and palm cross them at every depth; leaves and both cuts.
 void check_random_hands(const HandModel& model, int32_t draws, uint64_t seed) {
@@ -245,7 +267,11 @@ void check_random_hands(const HandModel& model, int32_t draws, uint64_t seed) {
     HandState moved_state = state;
     const int bent = static_cast<int>(unit(rng) * FRUSTA_FINGER_COUNT) % FRUSTA_FINGER_COUNT;
     moved_state.angles[bent * FRUSTA_JOINTS_PER_FINGER + 2] += 0.01;
-    if (unit(rng) < 0.5) moved_state.palm_position.x += 0.001;
+    if (unit(rng) < 0.5) {  // moved and turned: each palm sphere by another amount
+      moved_state.palm_position.x += 0.001;
+      const vec3 axis = glm::normalize(vec3(offset(rng), offset(rng), offset(rng)) + vec3(1e-9));
+      moved_state.palm_rotation = glm::normalize(glm::angleAxis(0.02, axis) * moved_state.palm_rotation);
+    }
     // every hand is drawn, so a stride (the sanitizer run) checks some of the same hands
     if (!scenes::scenario_runs(static_cast<uint64_t>(draw))) continue;
     ++runs;
@@ -263,6 +289,7 @@ void check_random_hands(const HandModel& model, int32_t draws, uint64_t seed) {
         detect_candidates(model, reach, pose, objects.data(), static_cast<int32_t>(objects.size()), margin, cut, set);
         expect_same(expected, begin, set, what);
         if (testing::Test::HasFatalFailure()) return;
+        expect_clearances(model, moved, set, what + ", clearances moved");
         finger_candidates += set.size() - set.count(kPalmBody);
         palm_candidates += set.count(kPalmBody);
         const std::vector<Candidate> expected_moved =
