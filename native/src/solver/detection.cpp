@@ -164,10 +164,14 @@ double palm_move(const HandModel& model, const vec3& position, const glm::dmat3&
                  const HandPose& now) {
   const vec3 shift = now.palm_position - position;
   const glm::dmat3 turn = now.palm_rotation - rotation;
-  double move = 0.0;
-  for (const Sphere& s : model.palm_spheres)
-    move = std::max(move, glm::length(shift + turn * s.center));
-  return move;
+  // one square root, of the largest square, rather than one per palm sphere: the same
+  // answer (a rounded root is monotonic), and the palm's views take it every trial
+  double largest = 0.0;
+  for (const Sphere& s : model.palm_spheres) {
+    const vec3 d = shift + turn * s.center;
+    largest = std::max(largest, glm::dot(d, d));
+  }
+  return std::sqrt(largest);
 }
 
 SegmentView segment_view(const HandModel& model, const HandPose& pose, const CandidateSet& set,
