@@ -143,7 +143,8 @@ struct SegmentView : BodyBounds {
     return decided_may_touch(c.gap, moved, w, [&] { return frusta::may_touch(frame, c.world, w); });
   }
   bool may_sink(const Candidate& c) const {  // may_touch at 0 (clear_from)
-    return decided_may_touch(c.gap, moved, 0.0, [&] { return frusta::may_touch(frame, c.world, 0.0); });
+    return decided_may_touch(c.gap, moved, 0.0,
+                             [&] { return frusta::may_touch(frame, c.world, 0.0); });
   }
 };
 SegmentView segment_view(const HandModel& model, const HandPose& pose, const CandidateSet& set,
@@ -158,10 +159,12 @@ struct PalmView : BodyBounds {
   Sphere sphere(const Candidate& c) const { return palm_sphere(*model, *pose, c.part); }
   bool may_touch(const Candidate& c, double margin) const {
     const double w = within(margin);
-    return decided_may_touch(c.gap, moved, w, [&] { return may_touch_sphere(sphere(c), c.world, w); });
+    return decided_may_touch(c.gap, moved, w,
+                             [&] { return may_touch_sphere(sphere(c), c.world, w); });
   }
   bool may_sink(const Candidate& c) const {  // may_touch at 0 (clear_from)
-    return decided_may_touch(c.gap, moved, 0.0, [&] { return may_touch_sphere(sphere(c), c.world, 0.0); });
+    return decided_may_touch(c.gap, moved, 0.0,
+                             [&] { return may_touch_sphere(sphere(c), c.world, 0.0); });
   }
 };
 PalmView palm_view(const HandModel& model, const HandPose& pose, const CandidateSet& set);

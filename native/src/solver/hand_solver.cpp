@@ -539,10 +539,12 @@ void HandSolver::report_contacts() {
     const double within = std::min(params_.contact_distance, candidates_.need[body]);
     if (body == kPalmBody) {
       const PalmView view = palm_view(model_, pose_, candidates_);
-      report_body(body, view, within, [&](const Candidate& c) { return sphere_proximity(view.sphere(c), c.world); });
+      report_body(body, view, within,
+                  [&](const Candidate& c) { return sphere_proximity(view.sphere(c), c.world); });
     } else {
       const SegmentView view = segment_view(model_, pose_, candidates_, body);
-      report_body(body, view, within, [&](const Candidate& c) { return exact_proximity(view.frame, c.world); });
+      report_body(body, view, within,
+                  [&](const Candidate& c) { return exact_proximity(view.frame, c.world); });
     }
   }
   // in an order of their own, not of the candidates (of where each walk looked from): the

@@ -110,7 +110,8 @@ int32_t PalmStage::linearise(QpRow* rows, double* target, double* weights, doubl
     }
   }
   const int32_t palm_count = inputs_.candidates.count(kPalmBody);
-  const PalmView view = palm_count > 0 ? palm_view(inputs_.model, pose_, inputs_.candidates) : PalmView{};
+  const PalmView view =
+      palm_count > 0 ? palm_view(inputs_.model, pose_, inputs_.candidates) : PalmView{};
   const Candidate* c = inputs_.candidates.of(kPalmBody);
   for (int32_t i = 0; i < palm_count; ++i) {
     if (view.beyond(c[i], reach)) break;  // and every one after

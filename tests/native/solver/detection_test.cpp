@@ -223,7 +223,8 @@ void expect_clearances(const HandModel& model, const HandPose& moved, const Cand
     for (int32_t i = 0; i < set.count(body); ++i) {
       if (body == kPalmBody) {
         const Sphere hand = palm_sphere(model, moved, c[i].part);
-        every = std::min(every, glm::length(hand.center - c[i].world.center) - hand.radius - c[i].world.radius);
+        every = std::min(
+            every, glm::length(hand.center - c[i].world.center) - hand.radius - c[i].world.radius);
       } else {
         const SegmentFrame frame = make_segment_frame(finger_segment(
             model, moved, body / FRUSTA_SEGMENTS_PER_FINGER, body % FRUSTA_SEGMENTS_PER_FINGER));
@@ -270,7 +271,8 @@ void check_random_hands(const HandModel& model, int32_t draws, uint64_t seed) {
     if (unit(rng) < 0.5) {  // moved and turned: each palm sphere by another amount
       moved_state.palm_position.x += 0.001;
       const vec3 axis = glm::normalize(vec3(offset(rng), offset(rng), offset(rng)) + vec3(1e-9));
-      moved_state.palm_rotation = glm::normalize(glm::angleAxis(0.02, axis) * moved_state.palm_rotation);
+      moved_state.palm_rotation =
+          glm::normalize(glm::angleAxis(0.02, axis) * moved_state.palm_rotation);
     }
     // every hand is drawn, so a stride (the sanitizer run) checks some of the same hands
     if (!scenes::scenario_runs(static_cast<uint64_t>(draw))) continue;
