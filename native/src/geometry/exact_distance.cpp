@@ -60,4 +60,19 @@ double exact_distance(const SegmentFrame& frame, const Sphere& sphere) {
   return exact_proximity(frame, sphere).distance;
 }
 
+Proximity exact_proximity(const Sphere& hand, const Sphere& sphere) {
+  Proximity p;
+  const vec3 d = hand.center - sphere.center;
+  const double length = glm::length(d);
+  p.normal = length > 0.0 ? d / length : vec3(0.0, 0.0, 1.0);
+  p.distance = length - hand.radius - sphere.radius;
+  p.hand_point = hand.center - hand.radius * p.normal;
+  p.object_point = sphere.center + sphere.radius * p.normal;
+  return p;
+}
+
+double exact_distance(const Sphere& hand, const Sphere& sphere) {
+  return glm::length(hand.center - sphere.center) - hand.radius - sphere.radius;
+}
+
 }  // namespace frusta

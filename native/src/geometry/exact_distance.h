@@ -23,4 +23,9 @@ Proximity exact_proximity(const SegmentFrame& frame, const Sphere& sphere);
 // Just the number, for hot loops and tests.
 double exact_distance(const SegmentFrame& frame, const Sphere& sphere);
 
+// The same for a ball of the hand (a palm sphere) against a sphere: the normal along
+// their centres' line (+z where the centres coincide); `feature` means nothing here.
+Proximity exact_proximity(const Sphere& hand, const Sphere& sphere);
+double exact_distance(const Sphere& hand, const Sphere& sphere);
+
 }  // namespace frusta

@@ -250,8 +250,7 @@ double body_clearance_over(const HandModel& model, const HandPose& pose,
       const Candidate& c = all[index(k)];
       if (view.clear_from(c)) break;  // and so is every one after
       if (!view.may_sink(c)) continue;
-      const Sphere hand = view.sphere(c);
-      gap = std::min(gap, glm::length(hand.center - c.world.center) - hand.radius - c.world.radius);
+      gap = std::min(gap, exact_distance(view.sphere(c), c.world));
     }
     return gap;
   }

@@ -85,18 +85,6 @@ double detection_margin(const SolverParams& params, double motion) {
 // 71 / 139 with half (whose filtering slowed the resting steps by a tenth).
 double detection_room(const SolverParams& params) { return 0.25 * params.prediction_margin; }
 
-// exact_proximity's answer for a palm sphere, a ball, against a candidate's sphere
-Proximity sphere_proximity(const Sphere& hand, const Sphere& sphere) {
-  Proximity p;
-  const vec3 d = hand.center - sphere.center;
-  const double length = glm::length(d);
-  p.normal = length > 0.0 ? d / length : vec3(0.0, 0.0, 1.0);
-  p.distance = length - hand.radius - sphere.radius;
-  p.hand_point = hand.center - hand.radius * p.normal;
-  p.object_point = sphere.center + sphere.radius * p.normal;
-  return p;
-}
-
 HandState aimed_at(const HandModel& model, const HandState& haptic) {
   HandState target = haptic;
   target.palm_rotation = glm::normalize(target.palm_rotation);
@@ -540,7 +528,7 @@ void HandSolver::report_contacts() {
     if (body == kPalmBody) {
       const PalmView view = palm_view(model_, pose_, candidates_);
       report_body(body, view, within,
-                  [&](const Candidate& c) { return sphere_proximity(view.sphere(c), c.world); });
+                  [&](const Candidate& c) { return exact_proximity(view.sphere(c), c.world); });
     } else {
       const SegmentView view = segment_view(model_, pose_, candidates_, body);
       report_body(body, view, within,
