@@ -62,16 +62,14 @@ void CandidateCache::detect(const HandModel& model, const HandReach& reach, cons
     set.end[body] = k;
     set.need[body] = need;
     // whether one is within it (the first, mostly, in this order)
-    bool near = false;
-    if (k == set.begin[body]) {
-      // none: nothing to place the body for
-    } else if (body == kPalmBody) {
-      const PalmView view = palm_view(model, pose, set);
-      for (int32_t i = set.begin[body]; i < k && !near; ++i) near = view.may_touch(c[i], need);
-    } else {
-      const SegmentView view = segment_view(model, pose, set, body);
-      for (int32_t i = set.begin[body]; i < k && !near; ++i) near = view.may_touch(c[i], need);
-    }
+    auto any_within = [&](const auto& view) {
+      for (int32_t i = set.begin[body]; i < k; ++i)
+        if (view.may_touch(c[i], need)) return true;
+      return false;
+    };
+    const bool near = k > set.begin[body] &&
+                      (body == kPalmBody ? any_within(palm_view(model, pose, set))
+                                         : any_within(segment_view(model, pose, set, body)));
     if (near) set.near |= 1u << body;
   }
 }

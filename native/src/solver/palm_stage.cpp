@@ -109,7 +109,9 @@ int32_t PalmStage::linearise(QpRow* rows, double* target, double* weights, doubl
               row_key(RowKind::kContact, body, c[i].part, c[i].object, c[i].leaf));
     }
   }
-  const int32_t palm_count = inputs_.candidates.count(kPalmBody);
+  // as for the segments above: a palm with nothing near has no rows
+  const int32_t palm_count =
+      inputs_.candidates.body_near(kPalmBody) ? inputs_.candidates.count(kPalmBody) : 0;
   const PalmView view =
       palm_count > 0 ? palm_view(inputs_.model, pose_, inputs_.candidates) : PalmView{};
   const Candidate* c = inputs_.candidates.of(kPalmBody);
