@@ -8,9 +8,9 @@
 #pragma once
 
 #include <cmath>
-
 #include <glm/geometric.hpp>
 
+#include "geometry/double_lanes.h"
 #include "geometry/segment_frame.h"
 #include "geometry/types.h"
 
@@ -92,38 +92,72 @@ bool decided_may_touch(const GapBounds& bounds, double move, double margin, Test
 // branch may_touch's tests solved for their reach, less and plus a rounding allowance.
 // In exact arithmetic that margin is the exact gap (0 inside), since may_touch is
 // exact_distance <= margin; each branch that holds at a reach bounds the gap from above.
-inline GapBounds gap_bounds(const SegmentFrame& frame, const Sphere& sphere) {
-  const vec3 w = sphere.center - frame.distal;
-  const double allowance =
-      contact_detail::kGapBoundSlack *
-      (std::fabs(frame.distal.x) + std::fabs(frame.distal.y) + std::fabs(frame.distal.z) +
-       std::fabs(w.x) + std::fabs(w.y) + std::fabs(w.z) + frame.length + frame.r_distal +
-       frame.r_proximal + sphere.radius);
+// Written once for a sphere (D = double) or two (Doubles2), the same operations in the
+// same order: a detection bounds each hit of its walks, and two at a time took the square
+// roots and divisions that are most of it in half the time.
+template <class D>
+void gap_bounds_of(const SegmentFrame& frame, D cx, D cy, D cz, D radius, D& least, D& most) {
+  using lanes::greater;
+  using lanes::lesser;
+  using lanes::magnitude;
+  using lanes::root;
+  const D wx = cx - frame.distal.x, wy = cy - frame.distal.y, wz = cz - frame.distal.z;
+  const double fixed =
+      std::fabs(frame.distal.x) + std::fabs(frame.distal.y) + std::fabs(frame.distal.z);
+  const D allowance =
+      contact_detail::kGapBoundSlack * (fixed + magnitude(wx) + magnitude(wy) + magnitude(wz) +
+                                        frame.length + frame.r_distal + frame.r_proximal + radius);
   // the end balls: |c - E| <= reach + r2, |c - D| <= reach + r1
-  double reach = std::min(glm::length(w) - frame.r_distal,
-                          glm::length(sphere.center - frame.proximal) - frame.r_proximal);
+  const D dx = cx - frame.proximal.x, dy = cy - frame.proximal.y, dz = cz - frame.proximal.z;
+  D reach = lesser(root(wx * wx + wy * wy + wz * wz) - frame.r_distal,
+                   root(dx * dx + dy * dy + dz * dz) - frame.r_proximal);
   if (!frame.degenerate) {
     // the side: |radial| <= reach / cos(alpha) + r2 + axial slope, with the touching
     // point in the band, -axial <= reach sin(alpha) <= length - axial, for a reach of
     // at least the sphere's radius (no margin is negative)
-    const double axial = glm::dot(w, frame.axis);
-    const vec3 radial = w - axial * frame.axis;
-    double low = (glm::length(radial) - frame.r_distal - axial * frame.slope) * frame.cos_alpha;
-    double high = INFINITY;
+    const D axial = wx * frame.axis.x + wy * frame.axis.y + wz * frame.axis.z;
+    const D rx = wx - axial * frame.axis.x, ry = wy - axial * frame.axis.y,
+            rz = wz - axial * frame.axis.z;
+    D low = (root(rx * rx + ry * ry + rz * rz) - frame.r_distal - axial * frame.slope) *
+            frame.cos_alpha;
+    D high = lanes::splat(low, INFINITY);
     if (frame.sin_alpha > 0.0) {
-      low = std::max(low, -axial / frame.sin_alpha);
+      low = greater(low, -axial / frame.sin_alpha);
       high = (frame.length - axial) / frame.sin_alpha;
     } else if (frame.sin_alpha < 0.0) {
-      low = std::max(low, (frame.length - axial) / frame.sin_alpha);
+      low = greater(low, (frame.length - axial) / frame.sin_alpha);
       high = -axial / frame.sin_alpha;
-    } else if (axial < 0.0 || axial > frame.length) {
-      low = INFINITY;
+    } else {
+      low = ((axial < 0.0) | (axial > frame.length)) ? lanes::splat(low, INFINITY) : low;
     }
-    if (low <= high + allowance && high >= sphere.radius - allowance) reach = std::min(reach, low);
+    reach = ((low <= high + allowance) & (high >= radius - allowance)) ? lesser(reach, low) : reach;
   }
   // a reach below the radius holds at margin 0: the sphere sinks in by an unknown depth
-  const double margin = reach - sphere.radius;
-  return {margin - allowance, std::max(margin, 0.0) + allowance};
+  const D margin = reach - radius;
+  least = margin - allowance;
+  most = greater(margin, lanes::splat(margin, 0.0)) + allowance;
+}
+
+inline GapBounds gap_bounds(const SegmentFrame& frame, const Sphere& sphere) {
+  GapBounds g;
+  gap_bounds_of(frame, sphere.center.x, sphere.center.y, sphere.center.z, sphere.radius, g.least,
+                g.most);
+  return g;
+}
+
+// The same for two spheres at once.
+inline void gap_bounds(const SegmentFrame& frame, const Sphere& a, const Sphere& b, GapBounds& of_a,
+                       GapBounds& of_b) {
+#if defined(FRUSTA_DOUBLE_LANES)
+  Doubles2 least, most;
+  gap_bounds_of(frame, Doubles2{a.center.x, b.center.x}, Doubles2{a.center.y, b.center.y},
+                Doubles2{a.center.z, b.center.z}, Doubles2{a.radius, b.radius}, least, most);
+  of_a = {least[0], most[0]};
+  of_b = {least[1], most[1]};
+#else
+  of_a = gap_bounds(frame, a);
+  of_b = gap_bounds(frame, b);
+#endif
 }
 
 // The same for two spheres and may_touch_sphere.

@@ -284,13 +284,29 @@ void detect_candidates(const HandModel& model, const HandReach& reach, const Han
 
   auto add_hits = [&](int32_t object, int32_t count, const SegmentFrame& body) {
     const SolverObject& obj = objects[object];
-    for (int32_t h = 0; h < count; ++h) {
+    auto candidate = [&](int32_t h) {
       const TreeHit& hit = out.hits[static_cast<size_t>(h)];
       // an inner node cut off by the level stands in for every leaf below it
       const Sphere local = hit.leaf >= 0 ? obj.tree->leaves[static_cast<size_t>(hit.leaf)]
                                          : obj.tree->node_sphere(hit.node);
-      const Sphere world{obj.pose.rotation * local.center + obj.pose.position, local.radius};
-      out.sorting.push_back({object, hit.leaf, 0, world, gap_bounds(body, world)});
+      return Candidate{object,
+                       hit.leaf,
+                       0,
+                       {obj.pose.rotation * local.center + obj.pose.position, local.radius},
+                       {}};
+    };
+    // bounded two at a time (gap_bounds_of)
+    int32_t h = 0;
+    for (; h + 1 < count; h += 2) {
+      Candidate a = candidate(h), b = candidate(h + 1);
+      gap_bounds(body, a.world, b.world, a.gap, b.gap);
+      out.sorting.push_back(a);
+      out.sorting.push_back(b);
+    }
+    if (h < count) {
+      Candidate a = candidate(h);
+      a.gap = gap_bounds(body, a.world);
+      out.sorting.push_back(a);
     }
   };
 

@@ -7,14 +7,14 @@
 
 #include <array>
 #include <cmath>
-#include <random>
-
+#include <cstring>
 #include <glm/geometric.hpp>
+#include <random>
 
 #include "geometry/exact_distance.h"
 #include "geometry/segment_frame.h"
-#include "property_support.h"
 #include "geometry_fixtures.h"
+#include "property_support.h"
 #include "scenes/random_cases.h"
 
 namespace frusta {
@@ -166,6 +166,7 @@ TEST(GapBoundsProperty, MayTouchHoldsBelowNeitherAndFailsAboveNeitherNearOrMoved
   double loosest = 0.0;  // the widest bounds around a positive exact gap, by the case's
                          // world scale (their rounding allowance grows with it)
   std::uint64_t moved_tested = 0;
+  Sphere last_sphere{vec3(0.01, -0.02, 0.03), 0.005};
   for (std::uint64_t i = 0; i < n; ++i) {
     const Case c = gen.next();
     const SegmentFrame f = make_segment_frame(c.segment);
@@ -212,6 +213,15 @@ TEST(GapBoundsProperty, MayTouchHoldsBelowNeitherAndFailsAboveNeitherNearOrMoved
                 "moved: surely_within implies may_touch", c,
                 [&] { return format("margin=%.3g move=%.17g ", margin, move) + describe(); });
     }
+    // two at once (as a detection bounds its hits): each one's own bits, the other a
+    // sphere of the last case
+    GapBounds first, second;
+    gap_bounds(f, c.sphere, last_sphere, first, second);
+    const GapBounds alone = gap_bounds(f, last_sphere);
+    log.check(std::memcmp(&first, &bounds, sizeof first) == 0 &&
+                  std::memcmp(&second, &alone, sizeof second) == 0,
+              "two at once: each as alone, to the bit", c, describe);
+    last_sphere = c.sphere;
     // two spheres: the tip ball against the case's sphere
     const Sphere tip{c.segment.distal, c.segment.distal_radius};
     const GapBounds ball = gap_bounds_sphere(tip, c.sphere);
