@@ -17,7 +17,7 @@ namespace frusta {
 FingerStage::FingerStage(const StageInputs& inputs, int finger, const FingerAngles& target,
                          const FingerCap& cap, FingerBound bound, QpHints& hints, HandState& state,
                          HandPose& pose, double start_gap)
-    : StageEstimate(state, pose, hints),
+    : StageEstimate(state, pose, hints, finger),
       inputs_(inputs),
       finger_(finger),
       target_(target),
@@ -235,7 +235,7 @@ double FingerStage::try_between(double s) {
 }
 
 double FingerStage::trial_clearance() {
-  trial_pose_ = pose_;
+  // (the rest of the trial's pose is the stage's, as the finger's kinematics rewrite it whole)
   finger_kinematics(inputs_.model, trial_state_, finger_, trial_pose_);
   return clearance(trial_pose_);
 }
@@ -244,7 +244,6 @@ double FingerStage::step_clearance() {
   // A sphere that made no row lies further from its segment than the step can move it
   // (linearise's reach; a step beyond its radius was linearised again for a radius it
   // keeps within), so it cannot touch: the same gap as every candidate's, from the few near
-  trial_pose_ = pose_;
   finger_kinematics(inputs_.model, trial_state_, finger_, trial_pose_);
   double gap = 0.0;
   for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s) {
