@@ -524,6 +524,7 @@ void HandSolver::report_contacts() {
   contacts_.clear();
   for (int body = 0; body < kBodyCount; ++body) {
     if (!candidates_.body_near(body)) continue;
+    const size_t first = contacts_.size();
     const double within = std::min(params_.contact_distance, candidates_.need[body]);
     if (body == kPalmBody) {
       const PalmView view = palm_view(model_, pose_, candidates_);
@@ -534,13 +535,17 @@ void HandSolver::report_contacts() {
       report_body(body, view, within,
                   [&](const Candidate& c) { return exact_proximity(view.frame, c.world); });
     }
+    // in an order of their own, not of the candidates (of where each walk looked from):
+    // the same hand and objects make the same list, and the forces summed over it the
+    // same bits. By body, then object, leaf and palm sphere: a body's are sorted apart.
+    std::sort(contacts_.begin() + static_cast<std::ptrdiff_t>(first), contacts_.end(),
+              [](const SolverContact& a, const SolverContact& b) {
+                return std::tie(a.object, a.leaf, a.part, a.object_point.x, a.object_point.y,
+                                a.object_point.z) < std::tie(b.object, b.leaf, b.part,
+                                                             b.object_point.x, b.object_point.y,
+                                                             b.object_point.z);
+              });
   }
-  // in an order of their own, not of the candidates (of where each walk looked from): the
-  // same hand and objects make the same list, and the forces summed over it the same bits
-  std::sort(contacts_.begin(), contacts_.end(), [](const SolverContact& a, const SolverContact& b) {
-    return std::tie(a.body, a.object, a.leaf, a.part, a.object_point.x, a.object_point.y, a.object_point.z) <
-           std::tie(b.body, b.object, b.leaf, b.part, b.object_point.x, b.object_point.y, b.object_point.z);
-  });
 }
 
 template <class View, class Measure>
