@@ -61,15 +61,20 @@ void CandidateCache::detect(const HandModel& model, const HandReach& reach, cons
     while (k < walked_end_[body] && may_be_within(c[k].gap, move, need)) ++k;
     set.end[body] = k;
     set.need[body] = need;
-    // whether one is within it (the first, mostly, in this order)
-    auto any_within = [&](const auto& view) {
+    // whether one is within it: most often a bound says so of the first, and the body's
+    // view (a segment's frame) is made only where none does
+    auto any_within = [&](const auto& make_view) {
+      for (int32_t i = set.begin[body]; i < k; ++i)
+        if (surely_within(c[i].gap, move, need)) return true;
+      const auto view = make_view();
       for (int32_t i = set.begin[body]; i < k; ++i)
         if (view.may_touch(c[i], need)) return true;
       return false;
     };
-    const bool near = k > set.begin[body] &&
-                      (body == kPalmBody ? any_within(palm_view(model, pose, set))
-                                         : any_within(segment_view(model, pose, set, body)));
+    const bool near =
+        k > set.begin[body] &&
+        (body == kPalmBody ? any_within([&] { return palm_view(model, pose, set); })
+                           : any_within([&] { return segment_view(model, pose, set, body); }));
     if (near) set.near |= 1u << body;
   }
 }
