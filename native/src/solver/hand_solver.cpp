@@ -223,6 +223,15 @@ frusta_result HandSolver::step(const HandState& haptic, const SolverObject* obje
     if (stats_out) *stats_out = stats;
     return FRUSTA_OK;
   }
+  // A finger at rest (the last step left it where it found it), aimed where it was in a
+  // scene as it was, begins settled: the sub-steps solve it again only if the palm moves.
+  // Held still, a grasp had all five fingers solved while one crept on by nanometres.
+  if (detected_ && !placed)
+    for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f)
+      if (finger_rest_[f] && finger_angles(target, f) == finger_angles(last_target_, f)) {
+        settled_[f] = true;
+        stats.resting_fingers |= 1u << f;
+      }
   const HandState began = graphic_;
   const bool timed = deadline_ != Clock::time_point::max();
   Clock::time_point before = timed ? Clock::now() : Clock::time_point();
@@ -246,7 +255,7 @@ frusta_result HandSolver::step(const HandState& haptic, const SolverObject* obje
       break;
     }
     bool moved = false;
-    const bool reached = substep(target, objects, object_count, sub == 0, last, stats, budget, moved);
+    const bool reached = substep(target, objects, object_count, last, stats, budget, moved);
     ++stats.substeps;
     if (timed) {
       const Clock::time_point now = Clock::now();
@@ -268,8 +277,13 @@ frusta_result HandSolver::step(const HandState& haptic, const SolverObject* obje
   // converge (linearly: the deep target leaves the surface point weakly determined), a
   // nanometre a step and less for tens of steps; it rests once a step moves it no more
   resting_ = !stats.lagging && !stats.rate_limited && !(total_motion(reach_, began, graphic_) > kStandstill);
+  for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f)
+    finger_rest_[f] = !stats.lagging && !stats.rate_limited &&
+                      !(finger_lever_motion(reach_, f, finger_angles(began, f),
+                                            finger_angles(graphic_, f)) > kStandstill);
+  // (target_pose_ is the last target's: a target held still is posed once)
+  if (!same_state(target, last_target_)) forward_kinematics(model_, target, target_pose_);
   last_target_ = target;
-  forward_kinematics(model_, target, target_pose_);
   report_contacts();
   if (timed) {  // fades as substep_cost_ does; only a step that ran to its aim adds
     overrun_ -= overrun_ / 8;
@@ -327,9 +341,8 @@ bool HandSolver::overlaps(const SolverObject& object) {
          !hand_is_free(model_, reach_, pose_, &object, 1, params_.penetration_tolerance, candidates_);
 }
 
-bool HandSolver::substep(const HandState& target, const SolverObject* objects,
-                         int32_t object_count, bool first, bool last, StepStats& stats,
-                         double& budget, bool& moved) {
+bool HandSolver::substep(const HandState& target, const SolverObject* objects, int32_t object_count,
+                         bool last, StepStats& stats, double& budget, bool& moved) {
   const HandState start = graphic_;
   const PalmPlacement palm_from = placement(graphic_), palm_to = placement(target);
   const double palm_move = palm_motion(reach_, palm_from, palm_to);
@@ -385,12 +398,12 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
       margins.body[f * FRUSTA_SEGMENTS_PER_FINGER + s] =
           detection_margin(params_, palm_part + reach_.segment_share[f][s] * (allowance - palm_part));
   margins.body[kPalmBody] = detection_margin(params_, palm_part);
-  // A finger that settled in an earlier sub-step of this step, on a palm that will not
-  // move in this one, is not solved again (below): its candidates serve only to find
-  // whether it starts inside something and, in the last sub-step, its contacts, for which
-  // the spheres within the contact distance suffice.
+  // A finger that settled in an earlier sub-step of this step (or began it at rest), on a
+  // palm that will not move in this one, is not solved again (below): its candidates
+  // serve only to find whether it starts inside something and, in the last sub-step, its
+  // contacts, for which the spheres within the contact distance suffice.
   DetectionMargins needs = margins;
-  if (!first && !(palm_move > 0.0))
+  if (!(palm_move > 0.0))
     for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f)
       if (settled_[f])
         for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s)
@@ -473,7 +486,7 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects,
                              params_.prediction_margin - palm_moved_by};
   const bool palm_moved = palm_moved_by > 0.0;
   for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f) {
-    if (settled_[f] && !palm_moved) continue;
+    if (settled_[f] && !palm_moved && !recovering) continue;
     const FingerAngles from = finger_angles(graphic_, f), to = finger_angles(target, f);
     const double move = finger_lever_motion(reach_, f, from, to);
     settled_[f] = true;

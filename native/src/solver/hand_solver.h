@@ -53,6 +53,9 @@ struct StepStats {
   bool rate_limited = false;     // the continuity bound (follow_factor) stopped it short
   bool infeasible = false;       // some QP could not meet every row; the hand stayed safe
   bool resting = false;          // nothing to solve: the last step's hand, as it was
+  // bit f: finger f began the step at rest (the last step left it where it found it,
+  // aimed where it still is): it is solved again only if the palm moves
+  uint32_t resting_fingers = 0;
 };
 
 // The haptic hand as the solver aims at it: rotation normalised and angles clamped to the
@@ -96,6 +99,7 @@ class HandSolver {
   // Forget the graphic hand: the next step starts it afresh from the haptic hand.
   void reset() {
     started_ = false;
+    finger_rest_.fill(false);
     placement_ = PlacementSearch{};
   }
 
@@ -113,10 +117,10 @@ class HandSolver {
  private:
   // One sub-step, moving no point further than `budget` (metres, less what it moved);
   // true when every part reached its own target (or stopped against objects) without
-  // hitting a motion cap. The step's `last` one slides where it is cut short; one after
-  // its `first` looks only the contact distance from a finger that will not move in it.
+  // hitting a motion cap. The step's `last` one slides where it is cut short; each looks
+  // only the contact distance from a finger settled on a palm that will not move in it.
   bool substep(const HandState& target, const SolverObject* objects, int32_t object_count,
-               bool first, bool last, StepStats& stats, double& budget, bool& moved);
+               bool last, StepStats& stats, double& budget, bool& moved);
   // A stage built by make(slide) solved on the graphic hand; where `budget_binds` and the
   // stage was cut short, solved again sliding from where it started (slid is set).
   template <class MakeStage>
@@ -157,6 +161,8 @@ class HandSolver {
   const ObjectFinder* finder_ = nullptr;  // this step's
   std::vector<int32_t> near_;             // what it found for a sub-step, in index order
   std::array<bool, FRUSTA_FINGER_COUNT> settled_{};  // per sub-step: reached or stopped
+  // per finger, as resting_ for the hand: the last step left it where it found it
+  std::array<bool, FRUSTA_FINGER_COUNT> finger_rest_{};
   std::vector<QpRow> rows_;
   // what each part's last QP ended with active: the next one's warm start (QpHints)
   std::array<QpHints, FRUSTA_FINGER_COUNT> finger_hints_{};
