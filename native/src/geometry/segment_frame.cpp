@@ -26,31 +26,31 @@ SegmentFrame make_segment_frame(const Segment& segment) {
   if (!(length > kDegenerateRelativeLength * size))
     return {segment.distal,
             segment.proximal,
-            vec3(1.0, 0.0, 0.0),
+            vec3(1.0, 0.0, 0.0),  // axis
             length,
             segment.distal_radius,
             segment.proximal_radius,
-            0.0,
-            1.0,
-            1.0,
-            0.0,
+            0.0,  // slope
+            1.0,  // cos_alpha
+            1.0,  // sec_alpha
+            0.0,  // sin_alpha
             size,
-            true};
+            true};  // degenerate
   // cos and sin from the side's own lengths rather than through atan: exact for a cylinder
   const double side = slant_length(length, segment.distal_radius, segment.proximal_radius);
   const double taper = segment.proximal_radius - segment.distal_radius;
   return {segment.distal,
           segment.proximal,
-          d / length,
+          d / length,  // axis
           length,
           segment.distal_radius,
           segment.proximal_radius,
-          taper / length,
-          length / side,
-          side / length,
-          taper / side,
+          taper / length,  // slope
+          length / side,   // cos_alpha
+          side / length,   // sec_alpha
+          taper / side,    // sin_alpha
           size,
-          false};
+          false};  // degenerate
 }
 
 AxialSplit split_axial(const SegmentFrame& frame, const vec3& point) {
