@@ -276,10 +276,12 @@ frusta_result HandSolver::step(const HandState& haptic, const SolverObject* obje
   // A hand pressed deep into a curved surface creeps along it as its linearisations
   // converge (linearly: the deep target leaves the surface point weakly determined), a
   // nanometre a step and less for tens of steps; it rests once a step moves it no more
-  resting_ = !stats.lagging && !stats.rate_limited && !(total_motion(reach_, began, graphic_) > kStandstill);
+  // (the same for each finger alone: finger_rest_)
+  const bool unhindered = !stats.lagging && !stats.rate_limited;
+  resting_ = unhindered && !(total_motion(reach_, began, graphic_) > kStandstill);
   for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f)
-    finger_rest_[f] = !stats.lagging && !stats.rate_limited &&
-                      !(finger_lever_motion(reach_, f, finger_angles(began, f),
+    finger_rest_[f] =
+        unhindered && !(finger_lever_motion(reach_, f, finger_angles(began, f),
                                             finger_angles(graphic_, f)) > kStandstill);
   // (target_pose_ is the last target's: a target held still is posed once)
   if (!same_state(target, last_target_)) forward_kinematics(model_, target, target_pose_);
