@@ -213,7 +213,10 @@ frusta_result HandSolver::step(const HandState& haptic, const SolverObject* obje
   const bool placed = stats.depenetrated;
   settled_.fill(false);
   detected_ = detected_ && objects_as_before;
-  if (!objects_as_before) cache_.clear();
+  if (!objects_as_before) {
+    cache_.clear();
+    reported_ = false;
+  }
   // At rest: the last step left the hand where it found it, and nothing it solved
   // against has changed (its target, the objects, what it detected); only the
   // continuity budget shrank, which cannot free a hand that did not move. The
@@ -536,11 +539,24 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects, i
 }
 
 void HandSolver::report_contacts() {
+  // A body where it stood at the last report, among the same objects, has the same
+  // contacts: held, a grasp's resting fingers measured theirs again every step.
+  std::swap(contacts_, last_contacts_);
   contacts_.clear();
+  const uint32_t unmoved = reported_ ? bodies_unmoved(reported_pose_, pose_) : 0u;
+  size_t last = 0;  // where the body's run of the last report begins (they are by body)
   for (int body = 0; body < kBodyCount; ++body) {
-    if (!candidates_.body_near(body)) continue;
     const size_t first = contacts_.size();
     const double within = std::min(params_.contact_distance, candidates_.need[body]);
+    size_t last_end = last;
+    while (last_end < last_contacts_.size() && last_contacts_[last_end].body == body) ++last_end;
+    const bool again = ((unmoved >> body) & 1u) != 0 && within == reported_within_[body];
+    if (again)
+      contacts_.insert(contacts_.end(), last_contacts_.begin() + static_cast<std::ptrdiff_t>(last),
+                       last_contacts_.begin() + static_cast<std::ptrdiff_t>(last_end));
+    last = last_end;
+    reported_within_[body] = within;
+    if (again || !candidates_.body_near(body)) continue;
     if (body == kPalmBody) {
       const PalmView view = palm_view(model_, pose_, candidates_);
       report_body(body, view, within,
@@ -561,6 +577,8 @@ void HandSolver::report_contacts() {
                                                              b.object_point.z);
               });
   }
+  reported_pose_ = pose_;
+  reported_ = true;
 }
 
 template <class View, class Measure>

@@ -100,6 +100,7 @@ class HandSolver {
   void reset() {
     started_ = false;
     finger_rest_.fill(false);
+    reported_ = false;
     placement_ = PlacementSearch{};
   }
 
@@ -168,6 +169,12 @@ class HandSolver {
   std::array<QpHints, FRUSTA_FINGER_COUNT> finger_hints_{};
   QpHints palm_hints_;
   std::vector<SolverContact> contacts_;
+  // the report before (report_contacts' scratch), where the hand stood for it and how
+  // far each body looked; reported_: among the objects as they still are
+  std::vector<SolverContact> last_contacts_;
+  HandPose reported_pose_;
+  std::array<double, kBodyCount> reported_within_{};
+  bool reported_ = false;
 };
 
 }  // namespace frusta

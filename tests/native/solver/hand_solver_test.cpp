@@ -335,48 +335,116 @@ TEST(HandSolver, TheGraphicPoseIsTheGraphicStatesKinematicsEveryStep) {
 // where it ended, as a fresh detection there finds them: whatever the sub-steps kept of
 // what they detected (a finger that settled in an earlier sub-step is not looked for
 // again) must hold them all.
-TEST(HandSolver, TheContactsAStepReportsAreEveryPairWithinTheContactDistance) {
-  const HandModel model = default_model();
-  const HandReach reach = hand_reach(model);
-  const SolverParams params;
+// The contacts of the hand at `pose`, each pair within the contact distance found afresh
+// (body, object, leaf, palm sphere), sorted; the solver's report the same way
+// (reported_pairs). Each object point is checked against the one measured afresh.
+using ContactPair = std::array<int32_t, 4>;
+std::vector<ContactPair> fresh_contacts(const HandSolver& solver, const SolverObject* objects,
+                                        int32_t count) {
+  const HandModel& model = solver.model();
+  const HandPose& pose = solver.graphic_pose();
+  const double within = solver.params().contact_distance;
   CandidateSet fresh;
-  int contacts = 0;
-  auto scenarios = scenes::hand_scenario_names();
-  for (const std::string& name : scenarios) {
-    const HandScenario s = make_hand_scenario(name);
-    HandSolver solver(model, params);
-    const auto count = static_cast<int32_t>(s.objects.size());
-    for (int t = 0; t < s.steps; ++t) {
-      ASSERT_EQ(solver.step(s.haptic(t), s.objects.data(), count, nullptr), FRUSTA_OK);
-      if (!solver.started()) continue;
-      detect_candidates(model, reach, solver.graphic_pose(), s.objects.data(), count,
-                        DetectionMargins(params.contact_distance), TreeCut(), fresh);
-      std::vector<std::array<int32_t, 4>> expected, reported;
-      for (int body = 0; body < kBodyCount; ++body) {
-        const Candidate* c = fresh.of(body);
-        for (int32_t i = 0; i < fresh.count(body); ++i) {
-          double gap;
-          if (body == kPalmBody) {
-            const Sphere hand = palm_sphere(model, solver.graphic_pose(), c[i].part);
-            gap = glm::length(hand.center - c[i].world.center) - hand.radius - c[i].world.radius;
-          } else {
-            const SegmentFrame frame = make_segment_frame(finger_segment(
-                model, solver.graphic_pose(), body / FRUSTA_SEGMENTS_PER_FINGER,
-                body % FRUSTA_SEGMENTS_PER_FINGER));
-            gap = exact_proximity(frame, c[i].world).distance;
-          }
-          if (gap <= params.contact_distance) expected.push_back({body, c[i].object, c[i].leaf, c[i].part});
-        }
+  detect_candidates(model, hand_reach(model), pose, objects, count, DetectionMargins(within),
+                    TreeCut(), fresh);
+  std::vector<ContactPair> expected;
+  for (int body = 0; body < kBodyCount; ++body) {
+    const Candidate* c = fresh.of(body);
+    for (int32_t i = 0; i < fresh.count(body); ++i) {
+      Proximity p;
+      if (body == kPalmBody) {
+        p = exact_proximity(palm_sphere(model, pose, c[i].part), c[i].world);
+      } else {
+        const SegmentFrame frame = make_segment_frame(finger_segment(
+            model, pose, body / FRUSTA_SEGMENTS_PER_FINGER, body % FRUSTA_SEGMENTS_PER_FINGER));
+        p = exact_proximity(frame, c[i].world);
       }
-      for (const SolverContact& c : solver.contacts())
-        reported.push_back({c.body, c.object, c.leaf, c.part});
-      std::sort(expected.begin(), expected.end());
-      std::sort(reported.begin(), reported.end());
-      ASSERT_EQ(reported, expected) << name << " step " << t;
-      contacts += static_cast<int>(reported.size());
+      if (!(p.distance <= within)) continue;
+      expected.push_back({body, c[i].object, c[i].leaf, c[i].part});
+      const auto reported = std::find_if(solver.contacts().begin(), solver.contacts().end(),
+                                         [&](const SolverContact& r) {
+                                           return r.body == body && r.object == c[i].object &&
+                                                  r.leaf == c[i].leaf && r.part == c[i].part;
+                                         });
+      if (reported != solver.contacts().end()) {
+        EXPECT_LE(glm::length(reported->object_point - p.object_point), 1e-12) << "body " << body;
+      }
     }
   }
-  EXPECT_GT(contacts, 10000);
+  std::sort(expected.begin(), expected.end());
+  return expected;
+}
+
+std::vector<ContactPair> reported_pairs(const HandSolver& solver) {
+  std::vector<ContactPair> reported;
+  for (const SolverContact& c : solver.contacts())
+    reported.push_back({c.body, c.object, c.leaf, c.part});
+  std::sort(reported.begin(), reported.end());
+  return reported;
+}
+
+// Every scenario's steps, the scene vouched for as still (objects_as_before) or not: a
+// body that has not moved since the last step reports its contacts again then.
+TEST(HandSolver, TheContactsAStepReportsAreEveryPairWithinTheContactDistance) {
+  const SolverParams params;
+  int contacts = 0;
+  for (bool vouched : {false, true}) {
+    for (const std::string& name : scenes::hand_scenario_names()) {
+      const HandScenario s = make_hand_scenario(name);
+      HandSolver solver(default_model(), params);
+      const auto count = static_cast<int32_t>(s.objects.size());
+      for (int t = 0; t < s.steps + 20; ++t) {
+        ASSERT_EQ(solver.step(t < s.steps ? s.haptic(t) : s.held, s.objects.data(), count, nullptr,
+                              HandSolver::Clock::time_point::max(), nullptr, vouched && t > 0),
+                  FRUSTA_OK);
+        if (!solver.started()) continue;
+        const std::vector<ContactPair> reported = reported_pairs(solver);
+        ASSERT_EQ(reported, fresh_contacts(solver, s.objects.data(), count))
+            << name << " step " << t << (vouched ? " vouched" : "");
+        contacts += static_cast<int>(reported.size());
+      }
+    }
+  }
+  EXPECT_GT(contacts, 20000);
+}
+
+// A still finger reports its contacts again only among the objects as they were: a box
+// slides along its face under an index fingertip that hovers a millimetre off it (within
+// a contact distance of 1.5 mm, aimed where it is), the caller saying the objects
+// changed, and the fingertip, which does not move, is near other leaves at other points.
+TEST(HandSolver, AStillBodyNearAMovedObjectMeasuresItsContactsAgain) {
+  const HandModel model = default_model();
+  const auto box = scenes::test_box("press_box");
+  SolverObject object{&box->tree, {}};
+  object.pose.position = scenes::index_press_box_centre(
+      model, 0.5 * scenes::test_box_spec("press_box").size.x, 0.0022);
+  SolverParams params;
+  params.contact_distance = 0.0019;
+  HandSolver solver(model, params);
+  StepStats stats;
+  ASSERT_EQ(solver.step(scenes::open_hand(), &object, 1, &stats), FRUSTA_OK);
+  const HandState open = solver.graphic();  // aimed where it is
+  for (int t = 0; t < 3; ++t)
+    ASSERT_EQ(
+        solver.step(open, &object, 1, &stats, HandSolver::Clock::time_point::max(), nullptr, true),
+        FRUSTA_OK);
+  ASSERT_TRUE(stats.resting);
+  const std::vector<ContactPair> before = reported_pairs(solver);
+  ASSERT_FALSE(before.empty());
+  const HandState still = solver.graphic();
+  // along the face the fingertip hovers over: an axis other than the one towards it
+  const vec3 toward =
+      object.pose.position - solver.graphic_pose().fingers[FRUSTA_FINGER_INDEX].joint[3];
+  const int normal = std::fabs(toward.x) >= std::max(std::fabs(toward.y), std::fabs(toward.z)) ? 0
+                     : std::fabs(toward.y) >= std::fabs(toward.z)                              ? 1
+                                                                                               : 2;
+  object.pose.position[(normal + 1) % 3] += 0.0023;
+  ASSERT_EQ(
+      solver.step(open, &object, 1, &stats, HandSolver::Clock::time_point::max(), nullptr, false),
+      FRUSTA_OK);
+  ASSERT_EQ(testing::state_change(still, solver.graphic()), 0.0) << "the hand stayed where it was";
+  EXPECT_NE(reported_pairs(solver), before) << "other leaves near the fingertip";
+  EXPECT_EQ(reported_pairs(solver), fresh_contacts(solver, &object, 1));
 }
 
 // An object the host moves into a still hand (a kinematic object, faster than Delta_r a
