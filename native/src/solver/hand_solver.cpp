@@ -424,9 +424,18 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects, i
   std::array<double, kBodyCount> gaps;
   double deepest = 0.0;
   auto measure_gaps = [&] {
+    // a body where it stood at the last report, among the same objects, sinks as deep as
+    // its deepest reported contact (every pair that sinks is one), else as deep as none
+    const uint32_t reported = reported_ ? bodies_unmoved(reported_pose_, pose_) : 0u;
+    std::array<double, kBodyCount> reported_gaps{};
+    if (reported != 0)
+      for (const SolverContact& c : contacts_)
+        reported_gaps[c.body] = std::min(reported_gaps[c.body], c.distance);
     deepest = 0.0;
     for (int body = 0; body < kBodyCount; ++body) {
-      gaps[body] = body_clearance(model_, pose_, candidates_, body);
+      gaps[body] = ((reported >> body) & 1u) != 0
+                       ? reported_gaps[body]
+                       : body_clearance(model_, pose_, candidates_, body);
       deepest = std::min(deepest, gaps[body]);
     }
   };

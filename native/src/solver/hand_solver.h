@@ -169,8 +169,9 @@ class HandSolver {
   std::array<QpHints, FRUSTA_FINGER_COUNT> finger_hints_{};
   QpHints palm_hints_;
   std::vector<SolverContact> contacts_;
-  // the report before (report_contacts' scratch), where the hand stood for it and how
-  // far each body looked; reported_: among the objects as they still are
+  // the report before (report_contacts' scratch), where the hand stood for the last
+  // report and how far each body looked; reported_: among the objects as they still are.
+  // A body still where it stood has the contacts reported, and sinks as deep as they do.
   std::vector<SolverContact> last_contacts_;
   HandPose reported_pose_;
   std::array<double, kBodyCount> reported_within_{};
