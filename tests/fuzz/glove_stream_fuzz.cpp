@@ -2,9 +2,9 @@
 // libFuzzer target: the bytes a glove sends, through the host's decoders (OpenGloves'
 // alpha lines, Frusta's binary profile), must decode without a crash, a sanitizer
 // report or unbounded memory, to samples and capabilities within what the engine
-// takes (finite angles within pi, a unit palm rotation, a palm within 1 km, known
-// outputs), and to the same events whether the bytes come whole or in chunks (a serial
-// port hands them over in any chunks).
+// takes (finite angles within pi to the field's resolution, a unit palm rotation, a palm
+// within 1 km, known outputs), and to the same events whether the bytes come whole or in
+// chunks (a serial port hands them over in any chunks).
 //
 // Random bytes almost never carry a good CRC, so a plain fuzzer stops at the binary
 // profile's framing. Byte 0 chooses the decoder; for the binary profile, half the
@@ -38,8 +38,11 @@ struct Events final : ProtocolSink {
     log.insert(log.end(), bytes, bytes + sizeof value);
   }
   void on_sample(const DeviceSample& s) override {
+    // pi as the binary profile counts it, rounded to its 1e-4 rad: 31416 counts is pi
+    // sent by a glove, 7e-6 rad over it (the first finding, glove_seeds/)
     for (double a : s.angles)
-      if (!(std::fabs(a) <= 3.14159265358979323846)) std::abort();
+      if (!(std::fabs(a) <= binary_profile::kMaxAngleCounts * binary_profile::kAngleUnit))
+        std::abort();
     if (s.has_palm_pose) {
       for (int i = 0; i < 3; ++i)
         if (!(std::fabs(s.palm_position[i]) <= 1e3)) std::abort();
