@@ -162,6 +162,8 @@ double segment_move(const Segment& then, const Segment& now) {
 
 double palm_move(const HandModel& model, const vec3& position, const glm::dmat3& rotation,
                  const HandPose& now) {
+  // a palm that did not move (a grasp's, every pass) moved 0 by the loop below too
+  if (position == now.palm_position && rotation == now.palm_rotation) return 0.0;
   const vec3 shift = now.palm_position - position;
   const glm::dmat3 turn = now.palm_rotation - rotation;
   // one square root, of the largest square, rather than one per palm sphere: the same
