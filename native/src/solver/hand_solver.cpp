@@ -426,7 +426,7 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects, i
   auto measure_gaps = [&] {
     // a body where it stood at the last report, among the same objects, sinks as deep as
     // its deepest reported contact (every pair that sinks is one), else as deep as none
-    const uint32_t reported = reported_ ? bodies_unmoved(reported_pose_, pose_) : 0u;
+    const uint32_t reported = bodies_as_reported();
     std::array<double, kBodyCount> reported_gaps{};
     if (reported != 0)
       for (const SolverContact& c : contacts_)
@@ -552,7 +552,7 @@ void HandSolver::report_contacts() {
   // contacts: held, a grasp's resting fingers measured theirs again every step.
   std::swap(contacts_, last_contacts_);
   contacts_.clear();
-  const uint32_t unmoved = reported_ ? bodies_unmoved(reported_pose_, pose_) : 0u;
+  const uint32_t unmoved = bodies_as_reported();
   size_t last = 0;  // where the body's run of the last report begins (they are by body)
   for (int body = 0; body < kBodyCount; ++body) {
     const size_t first = contacts_.size();

@@ -127,6 +127,11 @@ class HandSolver {
   template <class MakeStage>
   StageStats solve_within_budget(MakeStage make, bool budget_binds, bool& slid);
   void report_contacts();
+  // The bodies (bit b: body b) where the last report found them, among the same objects:
+  // their contacts, and so how deep they sink, are that report's.
+  uint32_t bodies_as_reported() const {
+    return reported_ ? bodies_unmoved(reported_pose_, pose_) : 0u;
+  }
   // report_contacts for one body: its candidates within `within` of it (by `view`), each
   // measured by `measure`
   template <class View, class Measure>
@@ -170,8 +175,8 @@ class HandSolver {
   QpHints palm_hints_;
   std::vector<SolverContact> contacts_;
   // the report before (report_contacts' scratch), where the hand stood for the last
-  // report and how far each body looked; reported_: among the objects as they still are.
-  // A body still where it stood has the contacts reported, and sinks as deep as they do.
+  // report and how far each body looked; reported_: among the objects as they still are
+  // (bodies_as_reported)
   std::vector<SolverContact> last_contacts_;
   HandPose reported_pose_;
   std::array<double, kBodyCount> reported_within_{};
