@@ -331,13 +331,9 @@ TEST(HandSolver, TheGraphicPoseIsTheGraphicStatesKinematicsEveryStep) {
   EXPECT_GT(steps, 1000);
 }
 
-// The contacts a step reports are every pair within the contact distance of the hand
-// where it ended, as a fresh detection there finds them: whatever the sub-steps kept of
-// what they detected (a finger that settled in an earlier sub-step is not looked for
-// again) must hold them all.
-// The contacts of the hand at `pose`, each pair within the contact distance found afresh
-// (body, object, leaf, palm sphere), sorted; the solver's report the same way
-// (reported_pairs). Each object point is checked against the one measured afresh.
+// The contacts of the solver's graphic hand, each pair within its contact distance found
+// afresh (body, object, leaf, palm sphere), sorted; the solver's report the same way
+// (reported_pairs). Each reported object point is checked against the one measured afresh.
 using ContactPair = std::array<int32_t, 4>;
 std::vector<ContactPair> fresh_contacts(const HandSolver& solver, const SolverObject* objects,
                                         int32_t count) {
@@ -383,8 +379,12 @@ std::vector<ContactPair> reported_pairs(const HandSolver& solver) {
   return reported;
 }
 
-// Every scenario's steps, the scene vouched for as still (objects_as_before) or not: a
-// body that has not moved since the last step reports its contacts again then.
+// The contacts a step reports are every pair within the contact distance of the hand
+// where it ended, as a fresh detection there finds them: whatever the sub-steps kept of
+// what they detected (a finger that settled in an earlier sub-step is not looked for
+// again) must hold them all. Every scenario's steps, the scene vouched for as still
+// (objects_as_before) or not: a body that has not moved since the last report reports
+// its contacts again then.
 TEST(HandSolver, TheContactsAStepReportsAreEveryPairWithinTheContactDistance) {
   const SolverParams params;
   int contacts = 0;
@@ -409,9 +409,10 @@ TEST(HandSolver, TheContactsAStepReportsAreEveryPairWithinTheContactDistance) {
 }
 
 // A still finger reports its contacts again only among the objects as they were: a box
-// slides along its face under an index fingertip that hovers a millimetre off it (within
-// a contact distance of 1.5 mm, aimed where it is), the caller saying the objects
-// changed, and the fingertip, which does not move, is near other leaves at other points.
+// slides 2.3 mm along its face under an index finger that hovers off it (the box 2.2 mm
+// from the open fingertip, within a contact distance of 1.9 mm, the hand aimed where it
+// is), the caller saying the objects changed, and the finger, which does not move, is
+// near other leaves at other points.
 TEST(HandSolver, AStillBodyNearAMovedObjectMeasuresItsContactsAgain) {
   const HandModel model = default_model();
   const auto box = scenes::test_box("press_box");
