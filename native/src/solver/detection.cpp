@@ -284,7 +284,7 @@ void detect_candidates(const HandModel& model, const HandReach& reach, const Han
       out.near_objects.push_back(o);
   }
 
-  auto add_hits = [&](int32_t object, int32_t count, const SegmentFrame& body) {
+  auto add_hits = [&](int32_t object, int32_t count, const SegmentFrame& body, double margin) {
     const SolverObject& obj = objects[object];
     auto candidate = [&](int32_t h) {
       const TreeHit& hit = out.hits[static_cast<size_t>(h)];
@@ -297,18 +297,22 @@ void detect_candidates(const HandModel& model, const HandReach& reach, const Han
                        {obj.pose.rotation * local.center + obj.pose.position, local.radius},
                        {}};
     };
-    // bounded two at a time (gap_bounds_of)
+    // bounded two at a time (gap_bounds_of); a hit the loose walk kept whose bounds rule
+    // it out lies beyond the margin: left out, as the exact walk left it
+    auto keep = [&](const Candidate& c) {
+      if (may_be_within(c.gap, 0.0, margin)) out.sorting.push_back(c);
+    };
     int32_t h = 0;
     for (; h + 1 < count; h += 2) {
       Candidate a = candidate(h), b = candidate(h + 1);
       gap_bounds(body, a.world, b.world, a.gap, b.gap);
-      out.sorting.push_back(a);
-      out.sorting.push_back(b);
+      keep(a);
+      keep(b);
     }
     if (h < count) {
       Candidate a = candidate(h);
       a.gap = gap_bounds(body, a.world);
-      out.sorting.push_back(a);
+      keep(a);
     }
   };
 
@@ -332,11 +336,12 @@ void detect_candidates(const HandModel& model, const HandReach& reach, const Han
         if (!bounds_meet(finger_bound, object_bound(obj), margin)) continue;
         const SegmentFrame frame = make_segment_frame(to_object_frame(obj.pose, segment));
         const int32_t count = query_into(out.hits, [&](TreeHit* hits, int32_t capacity) {
-          const TreeQueryStats stats = query_segment(*obj.tree, frame, margin, cut, hits, capacity);
+          const TreeQueryStats stats =
+              query_segment_loose(*obj.tree, frame, margin, cut, hits, capacity);
           out.tree_nodes_visited += stats.visited;
           return stats;
         });
-        add_hits(o, count, world);
+        add_hits(o, count, world, margin);
       }
       append_by_gap(out, body, margin);
     }

@@ -79,14 +79,15 @@ unsigned children_near(const WideSegmentTest& test, const std::vector<TreeNode>&
 // walk_tree with may_touch, for less: the children of a node culled four at a time in
 // single precision (which keeps every one may_touch keeps, and a few more), by their
 // spheres and, under a cut, what stands out of them below (node_overhang: conservative
-// for a child the cut stops at, which is tested as itself); every node the walk may
-// report, a leaf or where the cut stops it, then tested exactly. Where the children are
-// leaves (where most hits are made) each is tested exactly at once, as walk_tree does:
-// culling them first made the 10^5-leaf grasp's walks, which keep most of the leaves
-// they test, slower. A leaf among inner children is culled by its node's sphere, which
-// bounds it (the builder's rounding, the loader's check). The same hits in the same
-// order as walk_tree.
-template <bool kCuts>
+// for a child the cut stops at, which is tested as itself). With kExact every node the
+// walk may report, a leaf or where the cut stops it, is then tested exactly: the same
+// hits in the same order as walk_tree. Where the children are leaves (where most hits
+// are made) each is then tested exactly at once, as walk_tree does: culling them first
+// made the 10^5-leaf grasp's walks, which keep most of the leaves they test, slower.
+// Without kExact the culling is the whole test (query_segment_loose). A leaf among inner
+// children is culled by its node's sphere, which bounds it (the builder's rounding, the
+// loader's check).
+template <bool kCuts, bool kExact>
 TreeQueryStats walk_segment(const SphereTree& tree, const SegmentFrame& frame, double margin,
                             TreeCut cut, BufferHits& out) {
   TreeQueryStats stats;
@@ -118,7 +119,7 @@ TreeQueryStats walk_segment(const SphereTree& tree, const SegmentFrame& frame, d
     }
     stats.visited += n.count;
     // pushed last-first so they pop in array order
-    if (tree.nodes[static_cast<size_t>(n.first)].count == 0) {
+    if (kExact && tree.nodes[static_cast<size_t>(n.first)].count == 0) {
       for (int32_t c = n.first + n.count - 1; c >= n.first; --c)
         if (exact(c, stops(c, level + 1))) push(c, level + 1);
       continue;
@@ -128,7 +129,8 @@ TreeQueryStats walk_segment(const SphereTree& tree, const SegmentFrame& frame, d
       kept &= ~(1u << k);
       const int32_t child = n.first + k;
       const bool stopping = stops(child, level + 1);
-      if ((stopping || tree.nodes[static_cast<size_t>(child)].count == 0) && !exact(child, stopping))
+      if (kExact && (stopping || tree.nodes[static_cast<size_t>(child)].count == 0) &&
+          !exact(child, stopping))
         continue;
       push(child, level + 1);
     }
@@ -136,15 +138,26 @@ TreeQueryStats walk_segment(const SphereTree& tree, const SegmentFrame& frame, d
   return stats;
 }
 
-}  // namespace
-
-TreeQueryStats query_segment(const SphereTree& tree, const SegmentFrame& frame, double margin,
+template <bool kExact>
+TreeQueryStats segment_query(const SphereTree& tree, const SegmentFrame& frame, double margin,
                              TreeCut cut, TreeHit* hits, int32_t capacity) {
   BufferHits out{hits, capacity};
   if (tree.empty()) return {};
   assert(!cut.cuts() || tree.node_overhang.size() == tree.nodes.size());  // built or loaded
-  return cut.cuts() ? walk_segment<true>(tree, frame, margin, cut, out)
-                    : walk_segment<false>(tree, frame, margin, cut, out);
+  return cut.cuts() ? walk_segment<true, kExact>(tree, frame, margin, cut, out)
+                    : walk_segment<false, kExact>(tree, frame, margin, cut, out);
+}
+
+}  // namespace
+
+TreeQueryStats query_segment(const SphereTree& tree, const SegmentFrame& frame, double margin,
+                             TreeCut cut, TreeHit* hits, int32_t capacity) {
+  return segment_query<true>(tree, frame, margin, cut, hits, capacity);
+}
+
+TreeQueryStats query_segment_loose(const SphereTree& tree, const SegmentFrame& frame, double margin,
+                                   TreeCut cut, TreeHit* hits, int32_t capacity) {
+  return segment_query<false>(tree, frame, margin, cut, hits, capacity);
 }
 
 TreeQueryStats query_sphere(const SphereTree& tree, const Sphere& sphere, double margin,

@@ -75,7 +75,8 @@ TEST(SphereTree, SegmentQueryEqualsBruteForceScan) {
 
 // query_segment culls a node's children in single precision and tests exactly each node
 // it may report: it must find what walk_tree testing every node with may_touch finds, hit
-// for hit and in the same order, on random trees (far from the origin too, where single
+// for hit and in the same order (query_segment_loose, which stops at the culling, at least
+// that), on random trees (far from the origin too, where single
 // precision is coarse), margins and cuts (to the leaves, at a level, by an error budget),
 // with segments that graze a leaf at the margin.
 TEST(SphereTree, SegmentQueryMatchesTheExactWalkHitForHit) {
@@ -83,7 +84,7 @@ TEST(SphereTree, SegmentQueryMatchesTheExactWalkHitForHit) {
   std::uniform_real_distribution<double> u(-0.12, 0.12), r(0.0, 0.015), margin(0.0, 0.01);
   std::normal_distribution<double> g;
   std::vector<TreeHit> hits(20000);
-  long compared = 0, grazing = 0, cut_hits = 0;
+  long compared = 0, grazing = 0, cut_hits = 0, loose_extra = 0;
   for (int trial = 0; trial < 200; ++trial) {
     std::vector<Sphere> leaves =
         testing::random_leaves(rng, 1 + static_cast<int>(rng() % 3000), trial % 4);
@@ -116,11 +117,40 @@ TEST(SphereTree, SegmentQueryMatchesTheExactWalkHitForHit) {
         ASSERT_EQ(hits[i].leaf, exact[i].leaf);
       }
       compared += stats.hits;
+      // the loose query: every exact hit in the same order, and the others within its
+      // single-precision slack of the margin (a node the cut stops at, within its overhang)
+      std::vector<TreeHit> loose(20000);
+      const TreeQueryStats loose_stats =
+          query_segment_loose(tree, frame, m, cut, loose.data(), 20000);
+      ASSERT_LE(loose_stats.hits, 20000);
+      size_t next = 0;
+      for (int32_t i = 0; i < loose_stats.hits; ++i) {
+        const TreeHit& h = loose[static_cast<size_t>(i)];
+        if (next < exact.size() && h.node == exact[next].node) {
+          ASSERT_EQ(h.leaf, exact[next].leaf);
+          ++next;
+          continue;
+        }
+        Sphere s = walked_sphere(tree, h.node, h.leaf < 0, cut);
+        if (h.leaf < 0)
+          s.radius += static_cast<double>(tree.node_overhang[static_cast<size_t>(h.node)]);
+        // the sizes its rounding is relative to (1-norms, as the test's own): the sphere's
+        // and the segment's, from the origin; its slack is 2^-17 of them
+        auto norm1 = [](const vec3& v) { return std::fabs(v.x) + std::fabs(v.y) + std::fabs(v.z); };
+        const double scale =
+            norm1(s.center - frame.distal) + norm1(frame.distal) + frame.size + s.radius + m;
+        EXPECT_TRUE(may_touch(frame, s, m + 2e-5 * scale))
+            << "trial " << trial << " query " << q << " hit " << i;
+        ++loose_extra;
+      }
+      ASSERT_EQ(next, exact.size())
+          << "trial " << trial << " query " << q << ": an exact hit is missing";
     }
   }
   EXPECT_GT(compared, 100000);
   EXPECT_GT(grazing, 1000);
   EXPECT_GT(cut_hits, 10000);  // inner nodes reported where a cut stopped
+  EXPECT_LT(loose_extra, compared / 10);  // the loose query keeps few more
 }
 
 TEST(SphereTree, SphereQueryEqualsBruteForceScan) {
