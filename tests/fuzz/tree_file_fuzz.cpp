@@ -81,5 +81,16 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (all.hits != static_cast<int32_t>(t.leaves.size())) std::abort();  // each leaf once
   frusta::query_sphere(t, t.leaves.back(), 1e-3, frusta::TreeCut(1, 1e-2), hits.data(), capacity);
   frusta::distance_to_leaves(t, t.leaves[0].center);
+  // a segment from the first leaf to the last: the loose walk (detection's) makes every
+  // hit of the exact one, in its order, which holds only where each leaf's node bounds it
+  const frusta::SegmentFrame frame =
+      frusta::make_segment_frame({t.leaves[0].center, t.leaves.back().center, 0.01, 0.005});
+  std::vector<frusta::TreeHit> loose(hits.size());
+  const int32_t exact = frusta::query_segment(t, frame, 1e-3, {}, hits.data(), capacity).hits;
+  const int32_t kept = frusta::query_segment_loose(t, frame, 1e-3, {}, loose.data(), capacity).hits;
+  int32_t next = 0;
+  for (int32_t k = 0; k < kept && next < exact; ++k)
+    if (loose[static_cast<size_t>(k)].node == hits[static_cast<size_t>(next)].node) ++next;
+  if (next != exact) std::abort();
   return 0;
 }
