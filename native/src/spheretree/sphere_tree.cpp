@@ -45,30 +45,42 @@ static_assert(offsetof(TreeNode, center) == 0 && offsetof(TreeNode, radius) == 1
               "a node's sphere is its first 16 bytes");
 
 // The children [first, first + count) of a node that `test` keeps: bit k for child k.
-// `overhang` (null: none) is added to each child's radius: what stands out of it below.
-unsigned children_near(const WideSegmentTest& test, const std::vector<TreeNode>& nodes,
-                       const float* overhang, int32_t first, int32_t count) {
+// kOverhang: each child's radius grows by what stands out of it below (node_overhang).
+template <bool kOverhang>
+unsigned children_near(const WideSegmentTest& test, const SphereTree& tree, int32_t first,
+                       int32_t count) {
   unsigned kept = 0;
 #if defined(__GNUC__)
+  const TreeNode* nodes = tree.nodes.data();
+  const size_t size = tree.nodes.size();
   for (int32_t k = 0; k < count; k += 4) {
     // four nodes' spheres, read whole (past the last child too where the array goes on:
-    // those lanes are dropped below) and turned into a register per coordinate
-    Floats4 sphere[4] = {}, extra = {};
-    for (int32_t i = 0; i < 4; ++i) {
-      const size_t node = static_cast<size_t>(first + k + i);
-      if (node >= nodes.size()) continue;
-      std::memcpy(&sphere[i], reinterpret_cast<const char*>(&nodes[node]), sizeof(Floats4));
-      if (overhang != nullptr) extra[i] = overhang[node];
+    // those lanes are dropped below) and turned into a register per coordinate; the
+    // array's end checked once for the four, not lane by lane (a tenth of the culling)
+    const size_t at = static_cast<size_t>(first + k);
+    Floats4 sphere[4];
+    Floats4 extra = {};
+    if (at + 4 <= size) {
+      for (int32_t i = 0; i < 4; ++i)
+        std::memcpy(&sphere[i], &nodes[at + static_cast<size_t>(i)], sizeof(Floats4));
+      if constexpr (kOverhang) std::memcpy(&extra, &tree.node_overhang[at], sizeof(Floats4));
+    } else {
+      for (int32_t i = 0; i < 4; ++i) {
+        sphere[i] = Floats4{};
+        if (at + static_cast<size_t>(i) >= size) continue;
+        std::memcpy(&sphere[i], &nodes[at + static_cast<size_t>(i)], sizeof(Floats4));
+        if constexpr (kOverhang) extra[i] = tree.node_overhang[at + static_cast<size_t>(i)];
+      }
     }
     Floats4 x, y, z, radius;
     transpose(sphere, x, y, z, radius);
-    kept |= lane_bits(test(x, y, z, radius + extra)) << k;
+    kept |= lane_bits(test(x, y, z, kOverhang ? radius + extra : radius)) << k;
   }
 #else
   for (int32_t k = 0; k < count; ++k) {
     const size_t node = static_cast<size_t>(first + k);
-    const TreeNode& n = nodes[node];
-    const float radius = n.radius + (overhang != nullptr ? overhang[node] : 0.0f);
+    const TreeNode& n = tree.nodes[node];
+    const float radius = n.radius + (kOverhang ? tree.node_overhang[node] : 0.0f);
     kept |= static_cast<unsigned>(test(n.center[0], n.center[1], n.center[2], radius) != 0) << k;
   }
 #endif
@@ -107,7 +119,6 @@ TreeQueryStats walk_segment(const SphereTree& tree, const SegmentFrame& frame, d
   ++stats.visited;
   if (exact(0, stops(0, 0))) push(0, 0);
   const WideSegmentTest test(frame, margin);
-  const float* overhang = kCuts ? tree.node_overhang.data() : nullptr;
   while (top > 0) {
     const int32_t node = stack[--top];
     const int32_t level = kCuts ? levels[top] : 0;
@@ -124,7 +135,7 @@ TreeQueryStats walk_segment(const SphereTree& tree, const SegmentFrame& frame, d
         if (exact(c, stops(c, level + 1))) push(c, level + 1);
       continue;
     }
-    for (unsigned kept = children_near(test, tree.nodes, overhang, n.first, n.count); kept != 0;) {
+    for (unsigned kept = children_near<kCuts>(test, tree, n.first, n.count); kept != 0;) {
       const int k = highest_bit(kept);
       kept &= ~(1u << k);
       const int32_t child = n.first + k;
