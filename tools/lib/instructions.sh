@@ -25,7 +25,7 @@ stage_profile() {
       n = $1; gsub(",", "", n); line = $0
       if (line ~ /:frusta::HandSolver::step\(/) add("step", n)
       else if (line ~ /:frusta::CandidateCache::detect\(/) add("detection", n)
-      else if (line ~ /:frusta::query_segment\(|namespace\)::detect_palm\(/) add("tree_walks", n)
+      else if (line ~ /:frusta::query_segment(_loose)?\(|namespace\)::detect_palm\(/) add("tree_walks", n)
       else if (line ~ /frusta::solve_stage<frusta::PalmStage>/) add("palm_stages", n)
       else if (line ~ /frusta::solve_stage<frusta::FingerStage>/) add("finger_stages", n)
       else if (line ~ /:frusta::FingerStage::linearise\(/) add("finger_linearise", n)

@@ -27,6 +27,9 @@ for name in ("profile_every_step", "profile_steps_at_or_above_p99"):
     check(p["report_contacts"] + p["detection"] + p["finger_stages"] + p["palm_stages"] <= p["step"],
           f"{name}: stages within steps")
 every, tail = d["profile_every_step"], d["profile_steps_at_or_above_p99"]
+# the finger segments' walks are counted (a third of the detection here; a renamed walk
+# once dropped out of the profile, leaving the palm's, a four-hundredth)
+check(every["tree_walks"] >= 0.1 * every["detection"], "the segments' walks counted")
 check(tail["steps"] >= 5, "the steps at or above the p99 of 500")
 check(all(tail[k] <= every[k] for k in every), "the costliest steps within every step")
 # the same steps, counted one by one and in one dump: only the counting's own requests differ
