@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 // may_touch for a node's children at once, in single precision: a tree walk culls with
-// it and leaves the exact test to the nodes it reports (query_segment). It holds wherever may_touch
-// holds (its slack is a hundred times what single precision rounds), and may hold a hair
-// beyond. The closing grasp's segment walks, 2.5 mm margins: 10^4 leaves 4.68 -> 3.55 us,
-// 10^5 leaves 24.6 -> 22.1 us, the same hits.
+// it and leaves the exact test to the nodes it reports (query_segment), or to its caller
+// (query_segment_loose). It holds wherever may_touch holds (its slack is a hundred times
+// what single precision rounds), and may hold a hair beyond. The closing grasp's segment
+// walks, 2.5 mm margins: 10^4 leaves 4.68 -> 3.55 us, 10^5 leaves 24.6 -> 22.1 us, the
+// same hits.
 #pragma once
 
 #include <cmath>

@@ -298,7 +298,8 @@ void detect_candidates(const HandModel& model, const HandReach& reach, const Han
                        {}};
     };
     // bounded two at a time (gap_bounds_of); a hit the loose walk kept whose bounds rule
-    // it out lies beyond the margin: left out, as the exact walk left it
+    // it out lies beyond the margin and is left out: what is kept is what the exact walk
+    // kept, up to spheres within rounding of the margin
     auto keep = [&](const Candidate& c) {
       if (may_be_within(c.gap, 0.0, margin)) out.sorting.push_back(c);
     };
