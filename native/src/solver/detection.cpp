@@ -122,7 +122,8 @@ void append_by_gap(CandidateSet& out, int body, double margin) {
   auto bucket = [&](double least) {
     if (!(least >= 0.0)) return 0;
     if (!(width > 0.0)) return kBuckets - 1;
-    const int k = static_cast<int>(std::min(std::floor(least / width), kBuckets - 2.0));
+    // truncation is the floor of a quotient >= 0 (std::floor is a call without SSE4.1)
+    const int k = static_cast<int>(std::min(least / width, kBuckets - 2.0));
     return k * width > least ? k : k + 1;  // the bucket's floor, (b - 1) * width, <= least
   };
   int32_t start[kBuckets + 1] = {};
