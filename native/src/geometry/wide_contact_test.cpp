@@ -1,28 +1,38 @@
 // SPDX-License-Identifier: MIT
 #include "geometry/wide_contact_test.h"
 
+#include <cmath>
+
 namespace frusta {
 
+namespace {
+WideConstants<float> single_precision(const SegmentFrame& frame, double margin) {
+  auto f = [](double v) { return static_cast<float>(v); };
+  return {f(frame.distal.x), f(frame.distal.y), f(frame.distal.z), f(frame.proximal.x),
+          f(frame.proximal.y), f(frame.proximal.z), f(frame.axis.x), f(frame.axis.y),
+          f(frame.axis.z), f(frame.length), f(frame.r_distal), f(frame.r_proximal), f(frame.slope),
+          f(frame.sec_alpha), f(frame.sin_alpha), f(margin),
+          // the frame's coordinates round to single precision relative to their size
+          f(frame.size + margin + std::fabs(frame.distal.x) + std::fabs(frame.distal.y) +
+            std::fabs(frame.distal.z))};
+}
+
+#if defined(__GNUC__)
+WideConstants<Floats4> in_every_lane(const WideConstants<float>& c) {
+  auto l = [](float v) { return Floats4{v, v, v, v}; };
+  return {l(c.ex),    l(c.ey),        l(c.ez),        l(c.px),     l(c.py),       l(c.pz),
+          l(c.ax),    l(c.ay),        l(c.az),        l(c.length), l(c.r_distal), l(c.r_proximal),
+          l(c.slope), l(c.sec_alpha), l(c.sin_alpha), l(c.margin), l(c.base)};
+}
+#endif
+}  // namespace
+
 WideSegmentTest::WideSegmentTest(const SegmentFrame& frame, double margin_metres)
-    : ex(static_cast<float>(frame.distal.x)),
-      ey(static_cast<float>(frame.distal.y)),
-      ez(static_cast<float>(frame.distal.z)),
-      px(static_cast<float>(frame.proximal.x)),
-      py(static_cast<float>(frame.proximal.y)),
-      pz(static_cast<float>(frame.proximal.z)),
-      ax(static_cast<float>(frame.axis.x)),
-      ay(static_cast<float>(frame.axis.y)),
-      az(static_cast<float>(frame.axis.z)),
-      length(static_cast<float>(frame.length)),
-      r_distal(static_cast<float>(frame.r_distal)),
-      r_proximal(static_cast<float>(frame.r_proximal)),
-      slope(static_cast<float>(frame.slope)),
-      sec_alpha(static_cast<float>(frame.sec_alpha)),
-      sin_alpha(static_cast<float>(frame.sin_alpha)),
-      margin(static_cast<float>(margin_metres)),
-      // the frame's coordinates round to single precision relative to their size
-      base(static_cast<float>(frame.size + margin_metres + std::fabs(frame.distal.x) +
-                              std::fabs(frame.distal.y) + std::fabs(frame.distal.z))),
-      side(!frame.degenerate) {}
+    : single(single_precision(frame, margin_metres)),
+#if defined(__GNUC__)
+      lanes(in_every_lane(single)),
+#endif
+      side(!frame.degenerate) {
+}
 
 }  // namespace frusta

@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 
 #include "geometry/segment_frame.h"
 
@@ -52,15 +53,26 @@ inline unsigned lane_bits(Mask4 mask) {
 }
 #endif
 
-// A segment, a margin and the rounding slack, as single-precision constants.
+// A segment, a margin and the rounding slack, as single-precision constants: one of each
+// (L = float), or each held in every lane (L = Floats4).
+template <class L>
+struct WideConstants {
+  L ex, ey, ez;  // E, the distal centre
+  L px, py, pz;  // D, the proximal centre
+  L ax, ay, az;  // the unit axis from E towards D
+  L length, r_distal, r_proximal, slope, sec_alpha, sin_alpha;
+  L margin;
+  L base;  // what every test's rounding scale holds besides the sphere's own sizes
+};
+
 struct WideSegmentTest {
-  float ex, ey, ez;  // E, the distal centre
-  float px, py, pz;  // D, the proximal centre
-  float ax, ay, az;  // the unit axis from E towards D
-  float length, r_distal, r_proximal, slope, sec_alpha, sin_alpha;
-  float margin;
-  float base;  // what every test's rounding scale holds besides the sphere's own sizes
-  bool side;   // the side is tested (the segment is not degenerate)
+  WideConstants<float> single;
+#if defined(__GNUC__)
+  // the same in every lane, which a test of four reads as they are: it had broadcast each
+  // from `single` per four spheres, a fifth of a walk's culling
+  WideConstants<Floats4> lanes;
+#endif
+  bool side;  // the side is tested (the segment is not degenerate)
 
   WideSegmentTest(const SegmentFrame& frame, double margin_metres);
 
@@ -84,18 +96,26 @@ inline Floats4 magnitude(Floats4 v) {
 template <class F>
 auto WideSegmentTest::operator()(F cx, F cy, F cz, F radius) const {
   using wide_detail::magnitude;
-  const F wx = cx - ex, wy = cy - ey, wz = cz - ez;
-  const F scale = magnitude(wx) + magnitude(wy) + magnitude(wz) + radius + base;
-  const F reach = radius + margin + wide_detail::kSlack * scale;
-  const F l2 = reach + r_distal, l1 = reach + r_proximal;
-  const F dx = cx - px, dy = cy - py, dz = cz - pz;
+  const WideConstants<F>* constants;
+#if defined(__GNUC__)
+  if constexpr (std::is_same_v<F, Floats4>)
+    constants = &lanes;
+  else
+#endif
+    constants = &single;
+  const WideConstants<F>& k = *constants;
+  const F wx = cx - k.ex, wy = cy - k.ey, wz = cz - k.ez;
+  const F scale = magnitude(wx) + magnitude(wy) + magnitude(wz) + radius + k.base;
+  const F reach = radius + k.margin + wide_detail::kSlack * scale;
+  const F l2 = reach + k.r_distal, l1 = reach + k.r_proximal;
+  const F dx = cx - k.px, dy = cy - k.py, dz = cz - k.pz;
   auto near_ends = (wx * wx + wy * wy + wz * wz <= l2 * l2) | (dx * dx + dy * dy + dz * dz <= l1 * l1);
   if (!side) return near_ends;
-  const F axial = wx * ax + wy * ay + wz * az;
-  const F shift = reach * sin_alpha;
-  const F threshold = reach * sec_alpha + r_distal + axial * slope;
-  const F qx = wx - axial * ax, qy = wy - axial * ay, qz = wz - axial * az;
-  return near_ends | ((axial >= -shift) & (axial <= length - shift) & (threshold >= 0.0f) &
+  const F axial = wx * k.ax + wy * k.ay + wz * k.az;
+  const F shift = reach * k.sin_alpha;
+  const F threshold = reach * k.sec_alpha + k.r_distal + axial * k.slope;
+  const F qx = wx - axial * k.ax, qy = wy - axial * k.ay, qz = wz - axial * k.az;
+  return near_ends | ((axial >= -shift) & (axial <= k.length - shift) & (threshold >= 0.0f) &
                       (qx * qx + qy * qy + qz * qz <= threshold * threshold));
 }
 
