@@ -5,10 +5,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <glm/geometric.hpp>
 #include <random>
 #include <tuple>
 #include <vector>
+
+#include <glm/geometric.hpp>
 
 #include "bake/baker.h"
 #include "core/error.h"

@@ -237,8 +237,8 @@ TreeQueryStats query_segment(const SphereTree& tree, const SegmentFrame& frame, 
 // The same, its hits tested in single precision only: every node query_segment reports,
 // in its order, and perhaps some beyond the margin (by a few parts in 10^5 of the sizes
 // tested, a node the cut stops at by its node_overhang too), for a caller that measures
-// each hit anyway. A closing grasp's walks reported few more, and the exact test of each
-// leaf was a third of their time.
+// each hit anyway. A fingertip's walks into a shell: 11 % (10^4 leaves) to 22 % (10^5)
+// faster, about one hit in 3,000 more (bench spheretree).
 TreeQueryStats query_segment_loose(const SphereTree& tree, const SegmentFrame& frame, double margin,
                                    TreeCut cut, TreeHit* hits, int32_t capacity);
 
