@@ -9,7 +9,6 @@
 
 #include <cmath>
 #include <cstdint>
-#include <type_traits>
 
 #include "geometry/segment_frame.h"
 
@@ -79,6 +78,13 @@ struct WideSegmentTest {
   // The test for one sphere, or (F = Floats4) four: the same expressions lane by lane.
   template <class F>
   auto operator()(F cx, F cy, F cz, F radius) const;
+
+ private:
+  // the constants a test of F reads
+  const WideConstants<float>& constants(float) const { return single; }
+#if defined(__GNUC__)
+  const WideConstants<Floats4>& constants(Floats4) const { return lanes; }
+#endif
 };
 
 namespace wide_detail {
@@ -96,14 +102,7 @@ inline Floats4 magnitude(Floats4 v) {
 template <class F>
 auto WideSegmentTest::operator()(F cx, F cy, F cz, F radius) const {
   using wide_detail::magnitude;
-  const WideConstants<F>* constants;
-#if defined(__GNUC__)
-  if constexpr (std::is_same_v<F, Floats4>)
-    constants = &lanes;
-  else
-#endif
-    constants = &single;
-  const WideConstants<F>& k = *constants;
+  const WideConstants<F>& k = constants(cx);
   const F wx = cx - k.ex, wy = cy - k.ey, wz = cz - k.ez;
   const F scale = magnitude(wx) + magnitude(wy) + magnitude(wz) + radius + k.base;
   const F reach = radius + k.margin + wide_detail::kSlack * scale;

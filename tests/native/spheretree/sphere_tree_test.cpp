@@ -75,15 +75,15 @@ TEST(SphereTree, SegmentQueryEqualsBruteForceScan) {
 
 // query_segment culls a node's children in single precision and tests exactly each node
 // it may report: it must find what walk_tree testing every node with may_touch finds, hit
-// for hit and in the same order (query_segment_loose, which stops at the culling, at least
-// that), on random trees (far from the origin too, where single
-// precision is coarse), margins and cuts (to the leaves, at a level, by an error budget),
-// with segments that graze a leaf at the margin.
+// for hit and in the same order (query_segment_loose, which stops at the culling, at
+// least that), on random trees (far from the origin too, where single precision is
+// coarse), margins and cuts (to the leaves, at a level, by an error budget), with
+// segments that graze a leaf at the margin.
 TEST(SphereTree, SegmentQueryMatchesTheExactWalkHitForHit) {
   std::mt19937_64 rng(77);
   std::uniform_real_distribution<double> u(-0.12, 0.12), r(0.0, 0.015), margin(0.0, 0.01);
   std::normal_distribution<double> g;
-  std::vector<TreeHit> hits(20000);
+  std::vector<TreeHit> hits(20000), loose(20000);
   long compared = 0, grazing = 0, cut_hits = 0, loose_extra = 0;
   for (int trial = 0; trial < 200; ++trial) {
     std::vector<Sphere> leaves =
@@ -119,7 +119,6 @@ TEST(SphereTree, SegmentQueryMatchesTheExactWalkHitForHit) {
       compared += stats.hits;
       // the loose query: every exact hit in the same order, and the others within its
       // single-precision slack of the margin (a node the cut stops at, within its overhang)
-      std::vector<TreeHit> loose(20000);
       const TreeQueryStats loose_stats =
           query_segment_loose(tree, frame, m, cut, loose.data(), 20000);
       ASSERT_LE(loose_stats.hits, 20000);
