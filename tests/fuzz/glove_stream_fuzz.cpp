@@ -43,9 +43,13 @@ struct Events final : ProtocolSink {
     for (double a : s.angles)
       if (!(std::fabs(a) <= binary_profile::kMaxAngleCounts * binary_profile::kAngleUnit))
         std::abort();
+    // 1 km as the profile counts it: 10^8 counts of 10 um decode to 1 km and a rounding
+    // (the second finding, glove_seeds/)
     if (s.has_palm_pose) {
       for (int i = 0; i < 3; ++i)
-        if (!(std::fabs(s.palm_position[i]) <= 1e3)) std::abort();
+        if (!(std::fabs(s.palm_position[i]) <=
+              binary_profile::kMaxPositionCounts * binary_profile::kPositionUnit))
+          std::abort();
       const glm::dquat& q = s.palm_rotation;
       if (!(std::fabs(glm::length(q) - 1.0) <= 1e-9)) std::abort();
     }

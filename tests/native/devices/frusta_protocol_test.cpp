@@ -220,6 +220,28 @@ TEST(binaryProfile, ImpossibleValuesAreOutOfRangeNotSamples) {
   EXPECT_EQ(sink.corrupt + sink.truncated, 0);
 }
 
+// The palm's field reaches 1 km as it counts (10^8 counts of 10 um, a rounding over 1 km
+// in metres: the glove fuzzer's second finding), and no count further.
+TEST(binaryProfile, APalmAtTheFieldsEdgeIsASampleAndOneCountBeyondIsNot) {
+  Collect sink;
+  FrustaProtocol host;
+  std::vector<uint8_t> wire;
+  host.start(&wire);
+  wire.clear();
+  const double edge = bp::kMaxPositionCounts * bp::kPositionUnit;
+  DeviceSample at_edge;
+  at_edge.has_palm_pose = true;
+  at_edge.palm_position = vec3(edge, -edge, 0.0);
+  DeviceSample beyond = at_edge;
+  beyond.palm_position.z = -(bp::kMaxPositionCounts + 1) * bp::kPositionUnit;
+  bp::encode_sample(at_edge, 0, &wire);
+  bp::encode_sample(beyond, 1, &wire);
+  feed(host, wire, &sink);
+  ASSERT_EQ(sink.samples.size(), 1u);
+  EXPECT_EQ(sink.samples[0].palm_position, at_edge.palm_position);
+  EXPECT_EQ(sink.out_of_range, 1);
+}
+
 // A line that flips bits, cuts frames short and adds noise loses exactly the frames it
 // touched, reports each once, and never hands on a damaged one.
 TEST(binaryProfile, CorruptCutAndNoisyFramesAreDroppedAndTheRestKept) {
