@@ -88,6 +88,26 @@ unsigned children_near(const WideSegmentTest& test, const SphereTree& tree, int3
   return kept & ((1u << count) - 1u);
 }
 
+// Where every child of `parent` is a leaf, the kept ones (bit k: child k) reported at once,
+// in order, each written and counted by its bit: where most of a loose walk's hits are
+// made. False, reporting nothing, where a child is not a leaf or the buffer lacks room for
+// every child (the stack's way then reports them, counting those beyond the room).
+bool report_leaf_children(const SphereTree& tree, const TreeNode& parent, unsigned kept,
+                          BufferHits& out) {
+  const TreeNode* child = &tree.nodes[static_cast<size_t>(parent.first)];
+  int32_t inner = 0;
+  for (int32_t k = 0; k < parent.count; ++k) inner |= child[k].count;
+  if (inner != 0 || parent.count > out.capacity - out.count) return false;
+  TreeHit* to = out.hits + out.count;
+  int32_t reported = 0;
+  for (int32_t k = 0; k < parent.count; ++k) {
+    to[reported] = TreeHit{parent.first + k, child[k].first};
+    reported += static_cast<int32_t>((kept >> k) & 1u);
+  }
+  out.count += reported;
+  return true;
+}
+
 // walk_tree with may_touch, for less: the children of a node culled four at a time in
 // single precision (which keeps every one may_touch keeps, and a few more), by their
 // spheres and, under a cut, what stands out of them below (node_overhang: conservative
@@ -98,7 +118,10 @@ unsigned children_near(const WideSegmentTest& test, const SphereTree& tree, int3
 // made the 10^5-leaf grasp's walks, which keep most of the leaves they test, slower.
 // Without kExact the culling is the whole test (query_segment_loose). A leaf among inner
 // children is culled by its node's sphere, which bounds it (the builder's rounding, the
-// loader's check).
+// loader's check). Without kExact too, leaf children are reported as they are culled and
+// the others pushed, neither with a branch per kept child: a closing grasp's detection,
+// which had popped each leaf to report it and mispredicted on the kept bits, took 13 %
+// less (10^4 leaves; the same hits in the same order).
 template <bool kCuts, bool kExact>
 TreeQueryStats walk_segment(const SphereTree& tree, const SegmentFrame& frame, double margin,
                             TreeCut cut, BufferHits& out) {
@@ -135,7 +158,23 @@ TreeQueryStats walk_segment(const SphereTree& tree, const SegmentFrame& frame, d
         if (exact(c, stops(c, level + 1))) push(c, level + 1);
       continue;
     }
-    for (unsigned kept = children_near<kCuts>(test, tree, n.first, n.count); kept != 0;) {
+    const unsigned near = children_near<kCuts>(test, tree, n.first, n.count);
+    if constexpr (!kExact) {
+      const int32_t before = out.count;
+      if (report_leaf_children(tree, n, near, out)) {
+        stats.hits += out.count - before;
+        continue;
+      }
+      // every child written, and kept by its bit; the stack has room for a node's children
+      // above its ancestors' waiting siblings
+      for (int32_t c = n.first + n.count - 1; c >= n.first; --c) {
+        if constexpr (kCuts) levels[top] = level + 1;
+        stack[top] = c;
+        top += static_cast<int>((near >> (c - n.first)) & 1u);
+      }
+      continue;
+    }
+    for (unsigned kept = near; kept != 0;) {
       const int k = highest_bit(kept);
       kept &= ~(1u << k);
       const int32_t child = n.first + k;

@@ -200,17 +200,36 @@ TEST(SphereTree, LevelCutReportsInnerNodesThatBoundTheirLeaves) {
   for (int32_t i = 0; i < nodes_hit; ++i) EXPECT_EQ(cut[static_cast<size_t>(i)].leaf, -1);
 }
 
+// Both segment queries, into buffers of every size up to the whole answer: the first hits
+// of the whole answer, in its order, nothing written past the buffer, and every hit counted
+// (the loose walk reports a node's leaf children at once only where all of them fit).
 TEST(SphereTree, HitsBeyondCapacityAreCountedNotWritten) {
   std::mt19937_64 rng(3);
   const std::vector<Sphere> leaves = testing::random_leaves(rng, 1000, 0);
   SphereTree tree;
   ASSERT_EQ(build_sphere_tree(leaves, {4}, &tree), FRUSTA_OK);
-  TreeHit hits[5] = {};
-  hits[4] = {-7, -7};
   const SegmentFrame frame = make_segment_frame({vec3(-0.2, 0, 0), vec3(0.2, 0, 0), 0.05, 0.05});
-  const TreeQueryStats stats = query_segment(tree, frame, 0.0, -1, hits, 4);
-  EXPECT_GT(stats.hits, 4);
-  EXPECT_EQ(hits[4].node, -7);  // untouched past capacity
+  for (const bool loose : {false, true}) {
+    auto query = [&](TreeHit* hits, int32_t capacity) {
+      return loose ? query_segment_loose(tree, frame, 0.0, -1, hits, capacity)
+                   : query_segment(tree, frame, 0.0, -1, hits, capacity);
+    };
+    std::vector<TreeHit> whole(2000);
+    const int32_t all = query(whole.data(), 2000).hits;
+    ASSERT_GT(all, 20);
+    ASSERT_LT(all, 2000);
+    for (int32_t capacity = 0; capacity <= all; ++capacity) {
+      std::vector<TreeHit> hits(static_cast<size_t>(capacity) + 1, TreeHit{-7, -7});
+      EXPECT_EQ(query(hits.data(), capacity).hits, all) << loose << " " << capacity;
+      for (int32_t i = 0; i < capacity; ++i) {
+        ASSERT_EQ(hits[static_cast<size_t>(i)].node, whole[static_cast<size_t>(i)].node)
+            << loose << " " << capacity;
+        ASSERT_EQ(hits[static_cast<size_t>(i)].leaf, whole[static_cast<size_t>(i)].leaf);
+      }
+      EXPECT_EQ(hits[static_cast<size_t>(capacity)].node, -7)
+          << loose << " " << capacity;  // untouched
+    }
+  }
 }
 
 }  // namespace
