@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # tools/bench instructions on a small ball (the real bench binary under valgrind): one
-# JSON document whose per-step percentiles are in order, whose stages lie within what
-# holds them, and whose steps counted one by one add up to the whole run's count.
+# JSON document whose per-step percentiles (instructions, mispredicted branches) are in
+# order, whose stages lie within what holds them, and whose steps counted one by one add
+# up to the whole run's count.
 set -euo pipefail
 lib="$1"
 binary="$2"
@@ -18,6 +19,11 @@ check(d["suite"] == "instructions" and d["leaves"] == 100, "the suite and its ba
 check(d["steps"] == 500 and d["failed_steps"] == 0 and d["under_callgrind"], "every step ran, counted")
 s = d["ir_per_step"]
 check(0 < s["p50"] <= s["p90"] <= s["p99"] <= s["max"] <= s["total"], "percentiles in order")
+m = d["mispredicted_per_step"]
+check(0 < m["p50"] <= m["p90"] <= m["p99"] <= m["max"] <= m["total"] < s["total"],
+      "mispredicted branches' percentiles in order, fewer than the instructions")
+check(0 < d["profile_steps_at_or_above_p99"]["mispredicted"] <= m["total"],
+      "the costliest steps' mispredicted branches within every step's")
 for name in ("profile_every_step", "profile_steps_at_or_above_p99"):
     p = d[name]
     check(p["step"] > 0, f"{name}: steps counted")
