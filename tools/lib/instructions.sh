@@ -4,8 +4,9 @@
 # the work went by stage, over every step and over the steps at or above the p99. Beside
 # the instructions, the branches callgrind's branch predictor mispredicts, per step and
 # over those costliest steps: a count that a change trading predictable instructions for
-# mispredicted branches moves the other way (each costs some 15-20 cycles; a walk that
-# reported its leaves without a branch per child ran 12 % faster on 6 % more instructions).
+# mispredicted branches moves the other way (a walk that reported its leaves without a
+# branch per child ran 12 % faster on 6 % more instructions; what one costs depends on the
+# work behind it, so the time is still the measure).
 # Stages are inclusive counts of the functions that do them (stage_profile): the tree
 # walks are part of the detection, linearisations, QPs and trials part of the stages
 # (the QPs' count is the palm's and the fingers' together); the clearances are every
