@@ -15,9 +15,9 @@
 namespace frusta {
 
 FingerStage::FingerStage(const StageInputs& inputs, int finger, const FingerAngles& target,
-                         const FingerCap& cap, FingerBound bound, QpHints& hints, HandState& state,
-                         HandPose& pose, double start_gap)
-    : StageEstimate(state, pose, hints, finger),
+                         const FingerCap& cap, FingerBound bound, QpHints& hints,
+                         StagePoses& poses, HandState& state, HandPose& pose, double start_gap)
+    : StageEstimate(state, pose, hints, poses, finger),
       inputs_(inputs),
       finger_(finger),
       target_(target),

@@ -33,11 +33,11 @@ enum class FingerBound {
 class FingerStage : public StageEstimate {
  public:
   // state/pose: the graphic hand, updated in place; target: this stage's goal angles;
-  // cap: how far (m) any point may move from where the stage starts; start_gap:
-  // clearance(pose), which the caller has measured.
+  // cap: how far (m) any point may move from where the stage starts; poses: where it
+  // poses its trials (StagePoses); start_gap: clearance(pose), which the caller has measured.
   FingerStage(const StageInputs& inputs, int finger, const FingerAngles& target,
-              const FingerCap& cap, FingerBound bound, QpHints& hints, HandState& state,
-              HandPose& pose, double start_gap);
+              const FingerCap& cap, FingerBound bound, QpHints& hints, StagePoses& poses,
+              HandState& state, HandPose& pose, double start_gap);
 
   int dofs() const { return FRUSTA_JOINTS_PER_FINGER; }
   double objective() const;

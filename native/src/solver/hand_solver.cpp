@@ -483,7 +483,7 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects, i
       add(solve_within_budget(
           [&](bool slide) {
             return PalmStage(inputs, palm_to, cap, recovering ? PalmHeading{} : heading_, slide,
-                             palm_hints_, graphic_, pose_, deepest);
+                             palm_hints_, stage_poses_, graphic_, pose_, deepest);
           },
           budget_binds, slid));
       ++stats.palm_solves;
@@ -530,7 +530,8 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects, i
     const StageStats finger_stats = solve_within_budget(
         [&](bool slide) {
           return FingerStage(inputs, f, to, finger_cap, slide ? FingerBound::kSlide : bound,
-                             finger_hints_[static_cast<size_t>(f)], graphic_, pose_, start_gap);
+                             finger_hints_[static_cast<size_t>(f)], stage_poses_, graphic_, pose_,
+                             start_gap);
         },
         budget_binds, slid);
     add(finger_stats);

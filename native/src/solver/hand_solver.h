@@ -173,6 +173,7 @@ class HandSolver {
   // what each part's last QP ended with active: the next one's warm start (QpHints)
   std::array<QpHints, FRUSTA_FINGER_COUNT> finger_hints_{};
   QpHints palm_hints_;
+  StagePoses stage_poses_;  // the stages' trials, one stage at a time
   std::vector<SolverContact> contacts_;
   // the report before (report_contacts' scratch), where the hand stood for the last
   // report and how far each body looked; reported_: among the objects as they still are

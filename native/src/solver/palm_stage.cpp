@@ -50,9 +50,9 @@ void set_row(QpRow& row, const vec3& grad_translation, const vec3& grad_rotation
 }  // namespace
 
 PalmStage::PalmStage(const StageInputs& inputs, const PalmPlacement& target, double motion_cap,
-                     const PalmHeading& heading, bool slide, QpHints& hints, HandState& state,
-                     HandPose& pose, double start_gap)
-    : StageEstimate(state, pose, hints),
+                     const PalmHeading& heading, bool slide, QpHints& hints, StagePoses& poses,
+                     HandState& state, HandPose& pose, double start_gap)
+    : StageEstimate(state, pose, hints, poses),
       inputs_(inputs),
       target_(target),
       start_(placement(state)),

@@ -40,10 +40,11 @@ class PalmStage : public StageEstimate {
  public:
   // motion_cap: how far (m) any point may move from where the stage starts; heading: the
   // way it may not go back; slide: step within its bound's faces (the hand held back by its
-  // continuity budget); start_gap: clearance(pose), which the caller has measured
+  // continuity budget); poses: where it poses its trials (StagePoses); start_gap:
+  // clearance(pose), which the caller has measured
   PalmStage(const StageInputs& inputs, const PalmPlacement& target, double motion_cap,
-            const PalmHeading& heading, bool slide, QpHints& hints, HandState& state,
-            HandPose& pose, double start_gap);
+            const PalmHeading& heading, bool slide, QpHints& hints, StagePoses& poses,
+            HandState& state, HandPose& pose, double start_gap);
 
   int dofs() const { return 6; }
   double objective() const;

@@ -33,6 +33,14 @@ struct StageInputs {
   const CandidateSet& candidates;
 };
 
+// Where a stage poses its trials and keeps its last safe estimate: the caller's, kept
+// between stages, so that a finger's stage copies in the palm's and its finger's parts
+// only rather than two whole hands (1.9 KB each, 1.4 % of a closing step). One stage uses
+// them at a time.
+struct StagePoses {
+  HandPose trial, saved;
+};
+
 // What every stage keeps besides its problem: the graphic hand it updates in place, a
 // trial and the last estimate that sank no deeper than its floor (the Problem half
 // of solve_stage below). A finger's stage moves that finger alone: its poses differ from
@@ -41,16 +49,23 @@ struct StageInputs {
 class StageEstimate {
  public:
   // hints: what this part's QPs ended with active, kept from one to the next (QpHints);
-  // finger: the finger the stage moves, or -1 for the whole hand
-  StageEstimate(HandState& state, HandPose& pose, QpHints& hints, int finger = -1)
+  // poses: where it poses its trials; finger: the finger the stage moves, or -1 for the
+  // whole hand
+  StageEstimate(HandState& state, HandPose& pose, QpHints& hints, StagePoses& poses, int finger = -1)
       : state_(state),
         pose_(pose),
         trial_state_(state),
         saved_state_(state),
-        trial_pose_(pose),
-        saved_pose_(pose),
+        trial_pose_(poses.trial),
+        saved_pose_(poses.saved),
         hints_(hints),
-        finger_only_(finger) {}
+        finger_only_(finger) {
+    // a finger's trials read the palm's placement and write that finger alone
+    trial_pose_.palm_position = saved_pose_.palm_position = pose.palm_position;
+    trial_pose_.palm_rotation = saved_pose_.palm_rotation = pose.palm_rotation;
+    copy_pose(pose, trial_pose_);
+    copy_pose(pose, saved_pose_);
+  }
 
   double floor() const { return floor_; }
   QpHints& hints() { return hints_; }
@@ -74,7 +89,7 @@ class StageEstimate {
   HandState& state_;
   HandPose& pose_;
   HandState trial_state_, saved_state_;
-  HandPose trial_pose_, saved_pose_;
+  HandPose &trial_pose_, &saved_pose_;
   double floor_ = 0.0;    // a trial may not sink below this gap
   bool capped_ = false;   // some trial was refused for moving too far
   QpHints& hints_;

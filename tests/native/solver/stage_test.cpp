@@ -108,6 +108,7 @@ void check_scenario(const scenes::HandScenario& s, Tally& fingers, Tally& palm, 
     HandState state;
     HandPose pose;
     QpHints hints;
+    StagePoses poses;
     auto reset = [&] {
       state = solver.graphic();
       pose = solver.graphic_pose();
@@ -150,7 +151,7 @@ void check_scenario(const scenes::HandScenario& s, Tally& fingers, Tally& palm, 
         compare_radii(
             [&] {
               reset();
-              return FingerStage(inputs, f, to, {params.prediction_margin, params.prediction_margin}, bound, hints, state, pose,
+              return FingerStage(inputs, f, to, {params.prediction_margin, params.prediction_margin}, bound, hints, poses, state, pose,
                                  finger_clearance(model, pose, candidates, f));
             },
             trials_see_every_candidate, kept_by_every_candidate, rows, fingers, s.name.c_str(), t);
@@ -166,7 +167,7 @@ void check_scenario(const scenes::HandScenario& s, Tally& fingers, Tally& palm, 
             for (int body = 0; body < kBodyCount; ++body)
               start_gap = std::min(start_gap, body_clearance(model, pose, candidates, body));
             return PalmStage(inputs, to, 0.5 * params.prediction_margin, PalmHeading{}, slide,
-                             hints, state, pose, start_gap);
+                             hints, poses, state, pose, start_gap);
           },
           [](PalmStage&, const double*) {}, [](PalmStage&, const double*, double) {}, rows, palm,
           s.name.c_str(), t);
