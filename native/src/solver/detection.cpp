@@ -127,20 +127,22 @@ void append_by_gap(CandidateSet& out, int body, double margin) {
     return k * width > least ? k : k + 1;  // the bucket's floor, (b - 1) * width, <= least
   };
   int32_t start[kBuckets + 1] = {};
-  out.order.resize(static_cast<size_t>(count));
+  out.order.resize(static_cast<size_t>(2 * count));
+  int32_t* in_bucket = out.order.data();       // each found one's bucket
+  int32_t* in_order = out.order.data() + count;  // the found ones' indices, sorted
   for (int32_t i = 0; i < count; ++i) {
     const int b = bucket(found[static_cast<size_t>(i)].gap.least);
-    out.order[static_cast<size_t>(i)] = b;
+    in_bucket[i] = b;
     ++start[b + 1];
   }
   for (int b = 0; b < kBuckets; ++b) start[b + 1] += start[b];
-  out.candidates.resize(static_cast<size_t>(out.end[body]));
-  Candidate* c = out.candidates.data() + out.begin[body];
-  for (int32_t i = 0; i < count; ++i) {
-    const int b = out.order[static_cast<size_t>(i)];
-    Candidate& to = c[start[b]++];
-    to = found[static_cast<size_t>(i)];
-    to.gap.least = b == 0 ? lowest : (b - 1) * width;
+  for (int32_t i = 0; i < count; ++i) in_order[start[in_bucket[i]]++] = i;
+  // appended in order, each written once (a resize first had every new one zeroed)
+  for (int32_t k = 0; k < count; ++k) {
+    const int32_t i = in_order[k];
+    const int b = in_bucket[i];
+    out.candidates.push_back(found[static_cast<size_t>(i)]);
+    out.candidates.back().gap.least = b == 0 ? lowest : (b - 1) * width;
   }
 }
 
