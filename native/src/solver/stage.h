@@ -272,11 +272,13 @@ StageStats solve_stage(Problem& problem, const SolverParams& params, std::vector
   }
   if (!safe) {
     double reached = 0.0, beyond = 1.0;  // fractions of the way: clear, and not
+    bool posed = false;  // the trial is the one at `reached` (the last was clear)
     for (int halving = 0; halving < kBisections; ++halving) {
       const double s = 0.5 * (reached + beyond);
-      (problem.try_between(s) >= problem.floor() ? reached : beyond) = s;
+      posed = problem.try_between(s) >= problem.floor();
+      (posed ? reached : beyond) = s;
     }
-    if (reached > 0.0 && problem.try_between(reached) >= problem.floor())
+    if (reached > 0.0 && (posed || problem.try_between(reached) >= problem.floor()))
       problem.commit();
     else
       problem.restore();
