@@ -57,8 +57,11 @@ void CandidateCache::detect(const HandModel& model, const HandReach& reach, cons
   for (int body = 0; body < kBodyCount; ++body) {
     const Candidate* c = set.candidates.data();
     const double need = needs.body[body], move = moves[body];
-    int32_t k = set.begin[body];
-    while (k < walked_end_[body] && may_be_within(c[k].gap, move, need)) ++k;
+    // (found by halving: the bounds' least rise along the walk's order)
+    const int32_t k = static_cast<int32_t>(
+        std::partition_point(c + set.begin[body], c + walked_end_[body],
+                             [&](const Candidate& x) { return may_be_within(x.gap, move, need); }) -
+        c);
     set.end[body] = k;
     set.need[body] = need;
     // whether one is within it: most often a bound says so of the first, and the body's
