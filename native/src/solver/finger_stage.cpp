@@ -159,11 +159,10 @@ int32_t FingerStage::lazy_rows(const double* d, QpRow* rows) const {
   if (bound_ == FingerBound::kHalve) return count;
   // finger_motion(start, now + d) <= bound exactly: sum_j lever_j s_j (now_j + d_j -
   // start_j) <= bound for every choice of signs s, of which d's own signs bind
-  QpRow& row = rows[count++];
+  QpRow row;
   int signs = 0;
   for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j)
     if (now[j] + d[j] - start_[j] < 0.0) signs |= 1 << j;
-  row.a = {};
   row.b = -row_bound_now();
   row.key = row_key(RowKind::kMotionBound, signs);
   for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j) {
@@ -172,6 +171,7 @@ int32_t FingerStage::lazy_rows(const double* d, QpRow* rows) const {
     row.a[static_cast<size_t>(j)] = -s * lever;
     row.b += s * lever * (now[j] - start_[j]);
   }
+  rows[count++] = row;
   return count;
 }
 

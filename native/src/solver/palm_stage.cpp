@@ -152,12 +152,13 @@ int32_t PalmStage::lazy_rows(const double* d, QpRow* rows) const {
   int signs = 0;
   for (int k = 0; k < 6; ++k)
     if (d[k] < 0.0) signs |= 1 << k;
-  QpRow& row = rows[0];
+  QpRow row;
   for (int k = 0; k < 6; ++k)
     row.a[static_cast<size_t>(k)] =
         ((signs >> k) & 1 ? 1.0 : -1.0) * (k < 3 ? 1.0 : inputs_.reach.hand);
   row.b = -rest;
   row.key = row_key(RowKind::kMotionBound, signs);
+  rows[0] = row;
   return 1;
 }
 
