@@ -9,12 +9,9 @@ lib="$1"
 binary="$2"
 source "$lib"
 json="$(instructions_suite "$binary" --leaves=100)"
-python3 - "$json" <<'PYTHON'
-import json, sys
-d = json.loads(sys.argv[1])
-def check(ok, what):
-    if not ok:
-        sys.exit(f"instructions_test: {what}: {d}")
+PYTHONPATH="$(dirname "$0")/.." python3 - "$json" <<'PYTHON'
+from suite_document import document
+d, check = document("instructions_test")
 check(d["suite"] == "instructions" and d["leaves"] == 100, "the suite and its ball")
 check(d["steps"] == 500 and d["failed_steps"] == 0 and d["under_callgrind"], "every step ran, counted")
 s = d["ir_per_step"]

@@ -17,12 +17,9 @@ for space in 6frusta 6frustb; do
     { echo "paired_test: no HandSolver::step of namespace $space in $out" >&2; exit 1; }
 done
 json="$("$out" 2 100)"
-python3 - "$json" <<'PYTHON'
-import json, sys
-d = json.loads(sys.argv[1])
-def check(ok, what):
-    if not ok:
-        sys.exit(f"paired_test: {what}: {d}")
+PYTHONPATH="$(dirname "$0")/.." python3 - "$json" <<'PYTHON'
+from suite_document import document
+d, check = document("paired_test")
 check(d["suite"] == "paired" and d["scene"] == "ball_grasp" and d["leaves"] == 100, "the suite and its ball")
 check(d["steps"] == 500 and d["runs"] == 2, "every step of both runs")
 for half in ("a", "b"):
