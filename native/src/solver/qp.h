@@ -58,8 +58,9 @@ struct QpHints {
 // Rows made only where a point needs them: the faces of a bound such as sum_j |c_j x_j|
 // <= r (2^n rows, of which a point meets at most one), bounds on single variables.
 // rows_at(context, x, rows) writes up to kMaxLazyRowsAtOnce rows that x may lie beyond,
-// each whole (every member: `rows` may hold old rows), and returns how many. The QP asks once no listed row is violated and appends the most
-// violated of them, up to `capacity` rows in all.
+// each whole (every member: `rows` may hold old rows), and returns how many. The QP asks
+// once no listed row is violated and appends the most violated of them, up to `capacity`
+// rows in all.
 constexpr int32_t kMaxLazyRowsAtOnce = kMaxQpVariables + 1;
 struct QpLazyRows {
   int32_t (*rows_at)(const void* context, const double* x, QpRow* rows) = nullptr;
