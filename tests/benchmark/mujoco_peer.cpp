@@ -11,6 +11,8 @@
 #include <glm/mat3x3.hpp>
 #include <mujoco/mujoco.h>
 
+#include "percentile.h"
+
 // later releases size contacts by an arena instead of nconmax/njmax and changed mjVFS
 static_assert(mjVERSION_HEADER >= 220 && mjVERSION_HEADER < 230,
               "mujoco_peer is written against MuJoCo 2.2 (Debian's libmujoco-dev)");
@@ -195,13 +197,6 @@ void apply_haptic(const HandState& haptic, mjData* d) {
   std::copy(haptic.angles.begin(), haptic.angles.end(), d->ctrl);
 }
 
-// The same rank as the solver benchmark's percentiles.
-double percentile(std::vector<double> v, double p) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  const double last = static_cast<double>(v.size()) - 1.0;
-  return v[static_cast<size_t>(std::min(last, p * static_cast<double>(v.size())))];
-}
 
 // A warning that makes the run's numbers meaningless, if MuJoCo raised one.
 const char* fatal_warning(const mjData* d) {

@@ -47,6 +47,7 @@
 #include "hand/hand_model.h"
 #include "runtime/world_def.h"
 #include "bench_sections.h"
+#include "percentile.h"
 #include "forces/contact_forces.h"
 #include "forces/force_params.h"
 #include "scenes/baked_objects.h"
@@ -64,11 +65,7 @@ using Clock = std::chrono::steady_clock;
 
 double micros(Clock::duration d) { return std::chrono::duration<double, std::micro>(d).count(); }
 
-double percentile(std::vector<double> v, double p) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  return v[static_cast<size_t>(std::min<double>(static_cast<double>(v.size()) - 1.0, p * static_cast<double>(v.size())))];
-}
+using bench::percentile;
 
 // This thread's CPU time, microseconds: what a step costs, without the time the OS gave
 // other work meanwhile (a shared machine preempts a bench for milliseconds).

@@ -29,7 +29,7 @@ paired_link() {
       -c "$driver/paired_half.cpp" -o "$scratch/half_a.o"
   g++ "${flags[@]}" -DFRUSTA_PAIRED_HALF=_b -Dfrusta=frustb -I"$root_b/native/src" -I"$root_b/tests" \
       -c "$driver/paired_half.cpp" -o "$scratch/half_b.o"
-  g++ "${flags[@]}" -c "$driver/paired_main.cpp" -o "$scratch/main.o"
+  g++ "${flags[@]}" -I"$ROOT/tests" -c "$driver/paired_main.cpp" -o "$scratch/main.o"
   for lib in "${PAIRED_LIBRARIES[@]}"; do nm "$build_b/$lib" 2>/dev/null | awk '{print $NF}'; done |
     grep '6frusta' | sort -u | awk '{ b = $1; gsub(/6frusta/, "6frustb", b); print $1, b }' > "$scratch/renames"
   local libs_a=() libs_b=()

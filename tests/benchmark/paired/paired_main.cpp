@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "benchmark/percentile.h"
+
 extern "C" {
 void* paired_make_a(int32_t leaves, const char* scene);
 int32_t paired_steps_a(void* half);
@@ -28,10 +30,7 @@ uint64_t paired_hash_b(void* half);
 
 namespace {
 
-double percentile(std::vector<double> v, double p) {
-  std::sort(v.begin(), v.end());
-  return v[static_cast<size_t>(std::min<double>(static_cast<double>(v.size()) - 1.0, p * static_cast<double>(v.size())))];
-}
+using frusta::bench::percentile;
 
 double sum(const std::vector<double>& v) {
   double total = 0.0;
