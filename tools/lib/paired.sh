@@ -11,7 +11,10 @@
 PAIRED_LIBRARIES=(tests/libfrusta_hand_scenarios.a native/libfrusta_engine.a
                   samples/meshes/libfrusta_sample_meshes.a native/libfrusta_bake_core.a
                   native/libfrusta_base.a)
-PAIRED_TARGETS=(frusta_hand_scenarios frusta_engine frusta_sample_meshes frusta_bake_core frusta_base)
+# (and the baked sample objects the named scenes load: revisions before 2026-12-07 did not
+# make the scenarios' library wait for them, and --scene=slide found no tree to load)
+PAIRED_TARGETS=(frusta_hand_scenarios frusta_engine frusta_sample_meshes frusta_bake_core frusta_base
+                frusta_sample_objects)
 
 # paired_link ROOT_A BUILD_A ROOT_B BUILD_B OUT: OUT, the binary (OUT.d its scratch)
 paired_link() {
