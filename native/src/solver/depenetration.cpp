@@ -10,10 +10,12 @@ namespace frusta {
 
 namespace {
 
-// How deep the hand at `pose` sinks into its deepest leaf: 0 when it touches none.
+// How deep the hand at `pose` sinks into its deepest leaf (or node where `cut` stops): 0
+// when it touches none.
 double hand_depth(const HandModel& model, const HandReach& reach, const HandPose& pose,
-                  const SolverObject* objects, int32_t object_count, CandidateSet& scratch) {
-  detect_candidates(model, reach, pose, objects, object_count, 0.0, -1, scratch);
+                  const SolverObject* objects, int32_t object_count, TreeCut cut,
+                  CandidateSet& scratch) {
+  detect_candidates(model, reach, pose, objects, object_count, 0.0, cut, scratch);
   double depth = 0.0;
   for (int body = 0; body < kBodyCount; ++body)
     depth = std::max(depth, -body_clearance(model, pose, scratch, body));
@@ -32,28 +34,28 @@ constexpr double kPrecision = 1e-6;  // metres: far below any tolerance
 
 bool hand_is_free(const HandModel& model, const HandReach& reach, const HandPose& pose,
                   const SolverObject* objects, int32_t object_count, double tolerance,
-                  CandidateSet& scratch) {
-  return hand_depth(model, reach, pose, objects, object_count, scratch) <= tolerance;
+                  TreeCut cut, CandidateSet& scratch) {
+  return hand_depth(model, reach, pose, objects, object_count, cut, scratch) <= tolerance;
 }
 
 double PlacementSearch::depth_at(const HandModel& model, const HandReach& reach,
-                                 const SolverObject* objects, int32_t object_count,
+                                 const SolverObject* objects, int32_t object_count, TreeCut cut,
                                  CandidateSet& scratch, const HandState& state, int ray, double t) {
   HandState trial = state;
   trial.palm_position = state.palm_position + t * direction(ray);
   HandPose pose;
   forward_kinematics(model, trial, pose);
-  return hand_depth(model, reach, pose, objects, object_count, scratch);
+  return hand_depth(model, reach, pose, objects, object_count, cut, scratch);
 }
 
 PlacementSearch::Result PlacementSearch::run(const HandModel& model, const HandReach& reach,
                                              const SolverObject* objects, int32_t object_count,
-                                             double tolerance, CandidateSet& scratch,
+                                             double tolerance, TreeCut cut, CandidateSet& scratch,
                                              Clock::time_point deadline, HandState* state) {
   if (phase_ == Phase::kIdle) {
     HandPose pose;
     forward_kinematics(model, *state, pose);
-    const double depth = hand_depth(model, reach, pose, objects, object_count, scratch);
+    const double depth = hand_depth(model, reach, pose, objects, object_count, cut, scratch);
     if (depth <= tolerance) return Result::kFound;
     // nothing free lies further than the hand's and every object's extent
     best_ = 2.0 * reach.hand;
@@ -84,7 +86,7 @@ PlacementSearch::Result PlacementSearch::run(const HandModel& model, const HandR
     if (phase_ == Phase::kBisecting) {
       if (high_ - low_ > kPrecision) {
         const double mid = 0.5 * (low_ + high_);
-        (depth_at(model, reach, objects, object_count, scratch, *state, ray_, mid) <= tolerance ? high_ : low_) = mid;
+        (depth_at(model, reach, objects, object_count, cut, scratch, *state, ray_, mid) <= tolerance ? high_ : low_) = mid;
         continue;
       }
       if (high_ < best_) {
@@ -99,7 +101,7 @@ PlacementSearch::Result PlacementSearch::run(const HandModel& model, const HandR
       if (next_[i] < best_ && (ray < 0 || next_[i] < next_[ray])) ray = i;
     if (ray < 0) break;
     const double t = next_[ray];
-    const double d = depth_at(model, reach, objects, object_count, scratch, *state, ray, t);
+    const double d = depth_at(model, reach, objects, object_count, cut, scratch, *state, ray, t);
     if (d > tolerance) {
       inside_[ray] = t;
       next_[ray] = t + std::max(stride_, d - tolerance);

@@ -10,10 +10,12 @@
 
 namespace frusta {
 
-// True when no part of the hand at `pose` sinks deeper than `tolerance` into any object.
+// True when no part of the hand at `pose` sinks deeper than `tolerance` into any object,
+// as the solver sees it: its leaves, or the nodes where `cut` stops (the solver's level
+// of detail, which keeps the hand clear of those).
 bool hand_is_free(const HandModel& model, const HandReach& reach, const HandPose& pose,
                   const SolverObject* objects, int32_t object_count, double tolerance,
-                  CandidateSet& scratch);
+                  TreeCut cut, CandidateSet& scratch);
 
 // The search for the nearest free placement, resumable: a hand deep in a large object
 // takes tens of trials (each a detection of the whole hand: 40 and 11.6 ms in all for
@@ -30,10 +32,11 @@ class PlacementSearch {
   };
 
   // Search from scratch for the hand at *state, or go on with the search begun for it
-  // (while pending, *state must stay the same and the objects the search's).
+  // (while pending, *state must stay the same and the objects and cut the search's).
+  // Free: as hand_is_free with `cut`.
   Result run(const HandModel& model, const HandReach& reach, const SolverObject* objects,
-             int32_t object_count, double tolerance, CandidateSet& scratch, Clock::time_point deadline,
-             HandState* state);
+             int32_t object_count, double tolerance, TreeCut cut, CandidateSet& scratch,
+             Clock::time_point deadline, HandState* state);
   bool pending() const { return phase_ != Phase::kIdle; }
 
  private:
@@ -41,8 +44,8 @@ class PlacementSearch {
   enum class Phase { kIdle, kMarching, kBisecting };
 
   double depth_at(const HandModel& model, const HandReach& reach, const SolverObject* objects,
-                  int32_t object_count, CandidateSet& scratch, const HandState& state, int ray,
-                  double t);
+                  int32_t object_count, TreeCut cut, CandidateSet& scratch,
+                  const HandState& state, int ray, double t);
 
   Phase phase_ = Phase::kIdle;
   double stride_ = 0.0;

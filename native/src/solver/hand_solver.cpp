@@ -191,7 +191,7 @@ frusta_result HandSolver::step(const HandState& haptic, const SolverObject* obje
     HandState start = placing_;
     cache_.clear();  // candidates_, the cache's store, is the search's scratch
     switch (placement_.run(model_, reach_, objects, object_count, params_.penetration_tolerance,
-                           candidates_, deadline_, &start)) {
+                           tree_cut(), candidates_, deadline_, &start)) {
       case PlacementSearch::Result::kPending:
         stats.lagging = true;  // no graphic hand yet: nothing to touch or feel
         if (stats_out) *stats_out = stats;
@@ -343,7 +343,8 @@ bool HandSolver::overlaps(const SolverObject& object) {
   detected_ = false;  // candidates_ is the test's scratch (and the cache's store)
   cache_.clear();
   return started_ &&
-         !hand_is_free(model_, reach_, pose_, &object, 1, params_.penetration_tolerance, candidates_);
+         !hand_is_free(model_, reach_, pose_, &object, 1, params_.penetration_tolerance, tree_cut(),
+                       candidates_);
 }
 
 bool HandSolver::substep(const HandState& target, const SolverObject* objects, int32_t object_count,
@@ -389,7 +390,7 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects, i
     return s == 1.0;
   }
 
-  const TreeCut cut(params_.tree_level, params_.lod_error);
+  const TreeCut cut = tree_cut();
   // How far each body can move in this sub-step (one recovering looks Delta_r away, below):
   // the palm up to its part of the allowance if it moves at all, a finger segment that
   // and its share of the rest (the stages below keep to these)

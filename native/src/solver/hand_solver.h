@@ -92,8 +92,8 @@ class HandSolver {
                      StepStats* stats, Clock::time_point deadline = Clock::time_point::max(),
                      const ObjectFinder* finder = nullptr, bool objects_as_before = false);
 
-  // Whether the graphic hand now sinks into `object` (past the penetration tolerance).
-  // False before the first step.
+  // Whether the graphic hand now sinks into `object` (past the penetration tolerance), as
+  // the solver sees it (its level of detail). False before the first step.
   bool overlaps(const SolverObject& object);
 
   // Forget the graphic hand: the next step starts it afresh from the haptic hand.
@@ -127,6 +127,8 @@ class HandSolver {
   template <class MakeStage>
   StageStats solve_within_budget(MakeStage make, bool budget_binds, bool& slid);
   void report_contacts();
+  // where the trees' walks stop: the leaves, or the level of detail the params ask
+  TreeCut tree_cut() const { return TreeCut(params_.tree_level, params_.lod_error); }
   // The bodies (bit b: body b) where the last report found them, among the same objects:
   // their contacts, and so how deep they sink, are that report's.
   uint32_t bodies_as_reported() const {

@@ -248,6 +248,33 @@ TEST(HandSolverScenario, HapticHandStartingInsideAnObjectIsPlacedOutside) {
   expect_holds_and_rejects_bad_input(solver, s, log);
 }
 
+// On a level of detail the nodes that stand in for the leaves are the object: a hand
+// that starts inside is placed clear of them. Before, the placement searched clear of
+// the leaves alone and the first step's contacts sank up to 18 mm into the nodes, which
+// the steps after pushed the hand out of (a random scene found it).
+TEST(HandSolverScenario, AHandStartingInsideOnALevelOfDetailIsPlacedClearOfItsNodes) {
+  const HandScenario s = make_hand_scenario("start_inside");
+  for (const TreeCut cut : {TreeCut(2), TreeCut(-1, 0.004)}) {
+    SolverParams params;
+    params.tree_level = cut.max_level;
+    params.lod_error = cut.max_error;
+    HandSolver solver(default_model(), params);
+    StepStats first;
+    ASSERT_EQ(solver.step(s.haptic(0), s.objects.data(), 1, &first), FRUSTA_OK);
+    EXPECT_TRUE(first.depenetrated);
+    EXPECT_FALSE(first.lagging);
+    EXPECT_FALSE(solver.overlaps(s.objects[0]));
+    // every pair within the contact distance, of the nodes the cut stops at
+    CandidateSet nodes;
+    detect_candidates(solver.model(), hand_reach(solver.model()), solver.graphic_pose(),
+                      s.objects.data(), 1, DetectionMargins(0.0), cut, nodes);
+    for (int body = 0; body < kBodyCount; ++body)
+      EXPECT_GE(body_clearance(solver.model(), solver.graphic_pose(), nodes, body),
+                -params.penetration_tolerance)
+          << "body " << body << " at level " << cut.max_level << ", error " << cut.max_error;
+  }
+}
+
 // Issue 20: the placement search costs tens of trials (40 and 11.6 ms in start_inside),
 // more than a step's budget. Cut at every trial by a deadline long past, it goes on over
 // the next steps, the hand not placed meanwhile, and places it exactly where the whole
@@ -259,14 +286,14 @@ TEST(HandSolverScenario, APlacementCutByTheDeadlineGoesOnOverTheNextStepsToTheSa
   CandidateSet scratch;
   HandState whole = s.haptic(0);
   PlacementSearch search;
-  ASSERT_EQ(search.run(model, reach, s.objects.data(), 1, SolverParams{}.penetration_tolerance, scratch,
+  ASSERT_EQ(search.run(model, reach, s.objects.data(), 1, SolverParams{}.penetration_tolerance, TreeCut(), scratch,
                        PlacementSearch::Clock::time_point::max(), &whole),
             PlacementSearch::Result::kFound);
   ASSERT_FALSE(search.pending());
   // one trial a run: the same trials in the same order, the same placement to the bit
   HandState cut = s.haptic(0);
   int runs = 1;
-  while (search.run(model, reach, s.objects.data(), 1, SolverParams{}.penetration_tolerance, scratch,
+  while (search.run(model, reach, s.objects.data(), 1, SolverParams{}.penetration_tolerance, TreeCut(), scratch,
                     PlacementSearch::Clock::time_point::min(), &cut) == PlacementSearch::Result::kPending)
     ++runs;
   EXPECT_EQ(cut.palm_position, whole.palm_position);
