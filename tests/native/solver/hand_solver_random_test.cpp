@@ -1,20 +1,24 @@
 // SPDX-License-Identifier: MIT
 // Random scenes beside the scripted ones: hands of random sizes and sides among one to
-// three random objects (clouds, thin shells, duplicated leaves, leaves of no radius, a
-// lone leaf; scaled, turned any way, placed where the hand reaches, the whole scene up to
-// a kilometre from the origin), driven along random paths: drifts, sweeps of centimetres
-// a step, jumps deep into the objects, joints aimed past their limits, and resets. After
-// every step the graphic hand is finite, the pose of its state, sinks into no leaf deeper
-// than the tolerance (the exact reference), and reports only pairs within the contact
-// distance; a step fails only while no free placement near a hand that starts inside
-// has been found. Some scenes solve on a level of detail, with the squared constraint
-// form or with a smaller Delta_r. FRUSTA_PROPERTY_CASES=N runs N / 1000 scenes (at least
-// the default's).
+// three random objects near and up to three further off (clouds, thin shells, duplicated
+// leaves, leaves of no radius, a lone leaf; scaled, turned any way, the whole scene up
+// to a kilometre from the origin), driven along random paths: drifts, sweeps of
+// centimetres a step, jumps deep into the objects, joints aimed past their limits, and
+// resets. After every step the graphic hand is finite, the pose of its state, sinks into
+// no leaf deeper than the tolerance (the exact reference), and reports only pairs within
+// the contact distance; a step fails only while no free placement near a hand that
+// starts inside has been found. Some scenes solve on a level of detail, with the squared
+// constraint form or with a smaller Delta_r; in some the host moves objects (after which
+// a hand may be caught inside, and depth is not checked). A twin solver looking only at
+// what a broad phase over the objects finds near (the runtime's way) makes the same
+// hands and contacts to the bit. FRUSTA_PROPERTY_CASES=N runs 24 N / 10^6 scenes (at
+// least 4).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <memory>
 #include <random>
 #include <vector>
@@ -29,6 +33,7 @@
 #include "scenes/random_cases.h"
 #include "scenes/random_hands.h"
 #include "scenes/random_trees.h"
+#include "solver/broad_phase.h"
 #include "solver/hand_solver.h"
 #include "spheretree/tree_builder.h"
 
@@ -50,13 +55,14 @@ struct RandomScene {
   std::vector<vec3> centres;  // where each object's leaves are, world
 };
 
-// 1-3 objects around `origin`, within a hand's reach of it.
+// 1-3 objects around `origin`, within a hand's reach of it, and 0-3 further off (what a
+// broad phase leaves out until the hand goes there).
 RandomScene random_scene(std::mt19937_64& rng, const vec3& origin) {
-  std::uniform_int_distribution<int> objects(1, 3), kind(0, 4), branching(2, 8);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0), scale(0.2, 1.5);
+  std::uniform_int_distribution<int> objects(1, 3), far_objects(0, 3), kind(0, 4), branching(2, 8);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0), scale(0.2, 1.5), far(0.25, 0.6);
   std::uniform_int_distribution<int> count(1, 1500);
   RandomScene scene;
-  const int n = objects(rng);
+  const int near = objects(rng), n = near + far_objects(rng);
   for (int o = 0; o < n; ++o) {
     const int k = kind(rng);
     std::vector<Sphere> leaves =
@@ -69,7 +75,8 @@ RandomScene random_scene(std::mt19937_64& rng, const vec3& origin) {
     }
     auto tree = std::make_unique<SphereTree>();
     EXPECT_EQ(build_sphere_tree(leaves, {branching(rng)}, tree.get()), FRUSTA_OK);
-    const vec3 at = origin + 0.12 * vec3(unit(rng), unit(rng), unit(rng));
+    const vec3 at = origin + (o < near ? 0.12 * vec3(unit(rng), unit(rng), unit(rng))
+                                       : far(rng) * glm::normalize(vec3(unit(rng), unit(rng), unit(rng))));
     scene.objects.push_back({tree.get(), {at, glm::mat3_cast(random_rotation(rng))}});
     scene.centres.push_back(at);
     scene.trees.push_back(std::move(tree));
@@ -105,6 +112,52 @@ HandState next_haptic(std::mt19937_64& rng, const HandModel& model, const Random
   return next;
 }
 
+// A broad phase over the scene's objects, as the runtime's scene gives the solver.
+class SceneFinder final : public ObjectFinder {
+ public:
+  explicit SceneFinder(const std::vector<SolverObject>& objects)
+      : broad_phase_(static_cast<int32_t>(objects.size())) {
+    for (size_t o = 0; o < objects.size(); ++o)
+      proxies_.push_back(
+          broad_phase_.create_proxy(sphere_box(object_bound(objects[o])), static_cast<int32_t>(o)));
+  }
+  void moved(const std::vector<SolverObject>& objects, size_t o) {
+    broad_phase_.move_proxy(proxies_[o], sphere_box(object_bound(objects[o])));
+  }
+  int32_t find(const Aabb& box, int32_t* out, int32_t capacity) const override {
+    int32_t count = 0;
+    broad_phase_.query(box, [&](int32_t o) {
+      if (count < capacity) out[count] = o;
+      ++count;
+    });
+    return count;
+  }
+
+ private:
+  BroadPhase broad_phase_;
+  std::vector<int32_t> proxies_;
+};
+
+// The graphic hands and their contacts equal to the bit.
+bool same_hand(const HandSolver& a, const HandSolver& b) {
+  const HandState &x = a.graphic(), &y = b.graphic();
+  if (std::memcmp(&x.palm_position, &y.palm_position, sizeof x.palm_position) != 0 ||
+      std::memcmp(&x.palm_rotation, &y.palm_rotation, sizeof x.palm_rotation) != 0 ||
+      std::memcmp(x.angles.data(), y.angles.data(), sizeof(double) * x.angles.size()) != 0 ||
+      a.contacts().size() != b.contacts().size())
+    return false;
+  for (size_t i = 0; i < a.contacts().size(); ++i) {
+    const SolverContact &p = a.contacts()[i], &q = b.contacts()[i];
+    if (p.object != q.object || p.leaf != q.leaf || p.body != q.body || p.part != q.part ||
+        std::memcmp(&p.distance, &q.distance, sizeof p.distance) != 0 ||
+        std::memcmp(&p.hand_point, &q.hand_point, sizeof p.hand_point) != 0 ||
+        std::memcmp(&p.object_point, &q.object_point, sizeof p.object_point) != 0 ||
+        std::memcmp(&p.normal, &q.normal, sizeof p.normal) != 0)
+      return false;
+  }
+  return true;
+}
+
 bool finite(const HandState& s) {
   bool ok = std::isfinite(s.palm_position.x) && std::isfinite(s.palm_position.y) &&
             std::isfinite(s.palm_position.z) && std::isfinite(s.palm_rotation.w) &&
@@ -115,8 +168,10 @@ bool finite(const HandState& s) {
 }
 
 TEST(HandSolverRandom, RandomHandsOnRandomPathsAmongRandomObjectsNeverSink) {
-  const int scenes_count =
-      std::max<int>(kScenes, static_cast<int>(scenes::property_case_count(0) / 1000));
+  // as many as the property tests' cases allow: 24 at their million, fewer in the
+  // sanitizer and cross-built runs, more by hand
+  const int scenes_count = std::max<int>(
+      4, static_cast<int>(kScenes * static_cast<double>(scenes::property_case_count()) / 1e6));
   std::mt19937_64 rng(scenes::kPropertySeed + 211);
   std::uniform_real_distribution<double> unit(-1.0, 1.0), u(0.0, 1.0);
   const std::array<double, 4> kOffsets = {0.0, 1.0, 30.0, 1000.0};
@@ -125,7 +180,11 @@ TEST(HandSolverRandom, RandomHandsOnRandomPathsAmongRandomObjectsNeverSink) {
     const HandModel model = make_hand_model(scenes::random_hand_def(scene_index % 2, rng));
     const vec3 origin = kOffsets[static_cast<size_t>(scene_index) % kOffsets.size()] *
                         glm::normalize(vec3(unit(rng), unit(rng), unit(rng)));
-    const RandomScene scene = random_scene(rng, origin);
+    RandomScene scene = random_scene(rng, origin);
+    // in some scenes the host moves objects: a little, or a jump of centimetres (into the
+    // hand too, which then may be caught inside; the checks of depth stop there)
+    const bool moving = u(rng) < 0.3;
+    bool moved_once = false;
     // the knobs too: a level of detail (its nodes bound their leaves, so a hand clear of
     // them is clear of the leaves), the squared constraint form, a smaller Delta_r
     SolverParams params;
@@ -136,18 +195,45 @@ TEST(HandSolverRandom, RandomHandsOnRandomPathsAmongRandomObjectsNeverSink) {
     if (u(rng) < 0.2) params.prediction_margin = 0.0005 + 0.001 * u(rng);
     ASSERT_EQ(HandSolver::check_params(params, model), FRUSTA_OK) << last_error_message();
     HandSolver solver(model, params);
+    // its twin, looking only at the objects a broad phase finds near (the runtime's
+    // way): the same hands and contacts to the bit
+    HandSolver twin(model, params);
+    SceneFinder finder(scene.objects);
     HandState haptic = scenes::random_hand_state(model, rng);
     haptic.palm_position = origin + 0.1 * vec3(unit(rng), unit(rng), unit(rng));
     for (int t = 0; t < kSteps; ++t) {
       haptic = next_haptic(rng, model, scene, origin, haptic);
-      if (u(rng) < 0.02) solver.reset();
+      if (u(rng) < 0.02) {
+        solver.reset();
+        twin.reset();
+      }
+      bool moved_now = false;
+      if (moving && u(rng) < 0.3) {
+        std::uniform_int_distribution<size_t> which(0, scene.objects.size() - 1);
+        const size_t o = which(rng);
+        RigidPose& pose = scene.objects[o].pose;
+        const double reach = u(rng) < 0.1 ? 0.05 : 0.003;
+        pose.position += reach * vec3(unit(rng), unit(rng), unit(rng));
+        pose.rotation = pose.rotation * glm::mat3_cast(glm::normalize(
+                                            glm::dquat(1.0, 0.03 * unit(rng), 0.03 * unit(rng), 0.03 * unit(rng))));
+        scene.centres[o] = pose.position;
+        finder.moved(scene.objects, o);
+        moved_now = moved_once = true;
+      }
+      const bool as_before = t > 0 && solver.started() && !moved_now;
       const bool was_started = solver.started();
       StepStats stats;
-      const frusta_result r =
-          solver.step(haptic, scene.objects.data(), static_cast<int32_t>(scene.objects.size()),
-                      &stats, HandSolver::Clock::time_point::max(), nullptr, t > 0 && was_started);
+      const int32_t count = static_cast<int32_t>(scene.objects.size());
+      const frusta_result r = solver.step(haptic, scene.objects.data(), count, &stats,
+                                          HandSolver::Clock::time_point::max(), nullptr, as_before);
+      const frusta_result twin_r = twin.step(haptic, scene.objects.data(), count, nullptr,
+                                             HandSolver::Clock::time_point::max(), &finder,
+                                             as_before);
       ++steps;
       SCOPED_TRACE(::testing::Message() << "scene " << scene_index << " step " << t);
+      ASSERT_EQ(twin_r, r);
+      ASSERT_EQ(twin.started(), solver.started());
+      ASSERT_TRUE(same_hand(twin, solver)) << "with a broad phase, another hand or contacts";
       if (!solver.started()) {
         // only a hand starting inside, with no free placement near, stays unplaced
         ASSERT_EQ(r, FRUSTA_ERROR_OUT_OF_RANGE);
@@ -159,15 +245,17 @@ TEST(HandSolverRandom, RandomHandsOnRandomPathsAmongRandomObjectsNeverSink) {
       HandPose fresh;
       forward_kinematics(model, solver.graphic(), fresh);
       ASSERT_EQ(bodies_unmoved(fresh, solver.graphic_pose()), (1u << kBodyCount) - 1u);
+      for (const SolverContact& c : solver.contacts()) {
+        ASSERT_LE(c.distance, params.contact_distance);
+        ++contacts;
+      }
+      if (moved_once) continue;
       const double depth = scenes::deepest_penetration(model, solver.graphic_pose(), scene.objects);
       // the tolerance, and the rounding of coordinates a kilometre from the origin
       ASSERT_LE(depth, params.penetration_tolerance + 1e-12 * (1.0 + glm::length(origin)));
       deep_targets += scenes::deepest_penetration(model, solver.target_pose(), scene.objects) > 0.005;
-      for (const SolverContact& c : solver.contacts()) {
+      for (const SolverContact& c : solver.contacts())
         ASSERT_GE(c.distance, -params.penetration_tolerance - 1e-12 * (1.0 + glm::length(origin)));
-        ASSERT_LE(c.distance, params.contact_distance);
-        ++contacts;
-      }
     }
   }
   std::printf("[ random scenes ] %d scenes, %lld steps, %lld placements, %lld contacts, %lld "
@@ -175,7 +263,7 @@ TEST(HandSolverRandom, RandomHandsOnRandomPathsAmongRandomObjectsNeverSink) {
               scenes_count, static_cast<long long>(steps), static_cast<long long>(placed),
               static_cast<long long>(contacts), static_cast<long long>(deep_targets));
   // the paths reach the objects: contacts made, targets deep inside
-  EXPECT_GT(contacts, steps);
+  EXPECT_GT(contacts, steps / 2);
   EXPECT_GT(deep_targets, steps / 10);
 }
 
