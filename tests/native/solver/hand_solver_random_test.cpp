@@ -4,26 +4,25 @@
 // leaves, leaves of no radius, a lone leaf; scaled, turned any way, the whole scene up
 // to a kilometre from the origin), driven along random paths: drifts, sweeps of
 // centimetres a step, jumps deep into the objects, joints aimed past their limits, and
-// resets. After every step the graphic hand is finite, the pose of its state, sinks into
-// no leaf deeper than the tolerance (the exact reference), and reports only pairs within
-// the contact distance; a step fails only while no free placement near a hand that
-// starts inside has been found. Some scenes solve on a level of detail, with the squared
-// constraint form or with a smaller Delta_r; in some the host moves objects (after which
-// a hand may be caught inside, and depth is not checked). A twin solver looking only at
-// what a broad phase over the objects finds near (the runtime's way) makes the same
-// hands and contacts to the bit. FRUSTA_PROPERTY_CASES=N runs 24 N / 10^6 scenes (at
-// least 4).
+// resets. After every step the graphic hand is valid (as an input would have to be), the
+// pose of its state, sinks into no leaf deeper than the tolerance (the exact reference),
+// and reports only pairs within the contact distance; a step fails only while no free
+// placement near a hand that starts inside has been found. Some scenes solve on a level
+// of detail, with the squared constraint form or with a smaller Delta_r; in some the
+// host moves objects (after which a hand may be caught inside, and depth is not
+// checked). A twin solver looking only at what a broad phase over the objects finds near
+// (the runtime's way) makes the same hands and contacts to the bit.
+// FRUSTA_PROPERTY_CASES=N runs 24 N / 10^6 scenes (at least 4).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <glm/gtc/quaternion.hpp>
 #include <memory>
 #include <random>
 #include <vector>
-
-#include <glm/gtc/quaternion.hpp>
 
 #include "core/error.h"
 #include "hand/anthropometry.h"
@@ -32,10 +31,9 @@
 #include "scenes/hand_scenarios.h"
 #include "scenes/random_cases.h"
 #include "scenes/random_hands.h"
-#include "scenes/random_trees.h"
+#include "scenes/random_scenes.h"
 #include "solver/broad_phase.h"
 #include "solver/hand_solver.h"
-#include "spheretree/tree_builder.h"
 
 namespace frusta {
 namespace {
@@ -43,73 +41,29 @@ namespace {
 constexpr int kScenes = 24;
 constexpr int kSteps = 80;
 
-glm::dquat random_rotation(std::mt19937_64& rng) {
-  std::normal_distribution<double> g;
-  glm::dquat q(g(rng), g(rng), g(rng), g(rng));
-  return glm::normalize(q);
-}
-
 struct RandomScene {
-  std::vector<std::unique_ptr<SphereTree>> trees;
+  std::vector<std::shared_ptr<const TreeFile>> trees;
   std::vector<SolverObject> objects;
-  std::vector<vec3> centres;  // where each object's leaves are, world
+  std::vector<vec3> centres;  // where each object is, world
 };
 
 // 1-3 objects around `origin`, within a hand's reach of it, and 0-3 further off (what a
 // broad phase leaves out until the hand goes there).
 RandomScene random_scene(std::mt19937_64& rng, const vec3& origin) {
-  std::uniform_int_distribution<int> objects(1, 3), far_objects(0, 3), kind(0, 4), branching(2, 8);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0), scale(0.2, 1.5), far(0.25, 0.6);
-  std::uniform_int_distribution<int> count(1, 1500);
+  std::uniform_int_distribution<int> objects(1, 3), far_objects(0, 3);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0), far(0.25, 0.6);
   RandomScene scene;
   const int near = objects(rng), n = near + far_objects(rng);
   for (int o = 0; o < n; ++o) {
-    const int k = kind(rng);
-    std::vector<Sphere> leaves =
-        k == 4 ? std::vector<Sphere>{{vec3(0.0), 0.01}}  // a lone leaf
-               : testing::random_leaves(rng, count(rng), k);
-    const double s = scale(rng);
-    for (Sphere& leaf : leaves) {
-      leaf.center *= s;
-      leaf.radius *= s;
-    }
-    auto tree = std::make_unique<SphereTree>();
-    EXPECT_EQ(build_sphere_tree(leaves, {branching(rng)}, tree.get()), FRUSTA_OK);
-    const vec3 at = origin + (o < near ? 0.12 * vec3(unit(rng), unit(rng), unit(rng))
-                                       : far(rng) * glm::normalize(vec3(unit(rng), unit(rng), unit(rng))));
-    scene.objects.push_back({tree.get(), {at, glm::mat3_cast(random_rotation(rng))}});
+    std::shared_ptr<const TreeFile> tree = scenes::random_object_tree(rng);
+    const vec3 at =
+        origin + (o < near ? 0.12 * vec3(unit(rng), unit(rng), unit(rng))
+                           : far(rng) * glm::normalize(vec3(unit(rng), unit(rng), unit(rng))));
+    scene.objects.push_back({&tree->tree, {at, glm::mat3_cast(scenes::random_rotation(rng))}});
     scene.centres.push_back(at);
     scene.trees.push_back(std::move(tree));
   }
   return scene;
-}
-
-// The next haptic hand: a drift, a sweep, a jump into an object, or a hand anywhere near,
-// its angles at times aimed past the joints' limits (the solver clamps them).
-HandState next_haptic(std::mt19937_64& rng, const HandModel& model, const RandomScene& scene,
-                      const vec3& origin, const HandState& now) {
-  std::uniform_real_distribution<double> u(0.0, 1.0), unit(-1.0, 1.0);
-  std::normal_distribution<double> g;
-  HandState next = now;
-  const double kind = u(rng);
-  if (kind < 0.55) {  // a drift
-    next.palm_position += 0.003 * vec3(g(rng), g(rng), g(rng));
-    for (double& a : next.angles) a += 0.05 * g(rng);
-    next.palm_rotation = glm::normalize(next.palm_rotation * glm::dquat(1.0, 0.02 * g(rng), 0.02 * g(rng), 0.02 * g(rng)));
-  } else if (kind < 0.8) {  // a sweep of 1-6 cm
-    next.palm_position += (0.01 + 0.05 * u(rng)) * glm::normalize(vec3(g(rng), g(rng), g(rng)));
-    for (double& a : next.angles) a += 0.3 * g(rng);
-  } else if (kind < 0.92) {  // a jump with the palm into an object's leaves
-    std::uniform_int_distribution<size_t> which(0, scene.centres.size() - 1);
-    next.palm_position = scene.centres[which(rng)] + 0.02 * vec3(unit(rng), unit(rng), unit(rng));
-    next.palm_rotation = random_rotation(rng);
-  } else {  // anywhere near, any pose
-    next = scenes::random_hand_state(model, rng);
-    next.palm_position = origin + 0.15 * vec3(unit(rng), unit(rng), unit(rng));
-  }
-  if (u(rng) < 0.1)  // aimed past the limits
-    for (double& a : next.angles) a += 2.0 * unit(rng);
-  return next;
 }
 
 // A broad phase over the scene's objects, as the runtime's scene gives the solver.
@@ -158,15 +112,6 @@ bool same_hand(const HandSolver& a, const HandSolver& b) {
   return true;
 }
 
-bool finite(const HandState& s) {
-  bool ok = std::isfinite(s.palm_position.x) && std::isfinite(s.palm_position.y) &&
-            std::isfinite(s.palm_position.z) && std::isfinite(s.palm_rotation.w) &&
-            std::isfinite(s.palm_rotation.x) && std::isfinite(s.palm_rotation.y) &&
-            std::isfinite(s.palm_rotation.z);
-  for (double a : s.angles) ok = ok && std::isfinite(a);
-  return ok;
-}
-
 TEST(HandSolverRandom, RandomHandsOnRandomPathsAmongRandomObjectsNeverSink) {
   // as many as the property tests' cases allow: 24 at their million, fewer in the
   // sanitizer and cross-built runs, more by hand
@@ -189,8 +134,10 @@ TEST(HandSolverRandom, RandomHandsOnRandomPathsAmongRandomObjectsNeverSink) {
     // them is clear of the leaves), the squared constraint form, a smaller Delta_r
     SolverParams params;
     const double knobs = u(rng);
-    if (knobs < 0.15) params.lod_error = 0.001 + 0.002 * u(rng);
-    else if (knobs < 0.25) params.tree_level = 2 + static_cast<int32_t>(3.0 * u(rng));
+    if (knobs < 0.15)
+      params.lod_error = 0.001 + 0.002 * u(rng);
+    else if (knobs < 0.25)
+      params.tree_level = 2 + static_cast<int32_t>(3.0 * u(rng));
     if (u(rng) < 0.2) params.form = ConstraintForm::kSquared;
     if (u(rng) < 0.2) params.prediction_margin = 0.0005 + 0.001 * u(rng);
     ASSERT_EQ(HandSolver::check_params(params, model), FRUSTA_OK) << last_error_message();
@@ -202,7 +149,8 @@ TEST(HandSolverRandom, RandomHandsOnRandomPathsAmongRandomObjectsNeverSink) {
     HandState haptic = scenes::random_hand_state(model, rng);
     haptic.palm_position = origin + 0.1 * vec3(unit(rng), unit(rng), unit(rng));
     for (int t = 0; t < kSteps; ++t) {
-      haptic = next_haptic(rng, model, scene, origin, haptic);
+      haptic = scenes::next_random_haptic(rng, model, scene.centres, origin, haptic);
+      ASSERT_EQ(check_hand_state(haptic, "haptic"), FRUSTA_OK);  // as the solver's callers check
       if (u(rng) < 0.02) {
         solver.reset();
         twin.reset();
@@ -214,8 +162,9 @@ TEST(HandSolverRandom, RandomHandsOnRandomPathsAmongRandomObjectsNeverSink) {
         RigidPose& pose = scene.objects[o].pose;
         const double reach = u(rng) < 0.1 ? 0.05 : 0.003;
         pose.position += reach * vec3(unit(rng), unit(rng), unit(rng));
-        pose.rotation = pose.rotation * glm::mat3_cast(glm::normalize(
-                                            glm::dquat(1.0, 0.03 * unit(rng), 0.03 * unit(rng), 0.03 * unit(rng))));
+        pose.rotation =
+            pose.rotation * glm::mat3_cast(glm::normalize(glm::dquat(
+                                1.0, 0.03 * unit(rng), 0.03 * unit(rng), 0.03 * unit(rng))));
         scene.centres[o] = pose.position;
         finder.moved(scene.objects, o);
         moved_now = moved_once = true;
@@ -226,9 +175,9 @@ TEST(HandSolverRandom, RandomHandsOnRandomPathsAmongRandomObjectsNeverSink) {
       const int32_t count = static_cast<int32_t>(scene.objects.size());
       const frusta_result r = solver.step(haptic, scene.objects.data(), count, &stats,
                                           HandSolver::Clock::time_point::max(), nullptr, as_before);
-      const frusta_result twin_r = twin.step(haptic, scene.objects.data(), count, nullptr,
-                                             HandSolver::Clock::time_point::max(), &finder,
-                                             as_before);
+      const frusta_result twin_r =
+          twin.step(haptic, scene.objects.data(), count, nullptr,
+                    HandSolver::Clock::time_point::max(), &finder, as_before);
       ++steps;
       SCOPED_TRACE(::testing::Message() << "scene " << scene_index << " step " << t);
       ASSERT_EQ(twin_r, r);
@@ -241,7 +190,7 @@ TEST(HandSolverRandom, RandomHandsOnRandomPathsAmongRandomObjectsNeverSink) {
       }
       ASSERT_EQ(r, FRUSTA_OK) << last_error_message();
       placed += !was_started;
-      ASSERT_TRUE(finite(solver.graphic()));
+      ASSERT_EQ(check_hand_state(solver.graphic(), "graphic"), FRUSTA_OK) << last_error_message();
       HandPose fresh;
       forward_kinematics(model, solver.graphic(), fresh);
       ASSERT_EQ(bodies_unmoved(fresh, solver.graphic_pose()), (1u << kBodyCount) - 1u);
@@ -253,15 +202,17 @@ TEST(HandSolverRandom, RandomHandsOnRandomPathsAmongRandomObjectsNeverSink) {
       const double depth = scenes::deepest_penetration(model, solver.graphic_pose(), scene.objects);
       // the tolerance, and the rounding of coordinates a kilometre from the origin
       ASSERT_LE(depth, params.penetration_tolerance + 1e-12 * (1.0 + glm::length(origin)));
-      deep_targets += scenes::deepest_penetration(model, solver.target_pose(), scene.objects) > 0.005;
+      deep_targets +=
+          scenes::deepest_penetration(model, solver.target_pose(), scene.objects) > 0.005;
       for (const SolverContact& c : solver.contacts())
         ASSERT_GE(c.distance, -params.penetration_tolerance - 1e-12 * (1.0 + glm::length(origin)));
     }
   }
-  std::printf("[ random scenes ] %d scenes, %lld steps, %lld placements, %lld contacts, %lld "
-              "steps aimed 5 mm or more inside\n",
-              scenes_count, static_cast<long long>(steps), static_cast<long long>(placed),
-              static_cast<long long>(contacts), static_cast<long long>(deep_targets));
+  std::printf(
+      "[ random scenes ] %d scenes, %lld steps, %lld placements, %lld contacts, %lld "
+      "steps aimed 5 mm or more inside\n",
+      scenes_count, static_cast<long long>(steps), static_cast<long long>(placed),
+      static_cast<long long>(contacts), static_cast<long long>(deep_targets));
   // the paths reach the objects: contacts made, targets deep inside
   EXPECT_GT(contacts, steps / 2);
   EXPECT_GT(deep_targets, steps / 10);
