@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: MIT
-// Random objects and haptic paths for the random-scene tests of the solver and the world:
+// Random objects and haptic paths for the random-scene tests of the solver and the world
+// (and the bitwise equality by which each compares itself with a twin):
 // trees of random leaves (clouds, thin shells, duplicated and zero-radius leaves, a lone
 // leaf) at random scales, and paths that drift, sweep centimetres a step, jump deep into
 // objects, land anywhere near and aim past the joints' limits.
 #pragma once
 
+#include <cstring>
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <memory>
@@ -21,6 +23,13 @@
 #include "spheretree/tree_file.h"
 
 namespace frusta::scenes {
+
+// a and b equal to the bit (for types whose bytes are all their fields: HandState,
+// SolverContact, vectors of doubles)
+template <class T>
+bool same_bits(const T& a, const T& b) {
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
 
 inline glm::dquat random_rotation(std::mt19937_64& rng) {
   std::normal_distribution<double> g;

@@ -94,22 +94,12 @@ class SceneFinder final : public ObjectFinder {
 
 // The graphic hands and their contacts equal to the bit.
 bool same_hand(const HandSolver& a, const HandSolver& b) {
-  const HandState &x = a.graphic(), &y = b.graphic();
-  if (std::memcmp(&x.palm_position, &y.palm_position, sizeof x.palm_position) != 0 ||
-      std::memcmp(&x.palm_rotation, &y.palm_rotation, sizeof x.palm_rotation) != 0 ||
-      std::memcmp(x.angles.data(), y.angles.data(), sizeof(double) * x.angles.size()) != 0 ||
-      a.contacts().size() != b.contacts().size())
-    return false;
-  for (size_t i = 0; i < a.contacts().size(); ++i) {
-    const SolverContact &p = a.contacts()[i], &q = b.contacts()[i];
-    if (p.object != q.object || p.leaf != q.leaf || p.body != q.body || p.part != q.part ||
-        std::memcmp(&p.distance, &q.distance, sizeof p.distance) != 0 ||
-        std::memcmp(&p.hand_point, &q.hand_point, sizeof p.hand_point) != 0 ||
-        std::memcmp(&p.object_point, &q.object_point, sizeof p.object_point) != 0 ||
-        std::memcmp(&p.normal, &q.normal, sizeof p.normal) != 0)
-      return false;
-  }
-  return true;
+  static_assert(sizeof(SolverContact) == 4 * sizeof(int32_t) + 10 * sizeof(double),
+                "no padding: compared byte for byte");
+  return scenes::same_bits(a.graphic(), b.graphic()) &&
+         a.contacts().size() == b.contacts().size() &&
+         std::memcmp(a.contacts().data(), b.contacts().data(),
+                     a.contacts().size() * sizeof(SolverContact)) == 0;
 }
 
 TEST(HandSolverRandom, RandomHandsOnRandomPathsAmongRandomObjectsNeverSink) {
