@@ -96,10 +96,11 @@ class SceneFinder final : public ObjectFinder {
 bool same_hand(const HandSolver& a, const HandSolver& b) {
   static_assert(sizeof(SolverContact) == 4 * sizeof(int32_t) + 10 * sizeof(double),
                 "no padding: compared byte for byte");
+  // (memcmp's pointers may not be null, even for no bytes: an empty list's data() may be)
   return scenes::same_bits(a.graphic(), b.graphic()) &&
          a.contacts().size() == b.contacts().size() &&
-         std::memcmp(a.contacts().data(), b.contacts().data(),
-                     a.contacts().size() * sizeof(SolverContact)) == 0;
+         (a.contacts().empty() || std::memcmp(a.contacts().data(), b.contacts().data(),
+                                              a.contacts().size() * sizeof(SolverContact)) == 0);
 }
 
 TEST(HandSolverRandom, RandomHandsOnRandomPathsAmongRandomObjectsNeverSink) {
