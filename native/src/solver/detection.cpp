@@ -159,6 +159,21 @@ void copy_body(const CandidateSet& from, int body, CandidateSet& out) {
 
 }  // namespace
 
+void CandidateSet::reserve(int32_t spheres, int32_t objects) {
+  const size_t n = static_cast<size_t>(spheres);
+  // resized and cleared, not reserved: resizing writes every element
+  auto written = [n](auto& v, size_t size) {
+    v.resize(std::max(v.size(), size));
+    v.clear();
+  };
+  written(candidates, n);
+  written(sorting, n);
+  written(masked_hits, n);
+  written(order, 2 * n);
+  written(near_objects, static_cast<size_t>(objects));
+  hits.resize(std::max(hits.size(), n));  // its size is the walks' capacity
+}
+
 double segment_move(const Segment& then, const Segment& now) {
   return std::max(glm::length(now.proximal - then.proximal), glm::length(now.distal - then.distal));
 }

@@ -82,6 +82,10 @@ struct CandidateSet {
   std::vector<int32_t> order;
   std::vector<Candidate> sorting;  // a body's, as found, before they are ordered
 
+  // Room for `spheres` candidates (a body's scratch for as many) among `objects` near,
+  // every page written now, on the thread that makes the hand: a first contact on the
+  // 1 kHz thread then neither allocates nor faults memory in. A denser scene grows them.
+  void reserve(int32_t spheres, int32_t objects);
   int32_t count(int body) const { return end[body] - begin[body]; }
   const Candidate* of(int body) const { return candidates.data() + begin[body]; }
   void clear() {

@@ -29,6 +29,12 @@ constexpr double kStandstill = 1e-9;
 // 0.06 N more than the haptic hand's move accounts for.
 constexpr int32_t kSlideIterations = 6;
 constexpr int kDeadlineReserveDivisor = 8;
+// What a new hand's buffers hold before they grow (520 KB in all): the grasp of a ball of
+// 10^4 leaves keeps up to 951 candidates in a set (a body's walk and a QP's rows hold
+// fewer) and reports up to 35 contacts; one of 10^5 leaves, 8,760 and 281
+constexpr int32_t kReservedCandidates = 1024;
+constexpr size_t kReservedContacts = 256;
+constexpr int32_t kReservedObjects = 64;
 
 PalmPlacement placement(const HandState& state) { return {state.palm_position, state.palm_rotation}; }
 
@@ -102,6 +108,15 @@ HandSolver::HandSolver(const HandModel& model, const SolverParams& params)
     : model_(model), params_(params), reach_(hand_reach(model)) {
   forward_kinematics(model_, graphic_, pose_);
   target_pose_ = pose_;
+  // a first contact allocates nothing on the 1 kHz thread (CandidateSet::reserve)
+  candidates_.reserve(kReservedCandidates, kReservedObjects);
+  cache_.reserve(kReservedCandidates, kReservedObjects);
+  rows_.resize(kReservedCandidates);
+  near_.resize(static_cast<size_t>(kReservedObjects));
+  for (std::vector<SolverContact>* list : {&contacts_, &last_contacts_}) {
+    list->resize(kReservedContacts);
+    list->clear();
+  }
 }
 
 frusta_result HandSolver::check_params(const SolverParams& p, const HandModel& model) {
@@ -363,7 +378,6 @@ bool HandSolver::substep(const HandState& target, const SolverObject* objects, i
     const double reach =
         reach_.hand + whole_move + params_.prediction_margin + detection_room(params_);
     const Aabb box{pose_.palm_position - reach, pose_.palm_position + reach};
-    if (near_.empty()) near_.resize(64);
     only_count = finder_->find(box, near_.data(), static_cast<int32_t>(near_.size()));
     if (only_count > static_cast<int32_t>(near_.size())) {
       near_.resize(static_cast<size_t>(only_count) * 2);  // more objects near than ever before
