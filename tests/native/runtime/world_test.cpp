@@ -321,8 +321,8 @@ TEST(World, TwoHandsAndTwentyObjectsStepWithoutAllocating) {
 
 // Its buffers are made with the hand (HandSolver's reserve): a hand meeting an object for
 // the first time allocates on the 1 kHz thread no more than it does in a steady grasp.
-// (It had grown them 60-80 times over a grasp's first contacts, each a call into malloc
-// and the largest a mapping faulted in page by page: tens of microseconds in one step.)
+// (It had grown them 51 and 74 times over these grasps' first contacts, each a call into
+// malloc and the largest a fresh mapping, faulted in page by page.)
 TEST(World, AHandsFirstGraspAllocatesNothing) {
   for (int32_t leaves : {0, 10000}) {  // the sample ball, and one of 10^4 leaves
     const scenes::HandScenario grasp =
