@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/validate.h"
 #include "hand/hand_model.h"
 #include "hand/kinematics.h"
 #include "runtime/world.h"
@@ -34,9 +35,7 @@ using scenes::same_bits;
 constexpr int kSessions = 8;
 constexpr int kSteps = 150;
 
-bool finite(const vec3& v) {
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
+bool finite(const vec3& v) { return all_finite(&v[0], 3); }
 
 // The same calls, made on both worlds, must answer alike.
 struct Twins {
