@@ -89,6 +89,13 @@ inline std::uint64_t property_case_count(std::uint64_t fallback = 1000000) {
   return (end != text && n > 0) ? static_cast<std::uint64_t>(n) : fallback;
 }
 
+// A property test's own count of random draws, `full` at the default million cases and
+// scaled with property_case_count() (a tenth in the sanitizer run, more by hand), never
+// below `least`: the first draws of the full run, the same at every scale.
+inline int scaled_case_count(int full, int least) {
+  return std::max(least, static_cast<int>(full * static_cast<double>(property_case_count()) / 1e6));
+}
+
 // Which of a scripted test's cases run: every one, or with env FRUSTA_SCENARIO_STRIDE=k
 // every k-th (the sanitizer run, where each case costs ~4x and the code is the same).
 // A test runs its case i (in its own order) when scenario_runs(i).

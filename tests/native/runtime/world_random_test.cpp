@@ -50,8 +50,7 @@ struct Twins {
 };
 
 TEST(WorldRandom, RandomSessionsKeepEverythingFiniteAndTwinWorldsAlike) {
-  const int sessions = std::max<int>(
-      2, static_cast<int>(kSessions * static_cast<double>(scenes::property_case_count()) / 1e6));
+  const int sessions = scenes::scaled_case_count(kSessions, 2);
   std::mt19937_64 rng(scenes::kPropertySeed + 307);
   std::uniform_real_distribution<double> u(0.0, 1.0), unit(-1.0, 1.0);
   int64_t steps = 0, contacts = 0, refused = 0, forces = 0;

@@ -237,7 +237,9 @@ void expect_clearances(const HandModel& model, const HandPose& moved, const Cand
 
 // Hands closed by random amounts and moved about a ball, a box and a plate turned at
 // random, so that fingers and palm cross them at every depth; leaves and both cuts.
-void check_random_hands(const HandModel& model, int32_t draws, uint64_t seed) {
+// `draws` at the property tests' default count (scaled_case_count).
+void check_random_hands(const HandModel& model, int32_t full_draws, uint64_t seed) {
+  const int32_t draws = scenes::scaled_case_count(full_draws, 10);
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0), offset(-0.06, 0.06);
   const HandReach reach = hand_reach(model);
@@ -246,7 +248,7 @@ void check_random_hands(const HandModel& model, int32_t draws, uint64_t seed) {
   const TreeCut cuts[] = {TreeCut(), TreeCut(2), TreeCut(-1, 0.0005)};
   CandidateSet set, reused;
   std::vector<TreeHit> hits(1 << 16);
-  int64_t finger_candidates = 0, palm_candidates = 0, runs = 0;
+  int64_t finger_candidates = 0, palm_candidates = 0;
   for (int32_t draw = 0; draw < draws; ++draw) {
     HandState state;
     HandPose pose;
@@ -274,9 +276,6 @@ void check_random_hands(const HandModel& model, int32_t draws, uint64_t seed) {
       moved_state.palm_rotation =
           glm::normalize(glm::angleAxis(0.02, axis) * moved_state.palm_rotation);
     }
-    // every hand is drawn, so a stride (the sanitizer run) checks some of the same hands
-    if (!scenes::scenario_runs(static_cast<uint64_t>(draw))) continue;
-    ++runs;
     HandPose moved;
     forward_kinematics(model, moved_state, moved);
     const uint32_t unmoved = bodies_unmoved(pose, moved);
@@ -303,8 +302,8 @@ void check_random_hands(const HandModel& model, int32_t draws, uint64_t seed) {
       }
   }
   // the draws put both the fingers and the palm into the objects, often
-  EXPECT_GT(finger_candidates, 100 * runs);
-  EXPECT_GT(palm_candidates, 100 * runs);
+  EXPECT_GT(finger_candidates, 100 * draws);
+  EXPECT_GT(palm_candidates, 100 * draws);
 }
 
 TEST(SolverDetection, OneWalkForManyProbesFindsWhatOneWalkPerProbeFindsInItsOrder) {
@@ -333,7 +332,8 @@ TEST(SolverDetection, NoPointOfASegmentMovesFurtherThanItsBounds) {
   std::mt19937 rng(21);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   double lever_sum = 0.0, posed_sum = 0.0;
-  for (int trial = 0; trial < 200; ++trial) {
+  const int trials = scenes::scaled_case_count(200, 20);
+  for (int trial = 0; trial < trials; ++trial) {
     HandState from, to;
     for (int f = 0; f < FRUSTA_FINGER_COUNT; ++f)
       for (int j = 0; j < FRUSTA_JOINTS_PER_FINGER; ++j) {
@@ -346,8 +346,6 @@ TEST(SolverDetection, NoPointOfASegmentMovesFurtherThanItsBounds) {
         to.angles[k] = std::clamp(from.angles[k] + reach_of_move * span * (2.0 * unit(rng) - 1.0),
                                   finger.joint_min[j], finger.joint_max[j]);
       }
-    // a stride (the sanitizer run's is 3) keeps small and whole moves alike when it is odd
-    if (!scenes::scenario_runs(static_cast<uint64_t>(trial))) continue;
     constexpr int kChords = 64;
     std::vector<HandPose> path(kChords + 1);
     for (int i = 0; i <= kChords; ++i) forward_kinematics(model, interpolate(from, to, double(i) / kChords), path[i]);
@@ -463,7 +461,8 @@ TEST(SolverDetection, ACachedDetectionFindsWhatAFreshOneFinds) {
   constexpr double kRoom = 0.0005;
   CandidateSet cached, fresh;
   int64_t calls = 0, from_cache = 0, walked = 0, candidates = 0;
-  for (int run = 0; run < 24; ++run) {
+  const int runs = scenes::scaled_case_count(24, 4);
+  for (int run = 0; run < runs; ++run) {
     HandState state;
     HandPose pose;
     random_hand(model, rng, state, pose);

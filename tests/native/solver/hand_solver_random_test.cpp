@@ -106,8 +106,7 @@ bool same_hand(const HandSolver& a, const HandSolver& b) {
 TEST(HandSolverRandom, RandomHandsOnRandomPathsAmongRandomObjectsNeverSink) {
   // as many as the property tests' cases allow: 24 at their million, fewer in the
   // sanitizer and cross-built runs, more by hand
-  const int scenes_count = std::max<int>(
-      4, static_cast<int>(kScenes * static_cast<double>(scenes::property_case_count()) / 1e6));
+  const int scenes_count = scenes::scaled_case_count(kScenes, 4);
   std::mt19937_64 rng(scenes::kPropertySeed + 211);
   std::uniform_real_distribution<double> unit(-1.0, 1.0), u(0.0, 1.0);
   const std::array<double, 4> kOffsets = {0.0, 1.0, 30.0, 1000.0};

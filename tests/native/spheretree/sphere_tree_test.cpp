@@ -8,6 +8,7 @@
 
 #include "geometry/contact_test.h"
 #include "geometry/exact_distance.h"
+#include "scenes/random_cases.h"
 #include "scenes/random_trees.h"
 #include "spheretree/tree_builder.h"
 
@@ -29,7 +30,8 @@ TEST(SphereTree, SegmentQueryEqualsBruteForceScan) {
   std::normal_distribution<double> g;
   std::vector<TreeHit> hits(20000);
   long compared = 0, nonempty = 0;
-  for (int trial = 0; trial < 300; ++trial) {
+  const int trials = scenes::scaled_case_count(300, 30);
+  for (int trial = 0; trial < trials; ++trial) {
     const int count = 1 + static_cast<int>(rng() % 3000);
     const std::vector<Sphere> leaves = testing::random_leaves(rng, count, trial % 4);
     SphereTree tree;
@@ -69,8 +71,8 @@ TEST(SphereTree, SegmentQueryEqualsBruteForceScan) {
       nonempty += !brute.empty();
     }
   }
-  EXPECT_GT(nonempty, 1000);  // the segments do hit things
-  EXPECT_GT(compared, 1000000);
+  EXPECT_GT(nonempty, trials * 20 / 6);  // the segments do hit things
+  EXPECT_GT(compared, 3000L * trials);
 }
 
 // query_segment culls a node's children in single precision and tests exactly each node
@@ -85,7 +87,8 @@ TEST(SphereTree, SegmentQueryMatchesTheExactWalkHitForHit) {
   std::normal_distribution<double> g;
   std::vector<TreeHit> hits(20000), loose(20000);
   long compared = 0, grazing = 0, cut_hits = 0, loose_extra = 0;
-  for (int trial = 0; trial < 200; ++trial) {
+  const int trials = scenes::scaled_case_count(200, 20);
+  for (int trial = 0; trial < trials; ++trial) {
     std::vector<Sphere> leaves =
         testing::random_leaves(rng, 1 + static_cast<int>(rng() % 3000), trial % 4);
     const vec3 offset = trial % 3 == 0 ? vec3(u(rng), u(rng), u(rng)) * 1000.0 : vec3(0.0);
@@ -146,9 +149,9 @@ TEST(SphereTree, SegmentQueryMatchesTheExactWalkHitForHit) {
           << "trial " << trial << " query " << q << ": an exact hit is missing";
     }
   }
-  EXPECT_GT(compared, 100000);
-  EXPECT_GT(grazing, 1000);
-  EXPECT_GT(cut_hits, 10000);  // inner nodes reported where a cut stopped
+  EXPECT_GT(compared, 500L * trials);
+  EXPECT_GT(grazing, 5L * trials);
+  EXPECT_GT(cut_hits, 50L * trials);  // inner nodes reported where a cut stopped
   EXPECT_LT(loose_extra, compared / 10);  // the loose query keeps few more
 }
 
@@ -156,7 +159,8 @@ TEST(SphereTree, SphereQueryEqualsBruteForceScan) {
   std::mt19937_64 rng(99);
   std::uniform_real_distribution<double> u(-0.12, 0.12), r(0.0, 0.02);
   std::vector<TreeHit> hits(5000);
-  for (int trial = 0; trial < 200; ++trial) {
+  const int trials = scenes::scaled_case_count(200, 20);
+  for (int trial = 0; trial < trials; ++trial) {
     const std::vector<Sphere> leaves = testing::random_leaves(rng, 2000, trial % 4);
     SphereTree tree;
     ASSERT_EQ(build_sphere_tree(leaves, {4}, &tree), FRUSTA_OK);

@@ -13,6 +13,7 @@
 
 #include <glm/gtc/quaternion.hpp>
 
+#include "scenes/random_cases.h"
 #include "scenes/random_trees.h"
 #include "spheretree/tree_builder.h"
 
@@ -24,7 +25,8 @@ TEST(TreePairs, TheDualWalkFindsEveryOverlappingPairAScanFinds) {
   std::uniform_real_distribution<double> u(-0.1, 0.1);
   std::normal_distribution<double> g;
   long pairs = 0;
-  for (int trial = 0; trial < 200; ++trial) {
+  const int trials = scenes::scaled_case_count(200, 20);
+  for (int trial = 0; trial < trials; ++trial) {
     SphereTree trees[2];
     std::vector<Sphere> leaves[2];
     for (int k = 0; k < 2; ++k) {
@@ -54,7 +56,7 @@ TEST(TreePairs, TheDualWalkFindsEveryOverlappingPairAScanFinds) {
     EXPECT_EQ(found, scanned) << "trial " << trial;
     pairs += static_cast<long>(scanned.size());
   }
-  EXPECT_GT(pairs, 1000) << "the trials are meant to overlap";
+  EXPECT_GT(pairs, 5L * trials) << "the trials are meant to overlap";
 }
 
 TEST(TreePairs, AnEmptyTreeMeetsNothing) {
