@@ -94,15 +94,17 @@ TEST(Baker, TheInteriorIsFilledSoADeepFingerMeetsLeaves) {
 }
 
 TEST(Baker, LeafBudgetStopsTheBakeAndSaysSo) {
+  // 0.5 mm needs some 240 balls on this sphere; a finer target only samples its surface
+  // more densely first (0.2 mm: 4 million samples, five seconds)
   BakeParams params;
-  params.target_error = 0.0002;
+  params.target_error = 0.0005;
   params.max_leaves = 50;
   TreeFile file;
   bool met = true;
   ASSERT_EQ(bake_sphere_tree(scenes::make_sphere(0.04, 32), params, nullptr, &file, &met), FRUSTA_OK);
   EXPECT_FALSE(met);
   EXPECT_LE(file.tree.leaves.size(), 50u);
-  EXPECT_GT(file.bake.uncovered_error, 0.0002);  // and the figure shows by how much
+  EXPECT_GT(file.bake.uncovered_error, 0.0005);  // and the figure shows by how much
 }
 
 TEST(Baker, BadParametersAndMeshesAreRefused) {
