@@ -493,10 +493,13 @@ TEST(SolverDetection, ACachedDetectionFindsWhatAFreshOneFinds) {
                    cached);
       detect_candidates(model, reach, pose, objects.data(), static_cast<int32_t>(objects.size()), needs, cut, fresh);
       const std::string what = "run " + std::to_string(run) + ", step " + std::to_string(step);
-      // every sphere a fresh detection finds, and only spheres within the need and the
-      // room (a bound's floor a 32nd of the walk's margin further), the same bodies near,
-      // each body's in order of its bounds where its walk looked from (another order than
-      // a fresh walk's), which hold the exact gap as the body moved since
+      // every sphere a fresh detection finds, and only spheres whose bounds from where the
+      // walk looked leave them within the need of the body as it moved: so within the
+      // need, twice the room (a sphere kept as the move may have brought it nearer is as
+      // far again if the body moved away) and their bounds' width (the least lowered to a
+      // 32nd of the walk's margin); the same bodies near, each body's in order of its
+      // bounds where its walk looked from (another order than a fresh walk's), which hold
+      // the exact gap as the body moved since
       ASSERT_EQ(cached.near, fresh.near) << what;
       for (int body = 0; body < kBodyCount; ++body) {
         ASSERT_EQ(cached.need[body], needs.body[body]) << what << ", body " << body;
@@ -510,7 +513,8 @@ TEST(SolverDetection, ACachedDetectionFindsWhatAFreshOneFinds) {
           })) << what << ", body " << body << ": fresh candidate " << i << " is not cached";
         const std::vector<double> exact = exact_gaps(model, pose, cached, body);
         for (int32_t i = 0; i < cached.count(body); ++i)
-          ASSERT_LE(exact[static_cast<size_t>(i)], needs.body[body] + 2.0 * kRoom)
+          ASSERT_LE(exact[static_cast<size_t>(i)],
+                    needs.body[body] + 2.0 * kRoom + (c[i].gap.most - c[i].gap.least))
               << what << ", body " << body << ", candidate " << i;
         expect_sorted(cached, body, nullptr, what);
         expect_bounds_hold(model, pose, cached, body, what);
