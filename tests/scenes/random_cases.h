@@ -93,8 +93,9 @@ inline std::uint64_t property_case_count(std::uint64_t fallback = 1000000) {
 // scaled with property_case_count() (a tenth in the sanitizer run, more by hand), never
 // below `least`: the first draws of the full run, the same at every scale.
 inline int scaled_case_count(int full, int least) {
-  const double scaled = full * static_cast<double>(property_case_count()) / 1e6;
-  return std::max(least, static_cast<int>(std::min(scaled, double{std::numeric_limits<int>::max()})));
+  const double scaled = std::min(full * static_cast<double>(property_case_count()) / 1e6,
+                                 double{std::numeric_limits<int>::max()});
+  return std::max(least, static_cast<int>(scaled));
 }
 
 // Which of a scripted test's cases run: every one, or with env FRUSTA_SCENARIO_STRIDE=k

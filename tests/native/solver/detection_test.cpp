@@ -237,7 +237,7 @@ void expect_clearances(const HandModel& model, const HandPose& moved, const Cand
 
 // Hands closed by random amounts and moved about a ball, a box and a plate turned at
 // random, so that fingers and palm cross them at every depth; leaves and both cuts.
-// `draws` at the property tests' default count (scaled_case_count).
+// `full_draws` of them at the property tests' default count (scaled_case_count).
 void check_random_hands(const HandModel& model, int32_t full_draws, uint64_t seed) {
   const int32_t draws = scenes::scaled_case_count(full_draws, 10);
   std::mt19937_64 rng(seed);
