@@ -102,6 +102,7 @@ class HandSolver {
     finger_rest_.fill(false);
     reported_ = false;
     placement_ = PlacementSearch{};
+    found_count_ = -1;
   }
 
   bool started() const { return started_; }
@@ -167,7 +168,12 @@ class HandSolver {
   // back by its bound: the same inputs would leave the hand there again
   bool resting_ = false;
   const ObjectFinder* finder_ = nullptr;  // this step's
-  std::vector<int32_t> near_;             // what it found for a sub-step, in index order
+  // What the finder found in found_box_, in index order: a box a little larger than a
+  // sub-step asks for, whose answer later sub-steps and steps take while their box lies
+  // inside it and the objects are as before. -1: nothing found that still holds.
+  std::vector<int32_t> near_;
+  Aabb found_box_;
+  int32_t found_count_ = -1;
   std::array<bool, FRUSTA_FINGER_COUNT> settled_{};  // per sub-step: reached or stopped
   // per finger, as resting_ for the hand: the last step left it where it found it
   std::array<bool, FRUSTA_FINGER_COUNT> finger_rest_{};

@@ -32,8 +32,8 @@
 #include "scenes/random_cases.h"
 #include "scenes/random_hands.h"
 #include "scenes/random_scenes.h"
-#include "solver/broad_phase.h"
 #include "solver/hand_solver.h"
+#include "scene_finder.h"
 
 namespace frusta {
 namespace {
@@ -65,32 +65,6 @@ RandomScene random_scene(std::mt19937_64& rng, const vec3& origin) {
   }
   return scene;
 }
-
-// A broad phase over the scene's objects, as the runtime's scene gives the solver.
-class SceneFinder final : public ObjectFinder {
- public:
-  explicit SceneFinder(const std::vector<SolverObject>& objects)
-      : broad_phase_(static_cast<int32_t>(objects.size())) {
-    for (size_t o = 0; o < objects.size(); ++o)
-      proxies_.push_back(
-          broad_phase_.create_proxy(sphere_box(object_bound(objects[o])), static_cast<int32_t>(o)));
-  }
-  void moved(const std::vector<SolverObject>& objects, size_t o) {
-    broad_phase_.move_proxy(proxies_[o], sphere_box(object_bound(objects[o])));
-  }
-  int32_t find(const Aabb& box, int32_t* out, int32_t capacity) const override {
-    int32_t count = 0;
-    broad_phase_.query(box, [&](int32_t o) {
-      if (count < capacity) out[count] = o;
-      ++count;
-    });
-    return count;
-  }
-
- private:
-  BroadPhase broad_phase_;
-  std::vector<int32_t> proxies_;
-};
 
 // The graphic hands and their contacts equal to the bit.
 bool same_hand(const HandSolver& a, const HandSolver& b) {
@@ -135,7 +109,7 @@ TEST(HandSolverRandom, RandomHandsOnRandomPathsAmongRandomObjectsNeverSink) {
     // its twin, looking only at the objects a broad phase finds near (the runtime's
     // way): the same hands and contacts to the bit
     HandSolver twin(model, params);
-    SceneFinder finder(scene.objects);
+    testing::SceneFinder finder(scene.objects);
     HandState haptic = scenes::random_hand_state(model, rng);
     haptic.palm_position = origin + 0.1 * vec3(unit(rng), unit(rng), unit(rng));
     for (int t = 0; t < kSteps; ++t) {
