@@ -146,8 +146,8 @@
   X(frusta_world_def, max_palm_torque, 120, 8)        \
   X(frusta_world_def, input_delay, 128, 8)            \
   X(frusta_world_def, max_extrapolation, 136, 8)      \
-  X(frusta_world_def, internal_value, 144, 4)         \
-  X(frusta_world_def, reserved0, 148, 4)              \
+  X(frusta_world_def, max_candidates_per_hand, 144, 4) \
+  X(frusta_world_def, internal_value, 148, 4)         \
   X(frusta_object_def, struct_size, 0, 4)             \
   X(frusta_object_def, dynamic, 4, 4)                 \
   X(frusta_object_def, pose, 8, 56)                   \
@@ -309,8 +309,8 @@
   X(frusta_device_status, 320, 8) \
   X(frusta_device_info, 268, 4)
 
-static_assert(FRUSTA_ABI_VERSION == 8,
-              "the layout table below is ABI 8: update it and the C# mirror with the ABI");
+static_assert(FRUSTA_ABI_VERSION == 9,
+              "the layout table below is ABI 9: update it and the C# mirror with the ABI");
 
 #define FRUSTA_CHECK_MEMBER(type, member, offset, size)                          \
   static_assert(offsetof(type, member) == (offset), #type "." #member " moved"); \

@@ -2368,6 +2368,7 @@ static const IntField kWorldInts[] = {
     {WORLD_FIELD(max_iterations), 1, 100},
     {WORLD_FIELD(max_substeps), 1, 1024},
     {WORLD_FIELD(max_contacts_per_hand), 0, 65536},
+    {WORLD_FIELD(max_candidates_per_hand), 1, 1 << 18},
     {WORLD_FIELD(command_capacity), 1, 1 << 20},
     {WORLD_FIELD(max_hands), 1, 64},
     {WORLD_FIELD(realtime_priority), 0, 1},

@@ -33,7 +33,7 @@
 _Static_assert(sizeof(frusta_world_id) == 8, "frusta_world_id layout changed");
 _Static_assert(sizeof(frusta_object_id) == 8, "frusta_object_id layout changed");
 _Static_assert(sizeof(frusta_world_def) == 152, "frusta_world_def layout changed");
-_Static_assert(offsetof(frusta_world_def, internal_value) == 144, "frusta_world_def layout changed");
+_Static_assert(offsetof(frusta_world_def, internal_value) == 148, "frusta_world_def layout changed");
 _Static_assert(sizeof(frusta_object_def) == 224, "frusta_object_def layout changed");
 _Static_assert(offsetof(frusta_object_def, internal_value) == 216,
                "frusta_object_def layout changed");
@@ -197,7 +197,7 @@ static void test_defaults(void) {
   const frusta_world_def w = frusta_default_world_def();
   check(w.struct_size == (int32_t)sizeof(frusta_world_def), "default world def struct_size %d",
         w.struct_size);
-  check(w.internal_value != 0 && w.reserved0 == 0, "default world def carries its cookie");
+  check(w.internal_value != 0, "default world def carries its cookie");
   check(w.max_objects == 64 && w.rate_hz == 1000.0 && w.spin_us == 200.0,
         "world def: max_objects 64, rate_hz 1000, spin_us 200 (%d, %g, %g)", w.max_objects,
         w.rate_hz, w.spin_us);
@@ -209,6 +209,8 @@ static void test_defaults(void) {
   check(w.max_contacts_per_hand == 256 && w.command_capacity == 256 && w.max_hands == 8 &&
             w.realtime_priority == 1,
         "world def: max_contacts_per_hand 256, command_capacity 256, max_hands 8, realtime");
+  check(w.max_candidates_per_hand == 1024, "world def: max_candidates_per_hand 1024 (%d)",
+        w.max_candidates_per_hand);
   check(w.max_fingertip_force == 10.0 && w.max_finger_resistance == 10.0 &&
             w.max_joint_torque == 0.5 && w.max_palm_force == 20.0 && w.max_palm_torque == 1.0,
         "world def: device limits 10 N, 10 N, 0.5 N m, 20 N, 1 N m");
@@ -358,6 +360,7 @@ static void test_create_errors(void) {
       {WORLD_FIELD(max_iterations), 0},       {WORLD_FIELD(max_iterations), 101},
       {WORLD_FIELD(max_substeps), 0},         {WORLD_FIELD(max_substeps), 1025},
       {WORLD_FIELD(max_contacts_per_hand), -1}, {WORLD_FIELD(max_contacts_per_hand), 65537},
+      {WORLD_FIELD(max_candidates_per_hand), 0}, {WORLD_FIELD(max_candidates_per_hand), (1 << 18) + 1},
       {WORLD_FIELD(command_capacity), 0},     {WORLD_FIELD(command_capacity), -5},
       {WORLD_FIELD(command_capacity), (1 << 20) + 1},
       {WORLD_FIELD(max_hands), 0},            {WORLD_FIELD(max_hands), -1},
@@ -388,6 +391,7 @@ static void test_create_errors(void) {
   def.max_iterations = 100;
   def.max_substeps = 1024;
   def.max_contacts_per_hand = 0;
+  def.max_candidates_per_hand = 1;
   def.command_capacity = 1;
   def.max_fingertip_force = 0.0;
   out = sentinel;

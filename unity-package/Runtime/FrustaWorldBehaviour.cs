@@ -34,6 +34,10 @@ namespace Frusta.Unity
         [SerializeField] int maxObjects = 64;
         [Tooltip("Hand slots (1..64): hands at once, a user's two, another user's, rigs spawned at run time.")]
         [SerializeField] int maxHands = 8;
+        [Tooltip("Object spheres near one hand that its buffers hold, made when the hand is added (about half a " +
+                 "kilobyte each; 1..262144). A hand meeting more grows them once on the stepping thread: raise " +
+                 "it for objects denser than about 10^4 spheres.")]
+        [SerializeField] int maxCandidatesPerHand = 1024;
         [Tooltip("Gravity on dynamic objects, m/s², Unity frame.")]
         [SerializeField] Vector3 gravity = Vector3.zero;
 
@@ -66,6 +70,10 @@ namespace Frusta.Unity
         /// <summary>Object slots. Set before the component wakes.</summary>
         public int MaxObjects { get => maxObjects; set => maxObjects = value; }
 
+        /// <summary>Object spheres near one hand that its buffers hold
+        /// (<see cref="FrustaWorldDef.MaxCandidatesPerHand"/>). Set before the component wakes.</summary>
+        public int MaxCandidatesPerHand { get => maxCandidatesPerHand; set => maxCandidatesPerHand = value; }
+
         /// <summary>The world; null before Awake and after destruction.</summary>
         public World World => world;
 
@@ -82,6 +90,7 @@ namespace Frusta.Unity
             def.RealtimePriority = realtimePriority;
             def.MaxObjects = maxObjects;
             def.MaxHands = maxHands;
+            def.MaxCandidatesPerHand = maxCandidatesPerHand;
             def.Gravity = gravity.ToFrustaVector();
             world = new World(def);
 #if UNITY_EDITOR

@@ -79,7 +79,7 @@
 #define FRUSTA_VERSION \
   (FRUSTA_VERSION_MAJOR * 1000000 + FRUSTA_VERSION_MINOR * 1000 + FRUSTA_VERSION_PATCH)
 /** Bumped whenever a struct layout or a signature changes; see frusta_check_abi(). */
-#define FRUSTA_ABI_VERSION 8
+#define FRUSTA_ABI_VERSION 9
 
 /** The library's FRUSTA_VERSION. Thread: any. */
 FRUSTA_API int32_t frusta_version(void);
@@ -786,8 +786,14 @@ typedef struct frusta_world_def {
   double max_extrapolation;     /* seconds, 0..0.1: how long past its newest sample a
                                    hand moves on at the sample's velocity before it
                                    holds; default 0.04 */
+  int32_t max_candidates_per_hand; /* object spheres near a hand that its buffers hold,
+                                   made when the hand is added (about half a kilobyte
+                                   each), 1..262144; default 1024 (the grasp of a ball
+                                   of 10^4 leaves meets up to 951, of 10^5 leaves
+                                   8,760). A hand that meets more grows them once on
+                                   the stepping thread: an allocation in a real-time
+                                   step */
   int32_t internal_value;       /* set by frusta_default_world_def(); do not touch */
-  int32_t reserved0;            /* explicit padding */
 } frusta_world_def;
 
 /** An object as it is added: where, what it is made of, and whether the world moves

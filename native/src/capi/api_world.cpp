@@ -36,6 +36,7 @@ frusta_result read_world_def(const frusta_world_def& in, WorldDef* out) {
   def.realtime_priority = in.realtime_priority == 1;
   def.gravity = vec3_of(in.gravity);
   def.max_contacts_per_hand = in.max_contacts_per_hand;
+  def.solver.candidate_capacity = in.max_candidates_per_hand;
   def.command_capacity = in.command_capacity;
   def.solver.prediction_margin = in.prediction_margin;
   def.solver.lod_error = in.lod_error;
@@ -161,6 +162,7 @@ FRUSTA_API frusta_world_def frusta_default_world_def(void) {
   def.max_iterations = d.solver.max_iterations;
   def.max_substeps = d.solver.max_substeps;
   def.max_contacts_per_hand = d.max_contacts_per_hand;
+  def.max_candidates_per_hand = d.solver.candidate_capacity;
   def.command_capacity = d.command_capacity;
   def.max_fingertip_force = d.device_limits.max_fingertip_force;
   def.max_finger_resistance = d.device_limits.max_finger_resistance;

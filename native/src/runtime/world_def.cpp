@@ -89,6 +89,9 @@ frusta_result check_world_def(const WorldDef& def) {
     return fail(FRUSTA_ERROR_OUT_OF_RANGE, "max_objects is %d, must be 1..65535", def.max_objects);
   if (def.max_hands < 1 || def.max_hands > kMaxHands)
     return fail(FRUSTA_ERROR_OUT_OF_RANGE, "max_hands is %d, must be 1..%d", def.max_hands, kMaxHands);
+  if (def.solver.candidate_capacity < 1 || def.solver.candidate_capacity > kMaxCandidateCapacity)
+    return fail(FRUSTA_ERROR_OUT_OF_RANGE, "max_candidates_per_hand is %d, must be 1..%d",
+                def.solver.candidate_capacity, kMaxCandidateCapacity);
   if (def.max_contacts_per_hand < 0 || def.max_contacts_per_hand > 65536)
     return fail(FRUSTA_ERROR_OUT_OF_RANGE, "max_contacts_per_hand is %d, must be 0..65536",
                 def.max_contacts_per_hand);

@@ -29,11 +29,11 @@ constexpr double kStandstill = 1e-9;
 // 0.06 N more than the haptic hand's move accounts for.
 constexpr int32_t kSlideIterations = 6;
 constexpr int kDeadlineReserveDivisor = 8;
-// What a new hand's buffers hold before they grow (520 KB in all): the grasp of a ball of
-// 10^4 leaves keeps up to 951 candidates in a set (a body's walk and a QP's rows hold
-// fewer) and reports up to 35 contacts; one of 10^5 leaves, 8,760 and 281
-constexpr int32_t kReservedCandidates = 1024;
-constexpr size_t kReservedContacts = 256;
+// What a new hand's contact lists hold before they grow, beside its candidates
+// (SolverParams::candidate_capacity): at least this many, and a quarter of the
+// candidates (a contact is a candidate within the contact distance: the grasp of a
+// ball of 10^4 leaves reports up to 35 of 951, one of 10^5 leaves 281 of 8,760)
+constexpr int32_t kReservedContacts = 256;
 constexpr int32_t kReservedObjects = 64;
 // How much larger than a sub-step needs the box is that a broad phase is asked about
 // (metres): the hand may move this far before it asks again.
@@ -112,12 +112,13 @@ HandSolver::HandSolver(const HandModel& model, const SolverParams& params)
   forward_kinematics(model_, graphic_, pose_);
   target_pose_ = pose_;
   // a first contact allocates nothing on the 1 kHz thread (CandidateSet::reserve)
-  candidates_.reserve(kReservedCandidates, kReservedObjects);
-  cache_.reserve(kReservedCandidates, kReservedObjects);
-  rows_.resize(kReservedCandidates);
+  assert(params.candidate_capacity >= 1);  // checked where it entered (check_world_def)
+  candidates_.reserve(params.candidate_capacity, kReservedObjects);
+  cache_.reserve(params.candidate_capacity, kReservedObjects);
+  rows_.resize(static_cast<size_t>(params.candidate_capacity));
   near_.resize(static_cast<size_t>(kReservedObjects));
   for (std::vector<SolverContact>* list : {&contacts_, &last_contacts_}) {
-    list->resize(kReservedContacts);
+    list->resize(static_cast<size_t>(std::max(kReservedContacts, params.candidate_capacity / 4)));
     list->clear();
   }
 }

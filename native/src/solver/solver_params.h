@@ -52,6 +52,12 @@ struct SolverParams {
   // them, so a hand may stop up to about this far short of the leaves; dense trees shed
   // most candidates. The knob to use.
   double lod_error = 0.0;
+  // Buffers for this many candidates (object spheres near the hand) and their scratch,
+  // about half a kilobyte each, are made with the solver, every page written on the
+  // thread that makes it: the 1 kHz thread then neither allocates nor faults memory in
+  // while a hand meets no more. A scene that holds more near a hand grows them there,
+  // once. The grasp of a ball of 10^4 leaves meets up to 951; one of 10^5, 8,760.
+  int32_t candidate_capacity = 1024;
 };
 
 }  // namespace frusta

@@ -159,7 +159,7 @@ namespace Frusta.Binding.Tests
             Assert.Equal((10.0, 10.0, 0.5, 20.0, 1.0),
                 (w.MaxFingertipForce, w.MaxFingerResistance, w.MaxJointTorque, w.MaxPalmForce, w.MaxPalmTorque));
             Assert.Equal((0.010, 0.040), (w.InputDelay, w.MaxExtrapolation));
-            Assert.Equal(0, w.reserved0);
+            Assert.Equal(1024, w.MaxCandidatesPerHand);
 
             FrustaObjectDef o = FrustaObjectDef.Default;
             Assert.False(o.Dynamic);

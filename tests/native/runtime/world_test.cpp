@@ -343,6 +343,34 @@ TEST(World, AHandsFirstGraspAllocatesNothing) {
   }
 }
 
+// A denser ball (4 x 10^4 leaves: some 3,000 candidates near the closing hand) outgrows
+// the default buffers, which then grow on the stepping thread; a world made for more
+// candidates (max_candidates_per_hand) makes them with the hand, and its steps allocate
+// nothing.
+TEST(World, AHandMadeForMoreCandidatesGraspsADenseBallAllocatingNothing) {
+  const scenes::HandScenario grasp = scenes::ball_grasp(scenes::ball_shell(40000, 0.04));
+  for (int32_t capacity : {WorldDef{}.solver.candidate_capacity, 8192}) {
+    WorldDef def;
+    def.solver.candidate_capacity = capacity;
+    World world(def);
+    HandHandle hand;
+    ObjectHandle ball;
+    ASSERT_NO_FATAL_FAILURE(add_hand_and_ball(world, grasp, &hand, &ball));
+    world.set_haptic(hand, grasp.haptic(0));
+    world.step();  // applies the adds, made on this thread
+    const int64_t before = allocation_count();
+    for (int32_t t = 1; t < grasp.steps; ++t) {
+      world.set_haptic(hand, grasp.haptic(t));
+      world.step();
+    }
+    if (capacity == 8192)
+      EXPECT_EQ(allocation_count() - before, 0) << "made for " << capacity << " candidates";
+    else
+      EXPECT_GT(allocation_count() - before, 0) << "the default buffers hold this ball's candidates";
+    EXPECT_GT(world.read().hand(hand)->contact_count, 0) << "the hand holds the ball";
+  }
+}
+
 TEST(World, AReaderOnAnotherThreadNeverSeesATornSnapshot) {
   World world(WorldDef{});
   const HandHandle hand = add_hand(world, right_hand());

@@ -219,7 +219,7 @@ namespace Frusta.Binding
         /// <summary>major*1000000 + minor*1000 + patch; frusta_version() returns the library's.</summary>
         public const int Version = VersionMajor * 1000000 + VersionMinor * 1000 + VersionPatch;
         /// <summary>Bumped whenever a struct layout or a signature changes; see frusta_check_abi().</summary>
-        public const int AbiVersion = 8;
+        public const int AbiVersion = 9;
         /// <summary>Fingers per hand, thumb first (frusta_finger).</summary>
         public const int FingerCount = 5;
         /// <summary>Segments per finger, proximal to distal.</summary>

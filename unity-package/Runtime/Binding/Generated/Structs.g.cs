@@ -435,10 +435,18 @@ namespace Frusta.Binding
         /// holds; default 0.04
         /// </summary>
         public double MaxExtrapolation;
+        /// <summary>
+        /// object spheres near a hand that its buffers hold,
+        /// made when the hand is added (about half a kilobyte
+        /// each), 1..262144; default 1024 (the grasp of a ball
+        /// of 10^4 leaves meets up to 951, of 10^5 leaves
+        /// 8,760). A hand that meets more grows them once on
+        /// the stepping thread: an allocation in a real-time
+        /// step
+        /// </summary>
+        public int MaxCandidatesPerHand;
         /// <summary>set by frusta_default_world_def(); do not touch</summary>
         internal int internal_value;
-        /// <summary>explicit padding</summary>
-        internal int reserved0;
     }
 
     /// <summary>
