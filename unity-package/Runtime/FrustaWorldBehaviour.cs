@@ -34,8 +34,8 @@ namespace Frusta.Unity
         [SerializeField] int maxObjects = 64;
         [Tooltip("Hand slots (1..64): hands at once, a user's two, another user's, rigs spawned at run time.")]
         [SerializeField] int maxHands = 8;
-        [Tooltip("Object spheres near one hand that its buffers hold, made when the hand is added (about half a " +
-                 "kilobyte each; 1..262144). A hand meeting more grows them once on the stepping thread: raise " +
+        [Tooltip("Object spheres near one hand that its buffers hold, made when the hand is added (about 400 " +
+                 "bytes each; 1..262144). A hand meeting more grows them once on the stepping thread: raise " +
                  "it for objects denser than about 10^4 spheres.")]
         [SerializeField] int maxCandidatesPerHand = 1024;
         [Tooltip("Gravity on dynamic objects, m/s², Unity frame.")]

@@ -787,8 +787,8 @@ typedef struct frusta_world_def {
                                    hand moves on at the sample's velocity before it
                                    holds; default 0.04 */
   int32_t max_candidates_per_hand; /* object spheres near a hand that its buffers hold,
-                                   made when the hand is added (about half a kilobyte
-                                   each), 1..262144; default 1024 (the grasp of a ball
+                                   made when the hand is added (about 400 bytes each),
+                                   1..262144; default 1024 (the grasp of a ball
                                    of 10^4 leaves meets up to 951, of 10^5 leaves
                                    8,760). A hand that meets more grows them once on
                                    the stepping thread: an allocation in a real-time

@@ -30,11 +30,8 @@ class CandidateCache {
               int32_t only_count = 0);
   // The objects moved or changed, or the set served as scratch: nothing cached holds.
   void clear() { valid_ = false; }
-  // CandidateSet::reserve for the next walk's set
-  void reserve(int32_t spheres, int32_t objects) { spare_.reserve(spheres, objects); }
 
  private:
-  CandidateSet spare_;  // the next walk's
   // how far each body's last walk looked (from where the set placed it), and where its
   // spheres end in the set
   DetectionMargins margins_;

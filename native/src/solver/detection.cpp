@@ -146,15 +146,32 @@ void append_by_gap(CandidateSet& out, int body, double margin) {
   }
 }
 
-void copy_body(const CandidateSet& from, int body, CandidateSet& out) {
-  out.candidates.insert(out.candidates.end(), from.of(body), from.of(body) + from.count(body));
-  if (body == kPalmBody) {
-    out.placed.palm_position = from.placed.palm_position;
-    out.placed.palm_rotation = from.placed.palm_rotation;
-  } else {
-    out.placed.segments[static_cast<size_t>(body)] =
-        from.placed.segments[static_cast<size_t>(body)];
+// Move the kept bodies' runs down over the walks they replaced, in place, in the order
+// they lie: once the replaced outnumber the kept (so each kept candidate is moved no more
+// often than as many are walked), and a set that kept its runs as they were walked does
+// not grow without end.
+void compact_kept(CandidateSet& out, uint32_t keep) {
+  int32_t kept = 0;
+  int bodies[kBodyCount];
+  int n = 0;
+  for (int body = 0; body < kBodyCount; ++body)
+    if (((keep >> body) & 1u) != 0) {
+      kept += out.count(body);
+      bodies[n++] = body;
+    }
+  if (static_cast<int32_t>(out.candidates.size()) - kept <= kept) return;
+  std::sort(bodies, bodies + n, [&](int a, int b) { return out.begin[a] < out.begin[b]; });
+  Candidate* c = out.candidates.data();
+  int32_t next = 0;
+  for (int k = 0; k < n; ++k) {
+    const int body = bodies[k];
+    const int32_t count = out.count(body);
+    if (next < out.begin[body]) std::copy(c + out.begin[body], c + out.end[body], c + next);
+    out.begin[body] = next;
+    out.end[body] = next + count;
+    next += count;
   }
+  out.candidates.resize(static_cast<size_t>(next));
 }
 
 }  // namespace
@@ -166,7 +183,7 @@ void CandidateSet::reserve(int32_t spheres, int32_t objects) {
     v.resize(std::max(v.size(), size));
     v.clear();
   };
-  written(candidates, n);
+  written(candidates, 2 * n);  // and the walks the next ones replace (compact_kept)
   written(sorting, n);
   written(masked_hits, n);
   written(order, 2 * n);
@@ -288,9 +305,11 @@ double bound_clearance(const HandReach& reach, const HandPose& pose, const Solve
 void detect_candidates(const HandModel& model, const HandReach& reach, const HandPose& pose,
                        const SolverObject* objects, int32_t object_count, const DetectionMargins& margins,
                        TreeCut cut, CandidateSet& out, const int32_t* only, int32_t only_count,
-                       DetectionReuse reuse) {
-  assert(reuse.last != &out);
-  out.candidates.clear();
+                       uint32_t kept) {
+  if (kept == 0)
+    out.candidates.clear();
+  else
+    compact_kept(out, kept);
   out.tree_nodes_visited = 0;
   out.near_objects.clear();
   if (out.hits.empty()) out.hits.resize(256);
@@ -340,12 +359,7 @@ void detect_candidates(const HandModel& model, const HandReach& reach, const Han
     for (int s = 0; s < FRUSTA_SEGMENTS_PER_FINGER; ++s) {
       const int body = f * FRUSTA_SEGMENTS_PER_FINGER + s;
       const double margin = margins.body[body];
-      out.begin[body] = static_cast<int32_t>(out.candidates.size());
-      if (reuse.has(body)) {
-        copy_body(*reuse.last, body, out);
-        out.end[body] = static_cast<int32_t>(out.candidates.size());
-        continue;
-      }
+      if (((kept >> body) & 1u) != 0) continue;
       const Segment segment = finger_segment(model, pose, f, s);
       out.placed.segments[static_cast<size_t>(body)] = segment;
       const SegmentFrame world = make_segment_frame(segment);
@@ -365,12 +379,8 @@ void detect_candidates(const HandModel& model, const HandReach& reach, const Han
       append_by_gap(out, body, margin);
     }
   }
-  out.begin[kPalmBody] = static_cast<int32_t>(out.candidates.size());
   out.need = margins.body;
-  if (reuse.has(kPalmBody)) {
-    copy_body(*reuse.last, kPalmBody, out);
-    out.end[kPalmBody] = static_cast<int32_t>(out.candidates.size());
-  } else {
+  if (((kept >> kPalmBody) & 1u) == 0) {
     out.placed.palm_position = pose.palm_position;
     out.placed.palm_rotation = pose.palm_rotation;
     detect_palm(model, reach, pose, objects, margins.body[kPalmBody], cut, out);

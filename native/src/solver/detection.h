@@ -62,7 +62,9 @@ struct MaskedHit {
 // their gap bounds' least (ties in the order of the walk). A pass for the spheres within
 // some margin of a body stops at the first whose bound rules it out: every one after is
 // ruled out too. Grasping a ball, 9 in 10 of a segment's candidates lie further than the
-// clearance and the rows look, and each pass over them had cost a tenth of a step.
+// clearance and the rows look, and each pass over them had cost a tenth of a step. The
+// bodies' runs lie in any order, with walks they replaced between them
+// (detect_candidates' `kept`).
 struct CandidateSet {
   std::vector<Candidate> candidates;
   int32_t begin[kBodyCount] = {};
@@ -83,8 +85,9 @@ struct CandidateSet {
   std::vector<Candidate> sorting;  // a body's, as found, before they are ordered
 
   // Room for `spheres` candidates (a body's scratch for as many) among `objects` near,
-  // every page written now, on the thread that makes the hand: a first contact on the
-  // 1 kHz thread then neither allocates nor faults memory in. A denser scene grows them.
+  // and for as many walks replaced, every page written now, on the thread that makes the
+  // hand: a first contact on the 1 kHz thread then neither allocates nor faults memory
+  // in. A denser scene grows them.
   void reserve(int32_t spheres, int32_t objects);
   int32_t count(int body) const { return end[body] - begin[body]; }
   const Candidate* of(int body) const { return candidates.data() + begin[body]; }
@@ -205,15 +208,6 @@ struct DetectionMargins {
   double largest() const { return *std::max_element(body.begin(), body.end()); }
 };
 
-// What a detection copies from an earlier one instead of walking the trees again: the
-// candidates of `bodies` (bit b: body b) in `last`, made with the same objects, which
-// hold what the caller needs of those bodies now (CandidateCache keeps, with each body's
-// walk, where it looked from and how far).
-struct DetectionReuse {
-  const CandidateSet* last = nullptr;
-  uint32_t bodies = 0;
-  bool has(int body) const { return last != nullptr && ((bodies >> body) & 1u) != 0; }
-};
 static_assert(kBodyCount <= 32, "a bit per body");
 
 // The bodies (bit b: body b) whose solid is exactly where it was: a segment whose two
@@ -224,12 +218,16 @@ uint32_t bodies_unmoved(const HandPose& then, const HandPose& now);
 // nodes where the cut stops standing in for theirs. The vector keeps its capacity
 // between calls, so a steady scene allocates nothing. `only` (null: every object) lists
 // the objects to look at, in increasing order: a broad phase's answer, which must hold
-// every object whose bound comes within the largest margin of the hand's. `out` must not
-// be `reuse.last`.
+// every object whose bound comes within the largest margin of the hand's. `kept` (bit b:
+// body b): bodies whose candidates `out` holds from an earlier detection among the same
+// objects, which hold what the caller needs of them now, and stay as they are (where
+// they lie in `out`, and where `out` placed the body); the others' are walked again.
+// CandidateSet::reserve leaves room for the walks they leave behind, which the kept
+// ones are moved down over once they outnumber them.
 void detect_candidates(const HandModel& model, const HandReach& reach, const HandPose& pose,
                        const SolverObject* objects, int32_t object_count, const DetectionMargins& margins,
                        TreeCut cut, CandidateSet& out, const int32_t* only = nullptr,
-                       int32_t only_count = 0, DetectionReuse reuse = {});
+                       int32_t only_count = 0, uint32_t kept = 0);
 
 // How deep one body of the hand at `pose` sinks into its candidates, as a negative
 // exact gap; 0 when it touches none (callers compare it with thresholds <= 0 only, so

@@ -114,7 +114,6 @@ HandSolver::HandSolver(const HandModel& model, const SolverParams& params)
   // a first contact allocates nothing on the 1 kHz thread (CandidateSet::reserve)
   assert(params.candidate_capacity >= 1);  // checked where it entered (check_world_def)
   candidates_.reserve(params.candidate_capacity, kReservedObjects);
-  cache_.reserve(params.candidate_capacity, kReservedObjects);
   rows_.resize(static_cast<size_t>(params.candidate_capacity));
   near_.resize(static_cast<size_t>(kReservedObjects));
   for (std::vector<SolverContact>* list : {&contacts_, &last_contacts_}) {

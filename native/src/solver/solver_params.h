@@ -53,7 +53,7 @@ struct SolverParams {
   // most candidates. The knob to use.
   double lod_error = 0.0;
   // Buffers for this many candidates (object spheres near the hand) and their scratch,
-  // about half a kilobyte each, are made with the solver, every page written on the
+  // about 400 bytes each, are made with the solver, every page written on the
   // thread that makes it: the 1 kHz thread then neither allocates nor faults memory in
   // while a hand meets no more. A scene that holds more near a hand grows them there,
   // once. The grasp of a ball of 10^4 leaves meets up to 951; one of 10^5, 8,760.

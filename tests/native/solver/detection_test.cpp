@@ -266,7 +266,7 @@ void check_random_hands(const HandModel& model, int32_t full_draws, uint64_t see
       objects.push_back({&tree->tree, {at - rotation * local.center + toward * local.radius * unit(rng), rotation}});
     }
     // then one finger bent further at its middle joint, and half the time the palm
-    // moved too: a detection copies what did not move from the one before
+    // moved too: a detection keeps what did not move from the one before, in place
     HandState moved_state = state;
     const int bent = static_cast<int>(unit(rng) * FRUSTA_FINGER_COUNT) % FRUSTA_FINGER_COUNT;
     moved_state.angles[bent * FRUSTA_JOINTS_PER_FINGER + 2] += 0.01;
@@ -295,9 +295,17 @@ void check_random_hands(const HandModel& model, int32_t full_draws, uint64_t see
         palm_candidates += set.count(kPalmBody);
         const std::vector<Candidate> expected_moved =
             walk_per_probe(model, reach, moved, objects, margin, cut, begin, hits);
+        reused = set;
         detect_candidates(model, reach, moved, objects.data(), static_cast<int32_t>(objects.size()), margin, cut,
-                          reused, nullptr, 0, {&set, unmoved});
+                          reused, nullptr, 0, unmoved);
         expect_same(expected_moved, begin, reused, what + ", moved");
+        if (testing::Test::HasFatalFailure()) return;
+        // again, keeping only the palm's (if it did not move) and the bent finger's
+        // neighbours': the walks replaced now outnumber those kept, which move down
+        const uint32_t few = unmoved & ((1u << kPalmBody) | (7u << (((bent + 1) % FRUSTA_FINGER_COUNT) * 3)));
+        detect_candidates(model, reach, moved, objects.data(), static_cast<int32_t>(objects.size()), margin, cut,
+                          reused, nullptr, 0, few);
+        expect_same(expected_moved, begin, reused, what + ", moved, kept few");
         if (testing::Test::HasFatalFailure()) return;
       }
   }
