@@ -42,8 +42,9 @@ options (a value outside its range is refused with exit code 2):
   -o, --output PATH    where to write the tree (default: INPUT with .frtree)
   --max-error MM       target for both error figures, millimetres, 0.01..1000
                        (default 1)
-  --max-leaves N       leaf budget, 1..16777216; the bake stops there even if the
-                       target is not met (default 200000)
+  --max-leaves N       leaf budget, 1..16777216; a target it does not fit is
+                       coarsened until the cover fits (the figures say how far;
+                       default 200000)
   --branching N        children per tree node, 2..16 (default 4)
   --max-depth N        refuse trees deeper than this, 1..40 (default 40)
   --samples N          points behind each error figure, 1000..10000000; >= 100000

@@ -68,7 +68,7 @@ namespace Frusta.Editor
                     var asset = AssetDatabase.LoadAssetAtPath<FrustaSphereTreeAsset>(path);
                     if (asset == null) finished(null, MessageType.Error, $"Baked {path}, but it did not import.");
                     else if (asset.TargetMet) finished(asset, MessageType.Info, $"Baked {path}: both errors within {target:0.###} mm.");
-                    else finished(asset, MessageType.Warning, $"Baked {path}, but the leaf budget ran out before the target: raise it or the target error.");
+                    else finished(asset, MessageType.Warning, $"Baked {path} within the leaf budget at a coarser error than the target (see its error figures): raise the budget or the target error.");
                 }
                 catch (FrustaException e)
                 {

@@ -588,7 +588,9 @@ typedef struct frusta_bake_def {
   double target_error;   /* metres, bound on both error figures, 1e-5..1 (10 um: what
                             float geometry resolves on a hand-sized object; 1 m: spheres
                             larger than any hand); default 0.001 */
-  int64_t max_leaves;    /* leaf budget, 1..2^24; default 200000 */
+  int64_t max_leaves;    /* leaf budget, 1..2^24; a target it does not fit is coarsened
+                            until the cover fits (the tree's error figures say how
+                            far); default 200000 */
   int32_t max_depth;     /* 1..40; a deeper tree is refused; default 40 */
   int32_t reserved0;     /* explicit padding */
   int64_t error_samples; /* points behind each error figure, 1e3..1e7 (each point is kept
@@ -632,8 +634,9 @@ FRUSTA_API frusta_bake_def frusta_default_bake_def(void);
 /** Create a sphere tree by baking it from triangles: vertices are vertex_count xyz
  *  triples in metres (right-handed object frame), indices are index_count / 3
  *  triangles wound counter-clockwise seen from outside. Blocks for the bake's duration
- *  (seconds for 10^5 triangles): call it off any frame loop. A tree that misses
- *  the target within max_leaves is still returned; check info.target_met.
+ *  (seconds for 10^5 triangles): call it off any frame loop. A target that does not
+ *  fit in max_leaves is coarsened until the whole object is covered within them, and
+ *  the tree is still returned; check info.target_met and its error figures.
  *  The baking is done by the baker library (libfrusta_bake.so; Embree), loaded from
  *  beside this library on first use (or from the path in FRUSTA_BAKE_PLUGIN); where
  *  it is not installed (platforms without Embree) this fails with

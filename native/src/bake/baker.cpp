@@ -70,15 +70,57 @@ frusta_result bake_sphere_tree(const TriangleMesh& mesh, const BakeParams& param
   const auto start = std::chrono::steady_clock::now();
   std::unique_ptr<MeshQueries> queries;
   if (frusta_result r = MeshQueries::create(mesh, &queries)) return r;
+  // how much each attempt that did not fit the budget coarsens the target: at least a
+  // quarter (an attempt that ran out filling the interior says nothing finer), at most
+  // fourfold (a cover's count falls faster than the square of its error once its balls
+  // reach their largest)
+  constexpr double kCoarsenLeast = 1.25, kCoarsenMost = 4.0;
+  constexpr int kBudgetHalvings = 3;
   // the cover takes most of a bake, the error's measurement the rest
   constexpr double kCoverShare = 0.7;
   const auto share = [&progress](double from, double width) {
     return progress ? ProgressFn([&progress, from, width](double f) { return progress(from + width * f); })
                     : ProgressFn();
   };
-  const CoverResult cover = cover_with_spheres(
-      mesh, *queries, {params.target_error, params.max_leaves, params.seed}, share(0.0, kCoverShare));
-  if (cover.cancelled) return fail(FRUSTA_ERROR_CANCELLED, "the bake was cancelled");
+  // A budget the target does not fit in coarsens the target until the cover fits, so the
+  // tree covers the whole object at the finest error the budget allows: a cover stopped
+  // by its budget had covered a corner of the object at the target and left the rest
+  // bare (a mug in 300 leaves: 129 mm uncovered). Each attempt aims at the error the last
+  // one's progress says fits (its leaves cover a share of the surface about as the
+  // square of the error); then, while a fitting cover leaves a fifth of the budget
+  // unused, a few halvings between it and the finest that did not fit. Each attempt
+  // takes half what is left of the cover's progress.
+  CoverResult cover;
+  double aimed = params.target_error, progress_from = 0.0;
+  auto attempt = [&](double aim) {
+    const double progress_width = 0.5 * (kCoverShare - progress_from);
+    CoverResult c = cover_with_spheres(mesh, *queries, {aim, params.max_leaves, params.seed},
+                                       share(progress_from, progress_width));
+    progress_from += progress_width;
+    return c;
+  };
+  double too_fine = 0.0;  // the coarsest aim that did not fit (0: none)
+  for (;;) {
+    cover = attempt(aimed);
+    if (cover.cancelled) return fail(FRUSTA_ERROR_CANCELLED, "the bake was cancelled");
+    if (!cover.budget_exhausted || aimed >= kMaxTargetError) break;
+    too_fine = aimed;
+    aimed = std::min(kMaxTargetError, aimed * std::clamp(1.1 / std::sqrt(std::max(cover.reached, 1e-6)),
+                                                         kCoarsenLeast, kCoarsenMost));
+  }
+  for (int halving = 0; halving < kBudgetHalvings && too_fine > 0.0 && !cover.budget_exhausted &&
+                        static_cast<double>(cover.leaves.size()) < 0.8 * static_cast<double>(params.max_leaves);
+       ++halving) {
+    const double between = std::sqrt(too_fine * aimed);
+    CoverResult finer = attempt(between);
+    if (finer.cancelled) return fail(FRUSTA_ERROR_CANCELLED, "the bake was cancelled");
+    if (finer.budget_exhausted) {
+      too_fine = between;
+    } else {
+      aimed = between;
+      cover = std::move(finer);
+    }
+  }
   if (cover.leaves.empty())
     return fail(FRUSTA_ERROR_OUT_OF_RANGE, "the mesh encloses no volume the baker could fill");
 

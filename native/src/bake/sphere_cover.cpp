@@ -118,6 +118,7 @@ CoverResult cover_with_spheres(const TriangleMesh& mesh, const MeshQueries& quer
     if (gap[i] <= cover_error) continue;
     if (static_cast<int64_t>(result.leaves.size()) >= params.max_leaves) {
       result.budget_exhausted = true;
+      result.reached = static_cast<double>(i) / static_cast<double>(samples.size());
       break;
     }
     Sphere ball = shrinking_ball(queries, samples[i].point, samples[i].normal, max_radius);

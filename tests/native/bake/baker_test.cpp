@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include <glm/geometric.hpp>
@@ -93,18 +94,35 @@ TEST(Baker, TheInteriorIsFilledSoADeepFingerMeetsLeaves) {
   }
 }
 
-TEST(Baker, LeafBudgetStopsTheBakeAndSaysSo) {
-  // 0.5 mm needs some 240 balls on this sphere; a finer target only samples its surface
-  // more densely first (0.2 mm: 4 million samples, five seconds)
+// A budget the target does not fit in coarsens the target until the cover fits: the
+// tree covers the whole object within the budget, at the error its figures report (and
+// meets the target where they say so). Before, the cover stopped where the budget ran
+// out, a corner of the object covered at the target and the rest bare.
+TEST(Baker, ALeafBudgetTheTargetDoesNotFitCoarsensTheWholeCover) {
   BakeParams params;
-  params.target_error = 0.0005;
-  params.max_leaves = 50;
-  TreeFile file;
-  bool met = true;
-  ASSERT_EQ(bake_sphere_tree(scenes::make_sphere(0.04, 32), params, nullptr, &file, &met), FRUSTA_OK);
-  EXPECT_FALSE(met);
-  EXPECT_LE(file.tree.leaves.size(), 50u);
-  EXPECT_GT(file.bake.uncovered_error, 0.0005);  // and the figure shows by how much
+  params.target_error = 0.001;
+  const TriangleMesh sphere = scenes::make_sphere(0.04, 32);
+  TreeFile whole;
+  bool met = false;
+  ASSERT_EQ(bake_sphere_tree(sphere, params, nullptr, &whole, &met), FRUSTA_OK);
+  ASSERT_TRUE(met);
+  const int64_t leaves = static_cast<int64_t>(whole.tree.leaves.size());
+  for (int64_t budget : {int64_t{1}, int64_t{8}, leaves / 8, leaves / 2}) {
+    params.max_leaves = budget;
+    TreeFile file;
+    ASSERT_EQ(bake_sphere_tree(sphere, params, nullptr, &file, &met), FRUSTA_OK);
+    EXPECT_LE(file.tree.leaves.size(), static_cast<size_t>(budget));
+    EXPECT_GE(file.tree.leaves.size(), static_cast<size_t>((budget + 1) / 2)) << "half the budget unused";
+    // the figures say how far from the target, and whether it was met
+    EXPECT_EQ(met, std::max(file.bake.uncovered_error, file.bake.protruding_error) <= params.target_error)
+        << budget;
+    if (budget <= leaves / 8) {
+      EXPECT_FALSE(met) << budget;
+    }
+    // the whole sphere covered: none of it further from a leaf than half its radius (a
+    // cover stopped by the budget left most of it bare, a diameter from the nearest leaf)
+    EXPECT_LT(file.bake.uncovered_error, 0.02) << budget << " leaves";
+  }
 }
 
 TEST(Baker, BadParametersAndMeshesAreRefused) {

@@ -87,8 +87,9 @@ namespace Frusta.Binding
 
         /// <summary>
         /// Bake a tree from triangles (<c>frusta_create_sphere_tree_from_mesh</c>). Blocks for the bake's
-        /// duration (seconds for 10^5 triangles): call it off any frame loop. A tree that misses the
-        /// target within MaxLeaves is still returned: check <see cref="FrustaSphereTreeInfo.TargetMet"/>.
+        /// duration (seconds for 10^5 triangles): call it off any frame loop. A target that does not fit
+        /// in MaxLeaves is coarsened until the whole object is covered within them, and the tree is
+        /// still returned: check <see cref="FrustaSphereTreeInfo.TargetMet"/> and its error figures.
         /// Thread: any; bakes on different threads run concurrently.
         /// </summary>
         /// <param name="vertices">xyz triples, metres, right-handed object frame.</param>

@@ -240,8 +240,9 @@ namespace Frusta.Binding
         /// Create a sphere tree by baking it from triangles: vertices are vertex_count xyz
         /// triples in metres (right-handed object frame), indices are index_count / 3
         /// triangles wound counter-clockwise seen from outside. Blocks for the bake's duration
-        /// (seconds for 10^5 triangles): call it off any frame loop. A tree that misses
-        /// the target within max_leaves is still returned; check info.target_met.
+        /// (seconds for 10^5 triangles): call it off any frame loop. A target that does not
+        /// fit in max_leaves is coarsened until the whole object is covered within them, and
+        /// the tree is still returned; check info.target_met and its error figures.
         /// The baking is done by the baker library (libfrusta_bake.so; Embree), loaded from
         /// beside this library on first use (or from the path in FRUSTA_BAKE_PLUGIN); where
         /// it is not installed (platforms without Embree) this fails with

@@ -270,7 +270,11 @@ namespace Frusta.Binding
         /// larger than any hand); default 0.001
         /// </summary>
         public double TargetError;
-        /// <summary>leaf budget, 1..2^24; default 200000</summary>
+        /// <summary>
+        /// leaf budget, 1..2^24; a target it does not fit is coarsened
+        /// until the cover fits (the tree's error figures say how
+        /// far); default 200000
+        /// </summary>
         public long MaxLeaves;
         /// <summary>1..40; a deeper tree is refused; default 40</summary>
         public int MaxDepth;
