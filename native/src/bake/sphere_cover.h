@@ -25,10 +25,10 @@ struct CoverParams {
 struct CoverResult {
   std::vector<Sphere> leaves;
   bool budget_exhausted = false;  // max_leaves reached before the target was met
-  // the share of the surface samples visited when the budget ran out (1 when it ran out
-  // filling the interior): how far short of the target the budget fell
   bool cancelled = false;         // progress returned false; leaves are incomplete
   size_t surface_samples = 0;
+  // the share of the surface samples visited when the budget ran out (1 when it ran out
+  // filling the interior): how far short of the target the budget fell
   double reached = 1.0;
 };
 

@@ -2,7 +2,6 @@
 #include "solver/detection.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -150,21 +149,21 @@ void append_by_gap(CandidateSet& out, int body, double margin) {
 // they lie: once the replaced outnumber the kept (so each kept candidate is moved no more
 // often than as many are walked), and a set that kept its runs as they were walked does
 // not grow without end.
-void compact_kept(CandidateSet& out, uint32_t keep) {
+void compact_kept(CandidateSet& out, uint32_t kept_bodies) {
   int32_t kept = 0;
-  int bodies[kBodyCount];
+  int order[kBodyCount];
   int n = 0;
   for (int body = 0; body < kBodyCount; ++body)
-    if (((keep >> body) & 1u) != 0) {
+    if (((kept_bodies >> body) & 1u) != 0) {
       kept += out.count(body);
-      bodies[n++] = body;
+      order[n++] = body;
     }
   if (static_cast<int32_t>(out.candidates.size()) - kept <= kept) return;
-  std::sort(bodies, bodies + n, [&](int a, int b) { return out.begin[a] < out.begin[b]; });
+  std::sort(order, order + n, [&](int a, int b) { return out.begin[a] < out.begin[b]; });
   Candidate* c = out.candidates.data();
   int32_t next = 0;
   for (int k = 0; k < n; ++k) {
-    const int body = bodies[k];
+    const int body = order[k];
     const int32_t count = out.count(body);
     if (next < out.begin[body]) std::copy(c + out.begin[body], c + out.end[body], c + next);
     out.begin[body] = next;
