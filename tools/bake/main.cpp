@@ -65,7 +65,7 @@ exit codes:
   0 written, both figures within the target
   2 bad usage          3 unreadable or invalid input
   4 bake failed        5 the output could not be written
-  6 written, but the leaf budget ran out before the target was met
+  6 written, but a figure misses the target (the leaf budget did not fit it)
 )";
 
 struct Options {
