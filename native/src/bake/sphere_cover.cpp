@@ -85,7 +85,9 @@ CoverResult cover_with_spheres(const TriangleMesh& mesh, const MeshQueries& quer
   // samples about e/3 apart; a gap between samples is then at most ~e/3 larger than
   // at them, so they are covered to 0.6 e
   const double spacing = e / 3.0;
-  const size_t count = static_cast<size_t>(std::clamp(area / (spacing * spacing), 2e4, 4e6));
+  const size_t wanted = static_cast<size_t>(std::clamp(area / (spacing * spacing), 2e4, 4e6));
+  const size_t count = std::min(wanted, static_cast<size_t>(std::clamp(params.max_samples, 2e4, 4e6)));
+  result.sparse = count < wanted;
   const double cover_error = std::max(0.3 * e, e - 1.2 * std::sqrt(area / static_cast<double>(count)));
   const double min_radius = 0.5 * e;  // the most a ball may stand out at an edge
   // a medial ball may be as large as the object, but near a medial point (a ball's

@@ -20,6 +20,10 @@ struct CoverParams {
   double target_error = 0.001;  // metres
   int64_t max_leaves = 100000;
   uint64_t seed = 1;
+  // at most this many surface samples (at least 2e4): fewer than the target's density
+  // asks for test cheaply whether the budget can fit the target at all, since a cover
+  // of sparser samples needs no more leaves; the cover is then not one of the target
+  double max_samples = 4e6;
 };
 
 struct CoverResult {
@@ -30,6 +34,9 @@ struct CoverResult {
   // the share of the surface samples visited when the budget ran out (1 when it ran out
   // filling the interior): how far short of the target the budget fell
   double reached = 1.0;
+  // fewer samples than the target's density asks for (CoverParams::max_samples): leaves
+  // that fit the budget are no cover of the target
+  bool sparse = false;
 };
 
 // progress(fraction 0..1) is called now and then; return false to cancel.

@@ -8,6 +8,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "bake/sphere_cover.h"
 #include "core/error.h"
 #include "meshes/meshes.h"
 #include "scenes/random_cases.h"
@@ -122,6 +123,30 @@ TEST(Baker, ALeafBudgetTheTargetDoesNotFitCoarsensTheWholeCover) {
     // the whole sphere covered: none of it further from a leaf than half its radius (a
     // cover stopped by the budget left most of it bare, a diameter from the nearest leaf)
     EXPECT_LT(file.bake.uncovered_error, 0.02) << budget << " leaves";
+  }
+}
+
+// The baker first tries a target on samples enough for the budget's leaves and coarsens
+// it at once when they exhaust the budget; that stands on this: a budget that runs out
+// on sparser samples runs out on the target's density too (a cover of fewer samples needs
+// no more leaves), and one that fits the sparse samples is flagged as no cover of the
+// target.
+TEST(Baker, ABudgetThatRunsOutOnSparseSamplesRunsOutOnDenseOnes) {
+  for (Case& c : objects()) {
+    std::unique_ptr<MeshQueries> q;
+    ASSERT_EQ(MeshQueries::create(c.mesh, &q), FRUSTA_OK);
+    for (double target : {0.003, 0.0015})
+      for (int64_t budget : {20, 100}) {
+        const CoverResult sparse = cover_with_spheres(c.mesh, *q, {target, budget, 1, 2e4}, nullptr);
+        const CoverResult dense = cover_with_spheres(c.mesh, *q, {target, budget, 1}, nullptr);
+        SCOPED_TRACE(::testing::Message() << c.name << ", " << target << " m, " << budget << " leaves");
+        EXPECT_EQ(sparse.surface_samples, 20000u);
+        EXPECT_EQ(sparse.sparse, dense.surface_samples > 20000u);
+        EXPECT_FALSE(dense.sparse);
+        if (sparse.budget_exhausted) {
+          EXPECT_TRUE(dense.budget_exhausted);
+        }
+      }
   }
 }
 
