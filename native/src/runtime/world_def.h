@@ -64,7 +64,7 @@ struct ObjectDef {
 
 constexpr int32_t kMaxHands = 64;
 // The most candidates a hand's buffers are made for (SolverParams::candidate_capacity):
-// about 130 MB a hand, what the grasp of a ball of 10^6 leaves at its leaves needs
+// about 100 MB a hand, what the grasp of a ball of 10^6 leaves at its leaves needs
 constexpr int32_t kMaxCandidateCapacity = 1 << 18;
 
 // Names an object slot; a removed object's handle turns stale through the generation.

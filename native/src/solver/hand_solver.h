@@ -102,7 +102,6 @@ class HandSolver {
     finger_rest_.fill(false);
     reported_ = false;
     placement_ = PlacementSearch{};
-    found_count_ = -1;
   }
 
   bool started() const { return started_; }
